@@ -1,0 +1,57 @@
+// The interface every ray-scene intersection structure implements: the naive list,
+// the BSP tree and the KD tree (thesis 3.3.3). Two queries, as in pbrt's aggregates:
+// the nearest hit (camera and reflection rays) and any hit closer than a distance
+// (shadow rays, which may stop at the first one found).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "core/ray.h"
+#include "geometry/primitives.h"
+
+namespace rt {
+
+// Work done for rays, counted per thread without locks and summed afterwards.
+struct RayCounters {
+    std::uint64_t rays = 0;
+    std::uint64_t traversalSteps = 0;     // nodes visited
+    std::uint64_t intersectionTests = 0;  // ray-primitive tests
+
+    RayCounters& operator+=(const RayCounters& o) {
+        rays += o.rays;
+        traversalSteps += o.traversalSteps;
+        intersectionTests += o.intersectionTests;
+        return *this;
+    }
+};
+
+// What a built structure looks like (thesis Table 4.3 and more).
+struct AccelStats {
+    std::string name;
+    double buildSeconds = 0;
+    std::uint64_t nodes = 0;
+    std::uint64_t leaves = 0;
+    std::uint64_t emptyLeaves = 0;
+    std::uint32_t maxDepth = 0;
+    double averageLeafDepth = 0;
+    double averagePrimitivesPerLeaf = 0;  // over non-empty leaves
+    std::uint64_t primitiveReferences = 0;
+    std::uint64_t memoryBytes = 0;        // nodes and index arrays, not the primitives
+    double sahCost = 0;
+};
+
+class Accelerator {
+public:
+    virtual ~Accelerator() = default;
+
+    // Nearest hit with 0 < t < tMax; fills `hit` and returns true if there is one.
+    virtual bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const = 0;
+    // True if anything is hit with 0 < t < tMax.
+    virtual bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const = 0;
+
+    virtual AccelStats stats() const = 0;
+};
+
+}  // namespace rt

@@ -1,0 +1,38 @@
+#include "accel/naive.h"
+
+namespace rt {
+
+bool NaiveAccelerator::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
+    const std::uint32_t n = prims_.size();
+    counters.intersectionTests += n;
+    bool found = false;
+    for (std::uint32_t id = 0; id < n; ++id) {
+        if (prims_.intersect(id, ray, tMax, hit)) {
+            tMax = hit.t;
+            found = true;
+        }
+    }
+    return found;
+}
+
+bool NaiveAccelerator::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
+    Hit hit;
+    const std::uint32_t n = prims_.size();
+    for (std::uint32_t id = 0; id < n; ++id) {
+        ++counters.intersectionTests;
+        if (prims_.intersect(id, ray, tMax, hit)) return true;
+    }
+    return false;
+}
+
+AccelStats NaiveAccelerator::stats() const {
+    AccelStats s;
+    s.name = "naive";
+    s.leaves = 1;
+    s.primitiveReferences = prims_.size();
+    s.averagePrimitivesPerLeaf = prims_.size();
+    s.sahCost = prims_.size();  // every ray tests everything (intersection cost 1)
+    return s;
+}
+
+}  // namespace rt

@@ -1,0 +1,21 @@
+// The naive list: every ray is tested against every primitive (thesis 3.3.3).
+// Slow, obviously right, and the reference every tree must agree with.
+#pragma once
+
+#include "accel/accelerator.h"
+
+namespace rt {
+
+class NaiveAccelerator final : public Accelerator {
+public:
+    explicit NaiveAccelerator(const Primitives& prims) : prims_(prims) {}
+
+    bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
+    bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
+    AccelStats stats() const override;
+
+private:
+    const Primitives& prims_;
+};
+
+}  // namespace rt

@@ -1,0 +1,45 @@
+// Every tunable of the accelerators, with its default, in one place (as Embree's
+// builder settings). rt-render and rt-inspect expose the same names on their command lines.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace rt {
+
+enum class AccelKind { Naive, Bsp, Kd };
+
+struct BspSettings {
+    int maxDepth = 20;         // stop subdividing below this depth (thesis 2.4.1)
+    int minPrimitives = 4;     // a node with at most this many primitives becomes a leaf
+    bool roundRobin = false;   // split axis X, Y, Z, X, ... instead of the longest axis
+};
+
+enum class KdSplitMethod {
+    Sweep,   // O(N log N) event sweep of Wald and Havran 2006 (thesis [12]); the default
+    Sort,    // the thesis's sort per node, O(N log^2 N) (thesis 2.5.1)
+    Sample,  // the thesis's sampling of a fixed number of candidate planes per axis
+};
+
+struct KdSettings {
+    double traversalCost = 1.0;     // C_T of the SAH (thesis 2.5.1)
+    double intersectionCost = 1.5;  // C_I of the SAH
+    double emptyBonus = 0.8;        // cost factor for splits that cut off empty space (1 = none)
+    std::optional<int> maxDepth;    // default 8 + 1.3 log2(N)
+    KdSplitMethod splitMethod = KdSplitMethod::Sweep;
+    int samples = 16;               // candidate planes per axis for Sample (8-32 in the thesis)
+};
+
+struct AccelSettings {
+    AccelKind kind = AccelKind::Kd;
+    BspSettings bsp;
+    KdSettings kd;
+};
+
+// "naive", "bsp", "kd" (and the split methods "sweep", "sort", "sample"); nullopt if unknown.
+std::optional<AccelKind> parseAccelKind(const std::string& name);
+const char* accelKindName(AccelKind kind);
+std::optional<KdSplitMethod> parseKdSplitMethod(const std::string& name);
+const char* kdSplitMethodName(KdSplitMethod method);
+
+}  // namespace rt

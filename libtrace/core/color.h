@@ -1,0 +1,32 @@
+// Linear, scene-referred RGB. Always float: colour needs no double precision,
+// and float keeps framebuffers half the size.
+#pragma once
+
+#include <ostream>
+
+namespace rt {
+
+struct Color {
+    float r = 0, g = 0, b = 0;
+
+    constexpr Color() = default;
+    constexpr Color(float r_, float g_, float b_) : r(r_), g(g_), b(b_) {}
+
+    constexpr Color& operator+=(const Color& c) { r += c.r; g += c.g; b += c.b; return *this; }
+    constexpr Color& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
+    constexpr bool operator==(const Color&) const = default;
+};
+
+constexpr Color operator+(const Color& a, const Color& b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
+constexpr Color operator*(const Color& a, const Color& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}; }
+constexpr Color operator*(const Color& a, float s) { return {a.r * s, a.g * s, a.b * s}; }
+constexpr Color operator*(float s, const Color& a) { return a * s; }
+
+// Rec.709 luminance of a linear colour.
+constexpr float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+inline std::ostream& operator<<(std::ostream& os, const Color& c) {
+    return os << '(' << c.r << ", " << c.g << ", " << c.b << ')';
+}
+
+}  // namespace rt

@@ -1,0 +1,44 @@
+// Sphere primitive: centre and radius, stored flat in Primitives::spheres.
+#pragma once
+
+#include <cmath>
+
+#include "core/aabb.h"
+#include "core/ray.h"
+
+namespace rt {
+
+struct Sphere {
+    Vec3 center;
+    Real radius = 0;
+
+    Aabb bounds() const {
+        const Vec3 r{radius, radius, radius};
+        return {center - r, center + r};
+    }
+    Vec3 normal(const Vec3& point) const { return (point - center) / radius; }
+    bool degenerate() const { return !(radius > 0) || !std::isfinite(radius) || !isFinite(center); }
+};
+
+// The geometric test of thesis 2.1.2 (Glassner, thesis [3]); the ray direction must be
+// unit length. It rejects a sphere behind the ray before taking any square root, which
+// is why the thesis prefers it to the algebraic form. From inside the sphere the far
+// intersection is returned. A hit with 0 < t < tMax sets t and returns true.
+inline bool intersectSphere(const Sphere& s, const Ray& ray, Real tMax, Real& t) {
+    const Vec3 l = s.center - ray.origin;
+    const Real tca = dot(l, ray.direction);  // distance to the point closest to the centre
+    const Real l2 = dot(l, l);
+    const Real r2 = s.radius * s.radius;
+    const bool outside = l2 > r2;
+    if (outside && tca < 0) return false;  // sphere lies behind the ray
+    const Real d2 = l2 - tca * tca;        // squared distance of the centre from the ray
+    if (d2 > r2) return false;
+    const Real thc = std::sqrt(r2 - d2);
+    Real tt = outside ? tca - thc : tca + thc;
+    if (!(tt > 0)) tt = tca + thc;  // origin on the surface: take the far side
+    if (!(tt > 0 && tt < tMax)) return false;
+    t = tt;
+    return true;
+}
+
+}  // namespace rt

@@ -1,0 +1,72 @@
+#include "scene/scene.h"
+
+#include <cmath>
+
+namespace rt {
+
+Real Camera::focalPixels(int imageWidth) const {
+    Real f;
+    if (fovDegrees)
+        f = std::abs(Real(imageWidth) / (2 * std::tan(*fovDegrees * kPi / 360)));
+    else if (focalDistance)
+        f = *focalDistance;
+    else
+        f = length(origin - destination);
+    return f * zoom / 100;
+}
+
+namespace {
+
+// Adds one instance of a model to `out`. A sphere under a non-uniform scale would be
+// an ellipsoid, which the renderer has no primitive for: its radius takes the largest
+// stretch of the transform.
+std::size_t addInstance(const Model& model, const Instance& inst, Primitives& out) {
+    std::size_t dropped = 0;
+    const Transform& xf = inst.transform;
+    const std::vector<float>& v = model.triangleVertices;
+    for (std::size_t i = 0; i + 9 <= v.size(); i += 9) {
+        const Triangle t{xf.point({v[i], v[i + 1], v[i + 2]}), xf.point({v[i + 3], v[i + 4], v[i + 5]}),
+                         xf.point({v[i + 6], v[i + 7], v[i + 8]})};
+        if (t.degenerate())
+            ++dropped;
+        else
+            out.addTriangle(t, inst.material);
+    }
+    const std::vector<float>& s = model.sphereData;
+    const Real radiusScale = xf.maxScale();
+    for (std::size_t i = 0; i + 4 <= s.size(); i += 4) {
+        const Sphere sp{xf.point({s[i], s[i + 1], s[i + 2]}), s[i + 3] * radiusScale};
+        if (sp.degenerate())
+            ++dropped;
+        else
+            out.addSphere(sp, inst.material);
+    }
+    return dropped;
+}
+
+}  // namespace
+
+std::size_t Scene::flatten() {
+    primitives = Primitives();
+    std::size_t triangles = looseObjects.triangleCount();
+    for (const Instance& inst : instances) triangles += models[inst.model].triangleCount();
+    primitives.reserveTriangles(triangles);
+    primitives.append(looseObjects);
+    std::size_t dropped = 0;
+    for (const Instance& inst : instances) dropped += addInstance(models[inst.model], inst, primitives);
+    return dropped;
+}
+
+std::optional<std::uint32_t> Scene::findMaterial(const std::string& name) const {
+    for (std::uint32_t i = 0; i < materials.size(); ++i)
+        if (materials[i].name == name) return i;
+    return std::nullopt;
+}
+
+std::optional<std::uint32_t> Scene::findModel(const std::string& name) const {
+    for (std::uint32_t i = 0; i < models.size(); ++i)
+        if (models[i].name == name) return i;
+    return std::nullopt;
+}
+
+}  // namespace rt

@@ -1,0 +1,92 @@
+// A scene as the thesis's XML format describes it (thesis 3.4.2): background, camera,
+// materials, models instanced under transforms, loose spheres and triangles, lights.
+// The description is kept (models in their own space, instances with their transforms)
+// so that it can be written back; `primitives` is the flattened world-space geometry
+// that accelerators and the renderer use.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/color.h"
+#include "core/transform.h"
+#include "geometry/primitives.h"
+
+namespace rt {
+
+// Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
+struct Material {
+    std::string name;
+    Color color{1, 1, 1};
+    float ambient = 0.1f;     // k_a
+    float diffuse = 0.9f;     // k_d
+    float specular = 0.0f;    // k_s
+    float shininess = 20.0f;  // n, the sharpness of the highlight
+    float reflection = 0.0f;  // mirror reflectivity, 0-1
+    float spread = 0.0f;      // sigma of the glossy reflection lobe (thesis 2.6.2), radians
+};
+
+// The two-point camera of thesis 2.1.1. The focal distance f is in pixels:
+// from fov (horizontal angle, degrees) as f = w / (2 tan(fov/2)); else the given f;
+// else the distance between origin and destination. zoom scales f in percent.
+struct Camera {
+    Vec3 origin{0, 0, 0};
+    Vec3 destination{0, 0, 1};
+    Vec3 up{0, 1, 0};
+    std::optional<Real> fovDegrees;
+    std::optional<Real> focalDistance;
+    Real zoom = 100;
+
+    Real focalPixels(int imageWidth) const;
+};
+
+// A point light; `size` is the radius of the area light used by distributed ray tracing.
+struct Light {
+    Vec3 position;
+    Color color{1, 1, 1};
+    Real size = 0;
+};
+
+// A model loaded once and instanced many times (thesis 3.4.3). Geometry is kept in
+// float, as the RAW format stores it.
+struct Model {
+    enum class Format { Raw, Max3ds };
+    std::string name;
+    std::string file;  // as written in the scene; empty when the data is inline
+    Format format = Format::Raw;
+    std::vector<float> triangleVertices;  // 9 floats per triangle
+    std::vector<float> sphereData;        // 4 floats per sphere: centre, radius
+
+    std::size_t triangleCount() const { return triangleVertices.size() / 9; }
+    std::size_t sphereCount() const { return sphereData.size() / 4; }
+};
+
+struct Instance {
+    std::uint32_t model = 0;
+    std::uint32_t material = 0;
+    Transform transform;
+};
+
+struct Scene {
+    Color background{0, 0, 0};
+    Camera camera;
+    std::vector<Material> materials;
+    std::vector<Model> models;
+    std::vector<Instance> instances;
+    Primitives looseObjects;  // spheres, triangles and quads placed directly, in world space
+    std::vector<Light> lights;
+
+    Primitives primitives;  // everything, in world space: looseObjects, then each instance
+    std::size_t droppedDegenerate = 0;  // by the loader and by flatten()
+    std::vector<std::string> warnings;
+
+    // Rebuilds `primitives` from the loose objects and the instances. Degenerate
+    // primitives (zero area, radius <= 0, non-finite) are dropped; returns how many.
+    std::size_t flatten();
+    std::optional<std::uint32_t> findMaterial(const std::string& name) const;
+    std::optional<std::uint32_t> findModel(const std::string& name) const;
+};
+
+}  // namespace rt

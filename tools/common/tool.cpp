@@ -1,0 +1,36 @@
+#include "tool.h"
+
+#include <exception>
+#include <iostream>
+
+#include "core/error.h"
+#include "core/real.h"
+#include "version.h"
+
+namespace rt::tool {
+
+std::string versionLine(const std::string& toolName) {
+    std::string line = toolName + " " + kVersion + " (geometry in " + realTypeName();
+#ifdef _OPENMP
+    line += ", OpenMP";
+#endif
+    return line + ")";
+}
+
+void printError(const std::string& toolName, const std::string& message) {
+    std::cerr << toolName << " ERROR: " << message << std::endl;
+}
+
+int run(const std::string& toolName, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const InputError& e) {
+        printError(toolName, e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        printError(toolName, e.what());
+        return kExitFailure;
+    }
+}
+
+}  // namespace rt::tool

@@ -1,0 +1,24 @@
+// What the rt tools share: the version line and one way of failing.
+// Exit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace rt::tool {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+
+// "rt-render 0.1.0 (geometry in double, OpenMP 4.5)"
+std::string versionLine(const std::string& toolName);
+
+// Runs the body of a tool. An rt::InputError prints "tool ERROR: message" and returns 2;
+// any other exception prints the same shape and returns 1.
+int run(const std::string& toolName, const std::function<int()>& body);
+
+// Prints "tool ERROR: message" on stderr.
+void printError(const std::string& toolName, const std::string& message);
+
+}  // namespace rt::tool
