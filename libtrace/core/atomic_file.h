@@ -1,0 +1,22 @@
+// Writes that either happen completely or not at all: the data goes to a temporary
+// file beside the target, which is renamed over it only once everything is written.
+// A failed or interrupted write leaves an existing file untouched and no partial file.
+// The path "-" means standard output (written directly: a pipe cannot be atomic).
+#pragma once
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace rt {
+
+// Calls write(stream) and commits the result to `path`. Throws std::runtime_error
+// (naming the file) if the file cannot be written; the temporary is removed.
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+// For writers that need a file name of their own (OpenImageIO): calls write(tempPath)
+// with a temporary path in the target's folder that keeps the target's extension,
+// then renames it over `path`. The temporary is removed if write throws or returns false.
+void commitFileAtomically(const std::string& path, const std::function<bool(const std::string&)>& write);
+
+}  // namespace rt
