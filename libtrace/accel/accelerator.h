@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
+#include "core/aabb.h"
 #include "core/ray.h"
 #include "geometry/primitives.h"
 
@@ -42,6 +44,17 @@ struct AccelStats {
     double sahCost = 0;
 };
 
+// One node of a tree as a tool sees it (rt-inspect's dumps and histograms).
+struct TreeNodeInfo {
+    std::uint32_t id = 0;      // pre-order index; the root is 0
+    std::uint32_t depth = 0;   // the root has depth 0
+    Aabb bounds;               // the node's voxel
+    bool leaf = true;
+    int axis = -1;             // split axis 0-2 of an inner node
+    Real split = 0;            // split position of an inner node
+    std::uint32_t primitives = 0;  // primitive references of a leaf
+};
+
 class Accelerator {
 public:
     virtual ~Accelerator() = default;
@@ -52,6 +65,9 @@ public:
     virtual bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const = 0;
 
     virtual AccelStats stats() const = 0;
+
+    // Visits every node in pre-order (a node before its children, the lower child first).
+    virtual void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const = 0;
 };
 
 }  // namespace rt

@@ -28,11 +28,19 @@ bool NaiveAccelerator::occluded(const Ray& ray, Real tMax, RayCounters& counters
 AccelStats NaiveAccelerator::stats() const {
     AccelStats s;
     s.name = "naive";
+    s.nodes = 1;
     s.leaves = 1;
     s.primitiveReferences = prims_.size();
     s.averagePrimitivesPerLeaf = prims_.size();
     s.sahCost = prims_.size();  // every ray tests everything (intersection cost 1)
     return s;
+}
+
+void NaiveAccelerator::forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const {
+    TreeNodeInfo root;
+    root.bounds = prims_.bounds();
+    root.primitives = prims_.size();
+    visit(root);
 }
 
 }  // namespace rt

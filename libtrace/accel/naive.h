@@ -13,6 +13,7 @@ public:
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
     AccelStats stats() const override;
+    void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const override;  // one leaf
 
 private:
     const Primitives& prims_;

@@ -1,0 +1,47 @@
+#include "render/camera_rays.h"
+
+#include "core/error.h"
+#include "test_util.h"
+
+using namespace rt;
+
+TEST(CameraRays, CentreRayLooksAtTheDestination) {
+    Camera cam;
+    cam.origin = {1, 2, 3};
+    cam.destination = {1, 2, 10};
+    const CameraRays rays(cam, 64, 48);
+    const Ray r = rays.at(32, 24);
+    expectNear(r.origin, cam.origin);
+    expectNear(r.direction, {0, 0, 1});
+}
+
+TEST(CameraRays, FovIsTheHorizontalAngle) {
+    Camera cam;
+    cam.destination = {0, 0, -1};  // looking down -z, +x is to the right
+    cam.fovDegrees = 90;
+    const CameraRays rays(cam, 100, 50);
+    // The left and right image edges are 45 degrees off the axis.
+    expectNear(rays.at(100, 25).direction, normalize(Vec3{1, 0, -1}));
+    expectNear(rays.at(0, 25).direction, normalize(Vec3{-1, 0, -1}));
+    // Row 0 is the top of the image.
+    EXPECT_GT(rays.at(50, 0).direction.y, 0);
+}
+
+TEST(CameraRays, FocalDistanceFallsBackToTheTargetDistanceAndZoomScalesIt) {
+    Camera cam;
+    cam.destination = {0, 0, -50};
+    EXPECT_NEAR(cam.focalPixels(640), 50, kTol);
+    cam.zoom = 200;
+    EXPECT_NEAR(cam.focalPixels(640), 100, kTol);
+    cam.focalDistance = 10;
+    EXPECT_NEAR(cam.focalPixels(640), 20, kTol);
+}
+
+TEST(CameraRays, DegenerateCamerasAreInputErrors) {
+    Camera same;
+    same.destination = same.origin;
+    EXPECT_THROW(CameraRays(same, 10, 10), InputError);
+    Camera parallel;
+    parallel.destination = {0, 5, 0};
+    EXPECT_THROW(CameraRays(parallel, 10, 10), InputError);
+}
