@@ -3,29 +3,16 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include <cstdlib>
-#include <filesystem>
 #include <sstream>
 
 #include "core/error.h"
+#include "render/resource_path.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
 namespace rt {
 
-namespace fs = std::filesystem;
-
-std::string shippedColorConfigPath() {
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) return {};
-    // Installed: <prefix>/bin/rt-render and <prefix>/share/rt/ocio; built: somewhere under the source tree.
-    for (fs::path dir = exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
-        for (const fs::path& candidate : {dir / "share/rt/ocio/config.ocio", dir / "config/ocio/config.ocio"})
-            if (fs::is_regular_file(candidate, ec)) return candidate.string();
-        if (dir == dir.root_path()) break;
-    }
-    return {};
-}
+std::string shippedColorConfigPath() { return findShippedFile("ocio/config.ocio", "config/ocio/config.ocio"); }
 
 namespace {
 
