@@ -7,8 +7,9 @@
 namespace rt {
 
 namespace {
-// Large enough for any real image, small enough that width * height * 12 bytes cannot overflow.
+// Large enough for any real image; the framebuffer (12 bytes a pixel) stays below 3.3 GB.
 constexpr int kMaxImageSide = 65536;
+constexpr long long kMaxPixels = 1ll << 28;
 constexpr int kMaxSamples = 1 << 20;
 }  // namespace
 
@@ -16,6 +17,9 @@ void validate(const RenderSettings& s) {
     if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
         throw InputError("image size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                          " is outside 1-" + std::to_string(kMaxImageSide));
+    if (const PixelWindow w = s.window(); (long long)w.width() * w.height() > kMaxPixels)
+        throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
+                         " pixels at once needs more than 3 GB; render it in regions (--region)");
     if (s.maxDepth < 1 || s.maxDepth > 10)
         throw InputError("recursion depth " + std::to_string(s.maxDepth) + " is outside 1-10");
     if (s.pixelSamples < 1 || s.pixelSamples > kMaxSamples)

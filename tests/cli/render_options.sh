@@ -27,6 +27,11 @@ grep -Eq '^[0-9.]+ 0\.00 ' "$WORK/stdout" || fail "-p rendered: $(cat "$WORK/std
 for f in a.png b.exr c.tga d.txt; do expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -f "$WORK/$f"; done
 iinfo "$WORK/a.png" | grep -q "32 x   24, 3 channel, uint8 png" || fail "a.png: $(iinfo "$WORK/a.png")"
 iinfo "$WORK/b.exr" | grep -q "half openexr" || fail "b.exr: $(iinfo "$WORK/b.exr")"
+iinfo -v "$WORK/b.exr" >"$WORK/b.txt"
+for key in 'Software: "rt-render [0-9]' "rt:scene: \"$scene\"" 'rt:samplesPerPixel: 1' 'rt:colorSpace: "lin_rec709"' \
+    'rt:renderSeconds: [0-9]'; do
+    grep -q "$key" "$WORK/b.txt" || fail "b.exr metadata lacks $key: $(cat "$WORK/b.txt")"
+done
 iinfo "$WORK/c.tga" | grep -q "tga" || fail "c.tga: $(iinfo "$WORK/c.tga")"
 [ "$(wc -l <"$WORK/d.txt")" = 24 ] || fail "d.txt is not 24 lines"
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -o png --png-bits 16 -f "$WORK/e.png"

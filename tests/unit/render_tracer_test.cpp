@@ -145,9 +145,13 @@ TEST(RenderSettings, OutOfRangeSettingsAreInputErrors) {
     bad([](RenderSettings& s) { s.maxDepth = 11; });
     bad([](RenderSettings& s) { s.maxDepth = 0; });
     bad([](RenderSettings& s) { s.pixelSamples = 0; });
+    bad([](RenderSettings& s) { s.width = s.height = 65536; });  // 48 GB of framebuffer
     bad([](RenderSettings& s) { s.region = PixelWindow{10, 10, 10, 20}; });
     bad([](RenderSettings& s) { s.region = PixelWindow{0, 0, 801, 600}; });
     RenderSettings ok;
     ok.region = PixelWindow{0, 0, 800, 600};
+    EXPECT_NO_THROW(validate(ok));
+    ok.width = ok.height = 65536;
+    ok.region = PixelWindow{0, 0, 4096, 4096};  // a tile of a huge image is fine
     EXPECT_NO_THROW(validate(ok));
 }
