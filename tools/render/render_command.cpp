@@ -3,8 +3,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <iostream>
-#include <regex>
 
 #include "accel/build.h"
 #include "core/atomic_file.h"
@@ -18,11 +18,12 @@
 namespace rt::render_tool {
 
 PixelWindow parseRegion(const std::string& text) {
-    static const std::regex shape(R"(\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+)\s*)");
-    std::smatch m;
-    if (!std::regex_match(text, m, shape) || m.length(0) > 60)
+    PixelWindow w;
+    int used = -1;
+    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%n", &w.x0, &w.y0, &w.x1, &w.y1, &used) != 4 ||
+        used != int(text.size()))
         throw InputError("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
-    return {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
+    return w;
 }
 
 namespace {
