@@ -26,6 +26,10 @@ constexpr int kMaxNesting = 256;
 // one (the Material defaults) is added if the scene does not define it.
 constexpr const char* kDefaultMaterial = "default";
 
+// Untransformed points are kept exactly as written (x + 0 would turn -0 into +0), so
+// that a saved scene loads back bit for bit.
+Vec3 place(const Transform& toWorld, const Vec3& p) { return toWorld.isIdentity() ? p : toWorld.point(p); }
+
 class SceneBuilder {
 public:
     SceneBuilder(const XmlFile& file, std::string baseDir) : file_(file), baseDir_(std::move(baseDir)) {}
@@ -308,7 +312,7 @@ void SceneBuilder::addSphere(const XmlElement& e, const Transform& toWorld) {
     e.requireNoChildren();
     const std::uint32_t material = materialOf(e);
     // Under a non-uniform scale the radius takes the largest stretch, as Scene::flatten does.
-    const Sphere sphere{toWorld.point(e.xyz(0)), e.number("r") * toWorld.maxScale()};
+    const Sphere sphere{place(toWorld, e.xyz(0)), e.number("r") * toWorld.maxScale()};
     if (sphere.degenerate())
         ++dropped_;
     else
@@ -320,7 +324,7 @@ void SceneBuilder::addPolygon(const XmlElement& e, const Transform& toWorld, std
     e.requireOnlyChildren({"vertex"});
     const std::uint32_t material = materialOf(e);
     std::vector<Vec3> v;
-    for (const pugi::xml_node& child : e.node().children()) v.push_back(toWorld.point(readPoint(child)));
+    for (const pugi::xml_node& child : e.node().children()) v.push_back(place(toWorld, readPoint(child)));
     if (v.size() != corners)
         e.fail(e.tag() + " needs " + std::to_string(corners) + " <vertex> elements, not " + std::to_string(v.size()));
     for (std::size_t i = 2; i < corners; ++i) {

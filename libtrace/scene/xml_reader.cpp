@@ -82,7 +82,14 @@ Real XmlElement::parseNumber(const char* attribute, std::string_view text) const
     const std::string where = tag() + " attribute '" + attribute + "': '" + std::string(text) + "'";
     if (s.empty() || ec == std::errc::invalid_argument || end != s.data() + s.size())
         fail(where + " is not a number");
-    if (ec == std::errc::result_out_of_range || !std::isfinite(value)) fail(where + " is not a finite number");
+    if (ec == std::errc::result_out_of_range) {
+        // Too small is fine (it rounds to zero); too large is not finite.
+        long double wide = HUGE_VALL;  // stays if even long double is out of range
+        std::from_chars(s.data(), s.data() + s.size(), wide);
+        if (std::abs(wide) < 1) return Real(wide);
+        fail(where + " is not a finite number");
+    }
+    if (!std::isfinite(value)) fail(where + " is not a finite number");
     return value;
 }
 

@@ -175,6 +175,12 @@ TEST(XmlLoader, TranslateAndTheThesisAliasTransform) {
     EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(1, 0, 3));
 }
 
+TEST(XmlLoader, NumbersTooSmallForRealRoundToZero) {
+    const Scene scene = load(R"(<objects><sphere x="1e-400" y="-1e-500" r="+2.5e0"/></objects>)");
+    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(0, 0, 0));
+    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 2.5);
+}
+
 TEST(XmlLoader, MatrixIsRowMajorThreeByFour) {
     const Scene scene = load(R"(<objects><matrix m="0 -1 0 10  1 0 0 20  0 0 2 30">
         <sphere x="1" y="2" z="3" r="1"/></matrix></objects>)");
