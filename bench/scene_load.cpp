@@ -19,7 +19,8 @@ constexpr int kGrid = 1000;  // kGrid x kGrid triangles
 // A folder with model.raw (a bumpy 1000 x 1000 grid of triangles) and scene.xml instancing it.
 class MillionTriangleScene {
 public:
-    MillionTriangleScene() : dir_(std::filesystem::temp_directory_path() / ("rt-bench-scene-" + std::to_string(getpid()))) {
+    MillionTriangleScene()
+        : dir_(std::filesystem::temp_directory_path() / ("rt-bench-scene-" + std::to_string(getpid()))) {
         std::filesystem::create_directories(dir_);
         rt::Model model;
         model.triangleVertices.reserve(std::size_t(kGrid) * kGrid * 9);
@@ -61,7 +62,8 @@ void BM_ReadRawModel(benchmark::State& state) {
         benchmark::DoNotOptimize(model.triangleVertices.data());
     }
     state.counters["triangles"] = double(triangles);
-    state.counters["triangles/s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["triangles/s"] =
+        benchmark::Counter(double(triangles), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_ReadRawModel)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -137,22 +137,22 @@ void SceneBuilder::readCamera(const XmlElement& e, bool& seen) {
     if (e.has("fov") && e.has("f")) e.fail("<camera> takes fov or f, not both");
     if (e.has("fov")) {
         camera.fovDegrees = e.number("fov");
-        if (!(*camera.fovDegrees > 0 && *camera.fovDegrees < 180)) e.fail("<camera> fov must be between 0 and 180 degrees");
+        if (!(*camera.fovDegrees > 0 && *camera.fovDegrees < 180))
+            e.fail("<camera> fov must be between 0 and 180 degrees");
     }
     if (e.has("f")) camera.focalDistance = e.positive("f");
     if (e.has("zoom")) camera.zoom = e.positive("zoom");
-    std::optional<Vec3> origin, destination;
+    std::optional<Vec3> origin, destination, up;
     for (const pugi::xml_node& child : e.node().children()) {
         const std::string_view tag = child.name();
-        std::optional<Vec3>* slot = tag == "origin" ? &origin : tag == "destination" ? &destination : nullptr;
-        if (slot && slot->has_value()) file_.failAt(child, "a second <" + std::string(tag) + "> in <camera>");
-        const Vec3 p = readPoint(child);
-        if (slot) *slot = p;
-        else camera.up = p;
+        std::optional<Vec3>& slot = tag == "origin" ? origin : tag == "destination" ? destination : up;
+        if (slot) file_.failAt(child, "a second <" + std::string(tag) + "> in <camera>");
+        slot = readPoint(child);
     }
     if (!origin || !destination) e.fail("<camera> needs <origin> and <destination>");
     camera.origin = *origin;
     camera.destination = *destination;
+    camera.up = up.value_or(camera.up);
     const Vec3 view = camera.destination - camera.origin;
     if (!(length(view) > 0)) e.fail("camera origin and destination coincide");
     if (!(length(cross(camera.up, view)) > 0)) e.fail("camera up vector is zero or parallel to the view direction");
@@ -247,7 +247,8 @@ void SceneBuilder::readLight(const XmlElement& e) {
 
 void SceneBuilder::readObjects(pugi::xml_node parent, const Transform& toWorld, int depth) {
     for (const pugi::xml_node& child : parent.children()) {
-        if (child.type() != pugi::node_element) file_.failAt(child, "unexpected text in <" + std::string(parent.name()) + ">");
+        if (child.type() != pugi::node_element)
+            file_.failAt(child, "unexpected text in <" + std::string(parent.name()) + ">");
         const std::string_view tag = child.name();
         if (tag == "sphere") {
             addSphere(XmlElement(file_, child, {"x", "y", "z", "r", "material"}), toWorld);
@@ -256,7 +257,8 @@ void SceneBuilder::readObjects(pugi::xml_node parent, const Transform& toWorld, 
         } else if (tag == "model") {
             addInstance(XmlElement(file_, child, {"name", "material"}), toWorld);
         } else if (isTransform(tag)) {
-            if (depth == kMaxNesting) file_.failAt(child, "transforms nested deeper than " + std::to_string(kMaxNesting));
+            if (depth == kMaxNesting)
+                file_.failAt(child, "transforms nested deeper than " + std::to_string(kMaxNesting));
             // The outer element applies first (thesis 3.4.2: <scale> around <rotate> around
             // <translate> scales, then rotates, then translates), so each element's transform
             // goes on the left of what its ancestors built.
@@ -289,7 +291,8 @@ Transform SceneBuilder::readTransform(pugi::xml_node node) const {
     }
     if (tag == "scale") {
         const XmlElement e(file_, node, {"factor", "x", "y", "z"});
-        if (e.has("factor") && (e.has("x") || e.has("y") || e.has("z"))) e.fail("<scale> takes factor or x, y, z, not both");
+        if (e.has("factor") && (e.has("x") || e.has("y") || e.has("z")))
+            e.fail("<scale> takes factor or x, y, z, not both");
         const Real f = e.number("factor", 1);
         const Vec3 s = e.has("factor") ? Vec3(f, f, f) : e.xyz(1);
         if (s.x == 0 || s.y == 0 || s.z == 0) e.fail("<scale> factors must not be zero");

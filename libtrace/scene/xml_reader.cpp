@@ -30,11 +30,13 @@ XmlFile::XmlFile(std::string text, std::string name) : text_(std::move(text)), n
     // UTF-8 only, so that pugixml's offsets are offsets into text_.
     const pugi::xml_parse_result result =
         doc_.load_buffer(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
-    if (!result) throw inputErrorAt(name_, lineAt(result.offset), std::string("malformed XML: ") + result.description());
+    if (!result)
+        throw inputErrorAt(name_, lineAt(result.offset), std::string("malformed XML: ") + result.description());
 }
 
 int XmlFile::lineAt(std::ptrdiff_t offset) const {
-    const auto next = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), std::size_t(std::max<std::ptrdiff_t>(offset, 0)));
+    const std::size_t at = std::size_t(std::max<std::ptrdiff_t>(offset, 0));
+    const auto next = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), at);
     return int(next - lineStarts_.begin());
 }
 

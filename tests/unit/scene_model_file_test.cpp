@@ -36,8 +36,9 @@ TEST(SceneModelFile, ThreeDsTriangleCountsMatchTheManifest) {
 }
 
 TEST(SceneModelFile, BrokenThreeDsFilesAreInputErrors) {
-    for (const char* bad : {"bad/derived-3ds/fels_truncated_4096.3ds", "bad/derived-3ds/test1_bad_main_chunk_length.3ds",
-                            "bad/derived-3ds/random_bytes_named.3ds", "bad/assimp-invalid/empty.3ds"}) {
+    for (const char* bad :
+         {"bad/derived-3ds/fels_truncated_4096.3ds", "bad/derived-3ds/test1_bad_main_chunk_length.3ds",
+          "bad/derived-3ds/random_bytes_named.3ds", "bad/assimp-invalid/empty.3ds"}) {
         const std::string path = kModels + bad;
         const std::string error = inputErrorOf([&] { loadModelFile(path, Model::Format::Max3ds); });
         EXPECT_EQ(error.rfind(path + ": cannot read 3ds model: ", 0), 0u) << error;

@@ -1,5 +1,8 @@
 #include "scene/xml_loader.h"
 
+#include <iostream>
+#include <sstream>
+
 #include "scene_test_files.h"
 #include "test_util.h"
 
@@ -356,7 +359,8 @@ const BadScene kBadScenes[] = {
     {"missing model file", sceneWith("<models>\n<model name=\"s\" file=\"no/such.raw\"/></models>"),
      "s.xml:4: model 's': ./no/such.raw: cannot open: No such file or directory"},
     {"bad inline RAW", sceneWith("<models>\n<model name=\"s\" encoding=\"base64\">cmF3M2RUAQAAAA==</model></models>"),
-     "s.xml:4: model 's': inline RAW data: byte 10: truncated RAW data: 36 bytes of data for 1 triangle, the file has 0"},
+     "s.xml:4: model 's': inline RAW data: byte 10: truncated RAW data: 36 bytes of data for 1 triangle, "
+     "the file has 0"},
     {"bad base64", sceneWith("<models>\n<model name=\"s\" encoding=\"base64\">cmF3M2R*</model></models>"),
      "s.xml:4: model 's': bad base64 at character 7"},
     {"unknown model type", sceneWith("<models>\n<model name=\"s\" file=\"x.obj\"/></models>"),
@@ -369,6 +373,8 @@ const BadScene kBadScenes[] = {
      "s.xml:1: camera origin and destination coincide"},
     {"camera up along the view", "<scene><camera><origin/><destination z=\"1\"/><up z=\"2\"/></camera></scene>",
      "s.xml:1: camera up vector is zero or parallel to the view direction"},
+    {"second up", "<scene><camera><origin/><destination z=\"1\"/><up/>\n<up/></camera></scene>",
+     "s.xml:2: a second <up> in <camera>"},
     {"fov and f", "<scene><camera fov=\"40\" f=\"2\"><origin/><destination z=\"1\"/></camera></scene>",
      "s.xml:1: <camera> takes fov or f, not both"},
     {"fov out of range", "<scene><camera fov=\"180\"><origin/><destination z=\"1\"/></camera></scene>",
@@ -420,6 +426,14 @@ TEST(XmlLoader, BadModelFilesGiveTheSceneLine) {
             errorOf(sceneWith("<models><model name=\"m\" type=\"3ds\" file=\"" + model + "\"/></models>"));
         EXPECT_EQ(error.rfind("s.xml:3: model 'm': " + model + ": cannot read 3ds model: ", 0), 0u) << error;
     }
+}
+
+TEST(XmlLoader, DashReadsStandardInput) {
+    std::istringstream in(sceneWith("<objects>\n<sphere r=\"1\"/>\n<sphere r=\"x\"/></objects>"));
+    std::streambuf* old = std::cin.rdbuf(in.rdbuf());
+    const std::string error = inputErrorOf([] { loadSceneXml("-"); });
+    std::cin.rdbuf(old);
+    EXPECT_EQ(error, "<stdin>:5: <sphere> attribute 'r': 'x' is not a number");
 }
 
 TEST(XmlLoader, MissingSceneFile) {
