@@ -359,21 +359,25 @@ std::uint32_t SceneBuilder::materialOf(const XmlElement& e) {
     return index;
 }
 
+Scene loadScene(std::string xml, const std::string& name, const std::string& baseDir) {
+    const XmlFile file(std::move(xml), name);
+    return SceneBuilder(file, baseDir).build();
+}
+
 }  // namespace
 
 Scene loadSceneXml(const std::string& path) {
     if (path == "-") {
         std::ostringstream text;
         text << std::cin.rdbuf();
-        return loadSceneXmlFromString(text.str(), "<stdin>", ".");
+        return loadScene(text.str(), "<stdin>", ".");
     }
     const std::string folder = std::filesystem::path(path).parent_path().string();
-    return loadSceneXmlFromString(readInputFile(path), path, folder.empty() ? "." : folder);
+    return loadScene(readInputFile(path), path, folder.empty() ? "." : folder);
 }
 
 Scene loadSceneXmlFromString(const std::string& xml, const std::string& name, const std::string& baseDir) {
-    const XmlFile file(xml, name);
-    return SceneBuilder(file, baseDir).build();
+    return loadScene(xml, name, baseDir);
 }
 
 }  // namespace rt

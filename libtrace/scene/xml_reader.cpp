@@ -27,9 +27,10 @@ XmlFile::XmlFile(std::string text, std::string name) : text_(std::move(text)), n
     lineStarts_.push_back(0);
     for (std::size_t i = 0; i < text_.size(); ++i)
         if (text_[i] == '\n') lineStarts_.push_back(i + 1);
-    // UTF-8 only, so that pugixml's offsets are offsets into text_.
+    // In place (text_ lives as long as the document) and UTF-8 only, so that pugixml's
+    // offsets are offsets into the text as read.
     const pugi::xml_parse_result result =
-        doc_.load_buffer(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
+        doc_.load_buffer_inplace(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!result)
         throw inputErrorAt(name_, lineAt(result.offset), std::string("malformed XML: ") + result.description());
 }
@@ -40,12 +41,6 @@ int XmlFile::lineAt(std::ptrdiff_t offset) const {
     return int(next - lineStarts_.begin());
 }
 
-XmlElement::XmlElement(const XmlFile& file, pugi::xml_node node, std::initializer_list<std::string_view> allowed)
-    : file_(&file), node_(node) {
-    for (const pugi::xml_attribute& a : node_.attributes())
-        if (!isListed(a.name(), allowed)) fail("unknown attribute '" + std::string(a.name()) + "' on " + tag());
-}
-
 void XmlFile::failAt(pugi::xml_node node, const std::string& message) const {
     std::ptrdiff_t offset = node.offset_debug();
     if (node.type() == pugi::node_pcdata) {  // point at the text itself, not the line break before it
@@ -53,6 +48,12 @@ void XmlFile::failAt(pugi::xml_node node, const std::string& message) const {
         if (start != std::string_view::npos) offset += std::ptrdiff_t(start);
     }
     throw inputErrorAt(name_, lineAt(offset), message);
+}
+
+XmlElement::XmlElement(const XmlFile& file, pugi::xml_node node, std::initializer_list<std::string_view> allowed)
+    : file_(&file), node_(node) {
+    for (const pugi::xml_attribute& a : node_.attributes())
+        if (!isListed(a.name(), allowed)) fail("unknown attribute '" + std::string(a.name()) + "' on " + tag());
 }
 
 std::string XmlElement::tag() const {
