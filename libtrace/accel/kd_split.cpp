@@ -14,22 +14,19 @@ void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vect
 }
 
 SahModel::SahModel(const Aabb& voxel, const KdSettings& settings)
-    : voxel_(voxel),
-      area_(voxel.surfaceArea()),
+    : area_(voxel.surfaceArea()),
       traversalCost_(settings.traversalCost),
       intersectionCost_(settings.intersectionCost),
-      emptyBonus_(settings.emptyBonus) {}
-
-void SahModel::consider(int axis, float pos, std::size_t below, std::size_t above, SahSplit& best) const {
-    if (!(pos > voxel_.lo[axis] && pos < voxel_.hi[axis])) return;
-    const Vec3 d = voxel_.diagonal();
-    const double other1 = d[(axis + 1) % 3], other2 = d[(axis + 2) % 3];
-    const double face = other1 * other2, rim = other1 + other2;
-    const double belowArea = 2 * (face + (pos - voxel_.lo[axis]) * rim);
-    const double aboveArea = 2 * (face + (voxel_.hi[axis] - pos) * rim);
-    double cost = traversalCost_ + intersectionCost_ * (belowArea * double(below) + aboveArea * double(above)) / area_;
-    if (below == 0 || above == 0) cost *= emptyBonus_;
-    if (cost < best.cost) best = {axis, pos, cost};
+      emptyBonus_(settings.emptyBonus) {
+    areaScale_ = 2 * intersectionCost_ / area_;
+    const Vec3 d = voxel.diagonal();
+    for (int a = 0; a < 3; ++a) {
+        lo_[a] = voxel.lo[a];
+        hi_[a] = voxel.hi[a];
+        const double other1 = d[(a + 1) % 3], other2 = d[(a + 2) % 3];
+        face_[a] = other1 * other2;
+        rim_[a] = other1 + other2;
+    }
 }
 
 // At each position: primitives ending there leave the upper side before the plane is
@@ -52,7 +49,7 @@ void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::siz
 
 SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& sah) {
     SahSplit best;
-    std::vector<SplitEvent> events;
+    thread_local std::vector<SplitEvent> events;  // reused: small nodes are many
     for (int axis = 0; axis < 3; ++axis) {
         events.clear();
         for (std::uint32_t i = 0; i < boxes.size(); ++i) addEvents(boxes[i], i, axis, events);

@@ -58,12 +58,22 @@ public:
     double leafCost(std::size_t primitives) const { return intersectionCost_ * double(primitives); }
     bool degenerate() const { return !(area_ > 0); }
     // Keeps the cheaper of `best` and the plane `pos`; planes on the voxel's faces cut
-    // nothing off and are ignored.
-    void consider(int axis, float pos, std::size_t below, std::size_t above, SahSplit& best) const;
+    // nothing off and are ignored. A child of extent e along the axis has area
+    // 2 (face + e rim). Inline: the sweep calls it for every distinct event position.
+    void consider(int axis, float pos, std::size_t below, std::size_t above, SahSplit& best) const {
+        if (!(pos > lo_[axis] && pos < hi_[axis])) return;
+        const double belowArea = face_[axis] + (pos - lo_[axis]) * rim_[axis];
+        const double aboveArea = face_[axis] + (hi_[axis] - pos) * rim_[axis];
+        double cost = traversalCost_ + areaScale_ * (belowArea * double(below) + aboveArea * double(above));
+        if (below == 0 || above == 0) cost *= emptyBonus_;
+        if (cost < best.cost) best = {axis, pos, cost};
+    }
 
 private:
-    Aabb voxel_;
+    double lo_[3], hi_[3];
+    double face_[3], rim_[3];  // per split axis: area of the face across it, and its perimeter / 2
     double area_;
+    double areaScale_;         // 2 C_I / area: turns (face + e rim) N into C_I P N
     double traversalCost_, intersectionCost_, emptyBonus_;
 };
 

@@ -17,6 +17,15 @@ int defaultKdMaxDepth(std::size_t primitives) {
 
 namespace {
 
+// Below this many primitives a node finds its split by sorting its own events, as the
+// Sort method does: the same split (kd_split.h), without the bookkeeping of carrying
+// sorted events down, which costs about as much as sorting a few dozen events.
+constexpr std::size_t kSweepMinimum = 32;
+
+bool carriesEvents(KdSplitMethod method, std::size_t primitives) {
+    return method == KdSplitMethod::Sweep && primitives >= kSweepMinimum;
+}
+
 struct KdNode {
     std::vector<std::uint32_t> primitives;  // ids into Primitives
     std::vector<FloatBox> boxes;            // their bounds clipped to the voxel
@@ -54,11 +63,9 @@ public:
 
 private:
     SahSplit findSplit(const KdNode& node, const SahModel& sah) const {
-        switch (settings_.splitMethod) {
-            case KdSplitMethod::Sort: return findSplitBySorting(node.boxes, sah);
-            case KdSplitMethod::Sample: return findSplitBySampling(node.boxes, node.voxel, settings_.samples, sah);
-            case KdSplitMethod::Sweep: break;
-        }
+        if (settings_.splitMethod == KdSplitMethod::Sample)
+            return findSplitBySampling(node.boxes, node.voxel, settings_.samples, sah);
+        if (!carriesEvents(settings_.splitMethod, node.primitives.size())) return findSplitBySorting(node.boxes, sah);
         SahSplit best;
         for (int axis = 0; axis < 3; ++axis)
             sweepSortedEvents(node.events[axis], axis, node.primitives.size(), sah, best);
@@ -67,7 +74,8 @@ private:
 
     // Sorts the node's primitives to the two sides. One that straddles the plane is
     // clipped to each child's voxel; one that lies on a single side keeps its bounds
-    // and, for the sweep, its already sorted events (Wald and Havran 2006, section 4.3).
+    // and, for the sweep, its already sorted events (Wald and Havran 2006, section 4.3),
+    // so that no node sorts more than its straddling primitives' events.
     Partition<KdNode> partition(KdNode& node, const SahSplit& split) const {
         const int axis = split.axis;
         Partition<KdNode> parts{axis, split.pos, {}, {}};
@@ -79,7 +87,13 @@ private:
 
         constexpr std::uint32_t kNone = ~0u;
         const std::size_t n = node.primitives.size();
-        std::vector<std::uint32_t> belowIndex(n, kNone), aboveIndex(n, kNone);
+        for (KdNode* child : {&below, &above}) {
+            child->primitives.reserve(n);
+            child->boxes.reserve(n);
+        }
+        std::vector<std::uint32_t> index(2 * n, kNone);  // each primitive's index in the child below, above
+        std::uint32_t* belowIndex = index.data();
+        std::uint32_t* aboveIndex = index.data() + n;
         std::vector<std::uint32_t> straddling;
         for (std::uint32_t i = 0; i < n; ++i) {
             const FloatBox& box = node.boxes[i];
@@ -97,10 +111,23 @@ private:
             addClipped(below, node.primitives[i]);
             addClipped(above, node.primitives[i]);
         }
-        if (settings_.splitMethod == KdSplitMethod::Sweep) {
+        if (carriesEvents(settings_.splitMethod, n)) {
             for (int a = 0; a < 3; ++a) {
-                splitEvents(node.events[a], belowIndex, below, belowKept, a);
-                splitEvents(node.events[a], aboveIndex, above, aboveKept, a);
+                std::vector<SplitEvent>& belowEvents = below.events[a];
+                std::vector<SplitEvent>& aboveEvents = above.events[a];
+                belowEvents.reserve(2 * below.primitives.size());
+                aboveEvents.reserve(2 * above.primitives.size());
+                for (const SplitEvent& e : node.events[a]) {
+                    const std::uint32_t i = e.primitive();
+                    if (belowIndex[i] != kNone) belowEvents.emplace_back(e.pos, belowIndex[i], e.type());
+                    else if (aboveIndex[i] != kNone) aboveEvents.emplace_back(e.pos, aboveIndex[i], e.type());
+                }
+                mergeClippedEvents(below, belowKept, a);
+                mergeClippedEvents(above, aboveKept, a);
+            }
+            for (KdNode* child : {&below, &above}) {
+                if (carriesEvents(settings_.splitMethod, child->primitives.size())) continue;
+                for (std::vector<SplitEvent>& events : child->events) events = {};
             }
         }
         return parts;
@@ -119,23 +146,16 @@ private:
         if (!clipped.empty()) add(child, id, toFloatBox(clipped, child.voxel));
     }
 
-    // The child's events on `axis`: the parent's events of primitives that went to this
-    // side only (still sorted, renumbered), merged with the freshly sorted events of the
-    // clipped primitives, which are the child's primitives from `kept` on.
-    static void splitEvents(const std::vector<SplitEvent>& parentEvents, const std::vector<std::uint32_t>& index,
-                            KdNode& child, std::size_t kept, int axis) {
-        std::vector<SplitEvent> inherited, clipped;
-        inherited.reserve(2 * kept);
-        for (const SplitEvent& e : parentEvents) {
-            const std::uint32_t i = index[e.primitive()];
-            if (i != ~0u) inherited.emplace_back(e.pos, i, e.type());
-        }
+    // A child's events on `axis` are the parent's events of the primitives that went to
+    // this side only (still sorted, renumbered), merged with the freshly sorted events of
+    // the clipped primitives, which are the child's primitives from `kept` on.
+    static void mergeClippedEvents(KdNode& child, std::size_t kept, int axis) {
+        std::vector<SplitEvent>& events = child.events[axis];
+        const std::size_t inherited = events.size();
         for (std::size_t i = kept; i < child.primitives.size(); ++i)
-            addEvents(child.boxes[i], std::uint32_t(i), axis, clipped);
-        std::sort(clipped.begin(), clipped.end());
-        std::vector<SplitEvent>& out = child.events[axis];
-        out.reserve(inherited.size() + clipped.size());
-        std::merge(inherited.begin(), inherited.end(), clipped.begin(), clipped.end(), std::back_inserter(out));
+            addEvents(child.boxes[i], std::uint32_t(i), axis, events);
+        std::sort(events.begin() + std::ptrdiff_t(inherited), events.end());
+        std::inplace_merge(events.begin(), events.begin() + std::ptrdiff_t(inherited), events.end());
     }
 
     const Primitives& prims_;
@@ -153,7 +173,7 @@ KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
         root.primitives[id] = id;
         root.boxes[id] = toFloatBox(prims.bounds(id), root.voxel);
     }
-    if (settings.splitMethod == KdSplitMethod::Sweep) {
+    if (carriesEvents(settings.splitMethod, n)) {
 #pragma omp parallel for schedule(static, 1)
         for (int axis = 0; axis < 3; ++axis) {
             std::vector<SplitEvent>& events = root.events[axis];

@@ -24,7 +24,7 @@ struct Partition {
 };
 
 // Below this many primitive references a subtree is built by the thread that reached it.
-constexpr std::size_t kTaskPrimitives = 4096;
+constexpr std::size_t kTaskPrimitives = 16384;
 
 // `split(node)` returns the partition of `node`, or nullopt for a leaf of node.primitives.
 template <typename BuildNode, typename SplitFunction>
