@@ -1,7 +1,7 @@
 # rt-render's command line: thesis options with long names, output types, statistics, exit codes.
 source "$(dirname "$0")/common.bash"
 scene="$RT_SOURCE_DIR/scenes/demo.xml"
-small=(-q -x 32 -y 24)
+small=(-K -q -x 32 -y 24)
 
 # -b: "preprocessing render objects lights nodes tests-per-ray" (thesis appendix B).
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -s -d 3 -b
@@ -60,4 +60,15 @@ expect_exit 2 "$RT_RENDER" "$scene" "${small[@]}" --display Cinema -f "$WORK/x.p
 expect_exit 2 "$RT_RENDER" "$WORK/no-such-scene.xml"
 [ "$(wc -l <"$WORK/stderr")" = 1 ] || fail "more than one line for a missing scene: $(cat "$WORK/stderr")"
 grep -q "^rt-render ERROR: .*no-such-scene.xml" "$WORK/stderr" || fail "missing scene: $(cat "$WORK/stderr")"
+# A scene that does not load: exit 2, file and line.
+printf '<?xml version="1.0"?>\n<scene>\n  <sphere x="0"/>\n</scene>\n' >"$WORK/bad.xml"
+expect_exit 2 "$RT_RENDER" "$WORK/bad.xml"
+grep -q "bad.xml:3:" "$WORK/stderr" || fail "no file:line for a bad scene: $(cat "$WORK/stderr")"
+
+# The three accelerators find the same hits, so the pictures are the same bits.
+for accel in naive bsp kd; do
+    expect_exit 0 "$RT_RENDER" "$scene" -q -s -d 3 -x 48 -y 36 --accel "$accel" --exr-pixels float -f "$WORK/$accel.exr" -b
+done
+idiff -fail 0 -warn 0 "$WORK/naive.exr" "$WORK/bsp.exr" >/dev/null || fail "BSP and naive renders differ"
+idiff -fail 0 -warn 0 "$WORK/naive.exr" "$WORK/kd.exr" >/dev/null || fail "KD and naive renders differ"
 echo "render_options: ok"

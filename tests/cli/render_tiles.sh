@@ -4,7 +4,7 @@ source "$(dirname "$0")/common.bash"
 scene="$RT_SOURCE_DIR/scenes/demo.xml"
 # Every random part on (jittered supersampling, soft shadows, glossy reflections); 70x40
 # and the split at 33,17 are off the 32x32 block grid on purpose.
-opts=(-q -s -d 3 -x 70 -y 40 -S 2 -D b -r 3 --exr-pixels float)
+opts=(-K -q -s -d 3 -x 70 -y 40 -S 2 -D b -r 3 --exr-pixels float)
 "$RT_RENDER" "$scene" "${opts[@]}" -f "$WORK/full.exr"
 "$RT_RENDER" "$scene" "${opts[@]}" -f "$WORK/t0.exr" --region 0,0,33,17
 "$RT_RENDER" "$scene" "${opts[@]}" -f "$WORK/t1.exr" --region 33,0,70,17
