@@ -18,8 +18,10 @@ namespace {
 std::string temporaryPathFor(const std::string& path) {
     static int counter = 0;
     const std::filesystem::path p(path);
-    const std::string name = "." + p.stem().string() + ".rt-tmp-" + std::to_string(getpid()) + "-" +
-                             std::to_string(counter++) + p.extension().string();
+    std::string name = ".";  // built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string
+    name += p.stem().string();
+    name += ".rt-tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
+    name += p.extension().string();
     return (p.parent_path() / name).string();
 }
 
