@@ -89,6 +89,55 @@ TEST(Tracer, ShadowsDarkenTheFloorUnderASphere) {
     EXPECT_EQ(c.shadowRays, 2u);
 }
 
+TEST(Tracer, SoftShadowsGiveAPenumbra) {
+    // A sphere of radius 1 at height 5 under a light of radius 1 at height 8: the floor point
+    // at x = 8/3 sees the light's centre just past the sphere's edge, so about half the light.
+    Scene s;
+    test::addMaterial(s, {.name = "grey", .color = {1, 1, 1}, .ambient = 0, .diffuse = 1});
+    test::addQuad(s, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);
+    s.looseObjects.addSphere({{0, 5, 0}, 1}, 0);
+    s.lights.push_back({{0, 8, 0}, {1, 1, 1}, 1});
+    s.flatten();
+    const NaiveAccelerator accel(s.primitives);
+    RenderSettings settings = small(8, 8);
+    settings.shadows = true;
+    const Ray down{{Real(8) / 3, 0.5, 0}, {0, -1, 0}};
+    SampleRng rng{0, 0, 0};
+    RenderCounters c;
+    const Color hard = Tracer(s, accel, settings).trace(down, 0, false, rng, c);
+    settings.softShadows = true;
+    settings.distributedSamples = 256;
+    const Color soft = Tracer(s, accel, settings).trace(down, 0, false, rng, c);
+    settings.shadows = false;
+    const Color lit = Tracer(s, accel, settings).trace(down, 0, false, rng, c);
+    EXPECT_GT(soft.r, 0.25f * lit.r);
+    EXPECT_LT(soft.r, 0.75f * lit.r);
+    EXPECT_EQ(c.shadowRays, 1u + 256u);
+    EXPECT_TRUE(hard.r == 0 || hard.r == lit.r);  // a point light is all or nothing
+}
+
+TEST(Tracer, GlossyReflectionsSpreadAroundTheMirrorDirection) {
+    // The test scene's blue sphere has a spread: with it, its reflections become bundles of -r
+    // rays; with spread 0 every material is a plain mirror with one ray per bounce.
+    const Scene s = test::spheresOnFloor();
+    Scene sharpScene = s;
+    for (Material& m : sharpScene.materials) m.spread = 0;
+    const NaiveAccelerator accel(s.primitives);  // the same geometry serves both
+    RenderSettings settings = small(64, 48);
+    settings.maxDepth = 2;
+    settings.glossyReflections = true;
+    settings.distributedSamples = 16;
+    const Tracer tracer(s, accel, settings);
+    const Tracer mirrors(sharpScene, accel, settings);
+    RenderCounters glossy, sharp;
+    for (int x = 0; x < 64; ++x) {  // a row across the blue sphere and the floor
+        tracer.pixel(x, 30, glossy);
+        mirrors.pixel(x, 30, sharp);
+    }
+    EXPECT_GT(glossy.reflectionRays, sharp.reflectionRays);
+    EXPECT_LE(sharp.reflectionRays, 64u * 2u);  // at most one reflection ray per bounce
+}
+
 TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
     // Two facing mirrors with the camera between them, looking at one: every camera ray
     // bounces between them until the depth limit.
