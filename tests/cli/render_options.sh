@@ -18,6 +18,14 @@ expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -S 4 --stats-json -
 python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["primaryRays"]==32*24*4, d; assert d["testsPerRay"]>0' \
     <"$WORK/stdout" || fail "bad --stats-json: $(cat "$WORK/stdout")"
 
+# -D s implies shadows; -D d alone does not.
+expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -D s -r 2 --stats-json -
+python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["shadows"] and d["shadowRays"]>0, d' <"$WORK/stdout" ||
+    fail "-D s without shadows: $(cat "$WORK/stdout")"
+expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -D d -r 2 --stats-json -
+python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["shadowRays"]==0, d' <"$WORK/stdout" ||
+    fail "-D d cast shadow rays: $(cat "$WORK/stdout")"
+
 # -p builds the tree only: no render time, no output file.
 expect_exit 0 "$RT_RENDER" "$scene" -q -p -b -f "$WORK/nothing.png"
 grep -Eq '^[0-9.]+ 0\.00 ' "$WORK/stdout" || fail "-p rendered: $(cat "$WORK/stdout")"

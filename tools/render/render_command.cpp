@@ -52,6 +52,7 @@ ImageOutputSettings outputSettings(const RenderOptions& o) {
 void applyDistributed(RenderOptions& o) {
     if (!o.distributed) return;
     o.render.softShadows = *o.distributed != "d";
+    if (o.render.softShadows) o.render.shadows = true;  // soft shadows are shadows: -D s implies -s
     o.render.glossyReflections = *o.distributed != "s";
 }
 
