@@ -49,7 +49,10 @@ std::vector<FloatBox> randomBoxes(int n, std::uint32_t seed) {
 }  // namespace
 
 TEST(SahModel, CostOfASplit) {
-    const KdSettings settings;  // C_T 1, C_I 1.5, empty bonus 0.8
+    KdSettings settings;
+    settings.traversalCost = 1;
+    settings.intersectionCost = 1.5;
+    settings.emptyBonus = 0.8;
     const SahModel sah(Aabb{{0, 0, 0}, {1, 1, 1}}, settings);
     SahSplit best;
     sah.consider(0, 0.5f, 4, 6, best);  // each half has 4/6 of the area
