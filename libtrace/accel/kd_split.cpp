@@ -31,7 +31,7 @@ SahModel::SahModel(const Aabb& voxel, const KdSettings& settings)
 
 // At each position: primitives ending there leave the upper side before the plane is
 // evaluated, those starting there join the lower side after it, and those lying in it
-// count on both sides (FloatBox::below/above).
+// are offered to either side (SahModel::consider).
 void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives,
                        const SahModel& sah, SahSplit& best) {
     std::size_t below = 0, above = primitives;
@@ -42,7 +42,7 @@ void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::siz
         for (; i < n && events[i].pos == pos; ++i) ++count[events[i].type()];
         const std::size_t ends = count[SplitEvent::End], planars = count[SplitEvent::Planar];
         above -= ends + planars;
-        sah.consider(axis, pos, below + planars, above + planars, best);
+        sah.consider(axis, pos, below, above, planars, best);
         below += count[SplitEvent::Start] + planars;
     }
 }
@@ -85,7 +85,7 @@ SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& vox
         for (std::size_t k = 0; k < m; ++k) {
             started += starts[k];
             ended += ends[k];
-            sah.consider(axis, planes[k], started + planars[k], n - ended + planars[k], best);
+            sah.consider(axis, planes[k], started, n - ended, planars[k], best);
         }
     }
     return best;

@@ -97,7 +97,8 @@ private:
         std::vector<std::uint32_t> straddling;
         for (std::uint32_t i = 0; i < n; ++i) {
             const FloatBox& box = node.boxes[i];
-            const bool b = box.below(axis, split.pos), a = box.above(axis, split.pos);
+            const bool b = box.below(axis, split.pos, split.planarBelow);
+            const bool a = box.above(axis, split.pos, split.planarBelow);
             if (b && a) {
                 straddling.push_back(i);
             } else if (b) {

@@ -55,14 +55,19 @@ TEST(SahModel, CostOfASplit) {
     settings.emptyBonus = 0.8;
     const SahModel sah(Aabb{{0, 0, 0}, {1, 1, 1}}, settings);
     SahSplit best;
-    sah.consider(0, 0.5f, 4, 6, best);  // each half has 4/6 of the area
+    sah.consider(0, 0.5f, 4, 6, 0, best);  // each half has 4/6 of the area
     EXPECT_EQ(best.axis, 0);
     EXPECT_NEAR(best.cost, 1 + 1.5 * (4.0 / 6 * 4 + 4.0 / 6 * 6), 1e-9);
-    sah.consider(1, 0.25f, 0, 10, best);  // cuts off empty space: the bonus applies
+    sah.consider(1, 0.25f, 0, 10, 0, best);  // cuts off empty space: the bonus applies
     EXPECT_EQ(best.axis, 1);
     EXPECT_NEAR(best.cost, 0.8 * (1 + 1.5 * (5.0 / 6 * 10)), 1e-9);
-    sah.consider(2, 0.0f, 0, 10, best);  // on the voxel's face: cuts off nothing, ignored
+    sah.consider(2, 0.0f, 0, 10, 0, best);  // on the voxel's face: cuts off nothing, ignored
     EXPECT_EQ(best.axis, 1);
+    // Two primitives lying in the plane y = 0.75 join the cheaper, smaller upper side.
+    SahSplit planar;
+    sah.consider(1, 0.75f, 6, 2, 2, planar);
+    EXPECT_FALSE(planar.planarBelow);
+    EXPECT_NEAR(planar.cost, 1 + 1.5 * (5.0 / 6 * 6 + 3.0 / 6 * 4), 1e-9);  // below: 5/6 of the area
     EXPECT_DOUBLE_EQ(sah.leafCost(10), 15);
 }
 
@@ -76,12 +81,14 @@ TEST(KdSplit, SweepAndSamplingMatchDirectCounting) {
         SahSplit best;
         for (int axis = 0; axis < 3; ++axis) {
             for (float p : candidates) {
-                std::size_t below = 0, above = 0;
-                for (const FloatBox& b : boxes) {
-                    below += b.below(axis, p);
-                    above += b.above(axis, p);
+                for (bool planarBelow : {true, false}) {
+                    std::size_t below = 0, above = 0;
+                    for (const FloatBox& b : boxes) {
+                        below += b.below(axis, p, planarBelow);
+                        above += b.above(axis, p, planarBelow);
+                    }
+                    sah.consider(axis, p, below, above, 0, best);
                 }
-                sah.consider(axis, p, below, above, best);
             }
         }
         return best;
