@@ -120,7 +120,7 @@ TEST(KdTree, SweepAndSortBuildTheSameTree) {
 }
 
 TEST(KdTree, SameTreeForAnyNumberOfThreads) {
-    const Primitives prims = generateScene({20000, 0, Placement::Uniform, 6}).primitives;
+    const Primitives prims = generateScene({50000, 0, Placement::Uniform, 6}).primitives;  // tasks below the root
     const int threads = omp_get_max_threads();
     omp_set_num_threads(1);
     const std::string one = dump(*buildKdTree(prims, KdSettings{}));
