@@ -1,6 +1,7 @@
 #include "accel/kd_split.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace rt {
 
@@ -10,6 +11,39 @@ void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vect
     } else {
         events.emplace_back(box.lo[axis], primitive, SplitEvent::Start);
         events.emplace_back(box.hi[axis], primitive, SplitEvent::End);
+    }
+}
+
+namespace {
+
+// A float's bits as an unsigned key in the float's order (negative values flipped
+// whole, positive ones get the sign bit set); -0 is made +0, which compares equal.
+std::uint32_t orderedKey(float pos) {
+    const auto bits = std::bit_cast<std::uint32_t>(pos == 0 ? 0.0f : pos);
+    return bits & 0x80000000u ? ~bits : bits | 0x80000000u;
+}
+
+// One stable counting-sort pass of `events` by `digit` (values below `buckets`).
+template <typename Digit>
+void countingPass(std::vector<SplitEvent>& events, std::vector<SplitEvent>& buffer, std::size_t buckets,
+                  const Digit& digit) {
+    std::vector<std::size_t> start(buckets + 1, 0);
+    for (const SplitEvent& e : events) ++start[digit(e) + 1];
+    for (std::size_t b = 1; b <= buckets; ++b) start[b] += start[b - 1];
+    for (const SplitEvent& e : events) buffer[start[digit(e)]++] = e;
+    events.swap(buffer);
+}
+
+}  // namespace
+
+// The type first, then the position in three passes of 11 bits: each pass is stable, so
+// the last (the position's top bits) decides first and the type last, as operator< does.
+void radixSortEvents(std::vector<SplitEvent>& events) {
+    std::vector<SplitEvent> buffer(events.size(), SplitEvent(0, 0, SplitEvent::End));
+    countingPass(events, buffer, 3, [](const SplitEvent& e) { return std::size_t(e.type()); });
+    for (int shift = 0; shift < 32; shift += 11) {
+        countingPass(events, buffer, 2048,
+                     [shift](const SplitEvent& e) { return std::size_t(orderedKey(e.pos) >> shift) & 2047u; });
     }
 }
 

@@ -46,6 +46,10 @@ struct SplitEvent {
     bool operator<(const SplitEvent& o) const { return pos < o.pos || (pos == o.pos && type() < o.type()); }
 };
 
+// Sorts events into operator<'s order in linear time (LSD radix sort), for the root's
+// millions of events; std::sort serves the small lists below it.
+void radixSortEvents(std::vector<SplitEvent>& events);
+
 // Appends the events of one primitive's bounds on `axis`.
 void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vector<SplitEvent>& events);
 

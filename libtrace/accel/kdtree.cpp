@@ -192,7 +192,7 @@ KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
             std::vector<SplitEvent>& events = root.events[axis];
             events.reserve(2 * std::size_t(n));
             for (std::uint32_t i = 0; i < n; ++i) addEvents(root.boxes[i], i, axis, events);
-            std::sort(events.begin(), events.end());
+            radixSortEvents(events);
         }
     }
     return root;

@@ -108,6 +108,24 @@ TEST(KdSplit, SweepAndSamplingMatchDirectCounting) {
     EXPECT_DOUBLE_EQ(fewer.cost, direct({0.25f, 0.5f, 0.75f}).cost);
 }
 
+TEST(KdSplit, RadixSortOrdersEventsAsOperatorLess) {
+    std::mt19937 gen(9);
+    std::uniform_int_distribution<int> pick(0, 9);
+    const float positions[] = {-1e30f, -2.5f, -1.0f, -0.0f, 0.0f, 1e-40f, 0.5f, 0.5f, 3.0f, 1e30f};
+    std::vector<SplitEvent> events;
+    for (std::uint32_t i = 0; i < 5000; ++i)
+        events.emplace_back(positions[pick(gen)], i, SplitEvent::Type(pick(gen) % 3));
+    std::vector<SplitEvent> expected = events;
+    std::stable_sort(expected.begin(), expected.end());
+    radixSortEvents(events);
+    ASSERT_EQ(events.size(), expected.size());
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        // Equal positions and types may come in any order; -0 and +0 are equal positions.
+        EXPECT_EQ(events[i].pos, expected[i].pos) << i;
+        EXPECT_EQ(events[i].type(), expected[i].type()) << i;
+    }
+}
+
 TEST(KdTree, SweepAndSortBuildTheSameTree) {
     const Primitives prims = generateScene({1500, 300, Placement::Clustered, 5}).primitives;
     const auto sweep = buildKdTree(prims, withMethod(KdSplitMethod::Sweep));
