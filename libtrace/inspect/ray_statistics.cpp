@@ -12,15 +12,16 @@ double testsPerRay(const RayCounters& c) { return c.rays ? double(c.intersection
 
 namespace {
 
-// Secondary rays start this far off the surface along its normal, so that they do not
-// hit the surface they leave. Relative to the scene's size to suit both float and double.
+// Secondary rays start this far off the surface along its normal, so that they do not hit
+// the surface they leave: relative to the scene's size, as rt-render does (render/tracer.cpp),
+// so that both count the same rays.
 Real surfaceOffset(const Primitives& prims) {
-    const Aabb b = prims.bounds();
-    Real extent = 1;
-    if (!b.empty()) {
-        for (int a = 0; a < 3; ++a) extent = std::max({extent, std::abs(b.lo[a]), std::abs(b.hi[a])});
-    }
-    return extent * (sizeof(Real) == sizeof(float) ? Real(1e-4) : Real(1e-7));
+    constexpr Real kRelative = sizeof(Real) == sizeof(float) ? Real(1e-4) : Real(1e-7);
+    const Aabb box = prims.bounds();
+    if (box.empty()) return kRelative;
+    Real scale = std::max(length(box.diagonal()), Real(1e-3));
+    for (int a = 0; a < 3; ++a) scale = std::max({scale, std::abs(box.lo[a]), std::abs(box.hi[a])});
+    return kRelative * scale;
 }
 
 class RayCounter {
@@ -43,7 +44,7 @@ private:
         if (dot(n, ray.direction) > 0) n = -n;  // the side the ray came from
         const Vec3 origin = p + n * offset_;
 
-        if (options_.shadows) traceShadowRays(origin, n, stats.shadow);
+        if (options_.shadows) traceShadowRays(p, origin, n, stats.shadow);
         if (bounce < options_.reflectionDepth && reflects(hit.prim)) {
             const Vec3 mirrored = ray.direction - n * (2 * dot(ray.direction, n));
             follow({origin, normalize(mirrored)}, bounce + 1, stats);
@@ -52,11 +53,11 @@ private:
 
     // One shadow ray per light that lies in front of the surface (a light behind it adds
     // nothing to Phong shading, so the renderer need not ask).
-    void traceShadowRays(const Vec3& origin, const Vec3& n, RayCounters& counters) const {
+    void traceShadowRays(const Vec3& p, const Vec3& origin, const Vec3& n, RayCounters& counters) const {
         for (const Light& light : scene_.lights) {
+            if (dot(n, light.position - p) <= 0) continue;
             const Vec3 toLight = light.position - origin;
             const Real distance = length(toLight);
-            if (!(distance > 0) || dot(toLight, n) <= 0) continue;
             ++counters.rays;
             accel_.occluded({origin, toLight / distance}, distance, counters);
         }
