@@ -17,7 +17,7 @@ struct RayOptions {
     int width = 800;   // the thesis's benchmark resolution (thesis 4.3)
     int height = 600;
     bool shadows = false;
-    int reflectionDepth = 0;  // maximum number of mirror bounces
+    int reflectionDepth = 5;  // maximum number of mirror bounces (rt-render -d, same default)
 };
 
 struct RayStatistics {
