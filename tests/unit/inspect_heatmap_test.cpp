@@ -2,11 +2,11 @@
 // geometry is densest.
 #include <algorithm>
 
-#include "accel/build.h"
 #include "inspect/bitmap_font.h"
 #include "inspect/color_map.h"
 #include "inspect/heatmap.h"
 #include "inspect/ray_statistics.h"
+#include "inspect_test_scenes.h"
 #include "test_util.h"
 
 using namespace rt;
@@ -15,7 +15,7 @@ namespace {
 
 // A stand-in for a tree whose work depends on where the geometry is: one traversal step
 // per primitive box tested, one intersection test per box the ray enters. (The BSP and
-// KD trees are tested the same way once they exist: see DenseClusterIsHottestInEveryTree.)
+// KD trees get the same test in inspect_trees_test.cpp.)
 class BoxCullingList final : public Accelerator {
 public:
     explicit BoxCullingList(const Primitives& prims) : prims_(prims) {}
@@ -45,16 +45,8 @@ private:
 
 // A dense cluster of small spheres and, apart from it, one sphere.
 Scene clusterAndLoneSphere() {
-    Scene scene;
-    scene.camera.origin = {0, 0, 0};
-    scene.camera.destination = {0, 0, 1};
-    scene.camera.fovDegrees = 60;
-    scene.materials.push_back({});
-    for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 6; ++j)
-            for (int k = 0; k < 6; ++k)
-                scene.looseObjects.addSphere({{Real(-4 + 0.3 * i), Real(-0.75 + 0.3 * j), Real(10 + 0.3 * k)},
-                                              Real(0.12)}, 0);
+    Scene scene = sceneLookingDownZ();
+    addSphereCluster(scene, {-4, -0.75, 10}, 6, Real(0.3), Real(0.12));
     scene.looseObjects.addSphere({{3, 0, 10}, 1}, 0);
     scene.flatten();
     return scene;

@@ -11,6 +11,7 @@
 #include "inspect/tree_dump.h"
 #include "inspect/tree_report.h"
 #include "inspect_fixed_tree.h"
+#include "inspect_test_scenes.h"
 #include "test_util.h"
 
 using namespace rt;
@@ -139,11 +140,7 @@ private:
 Json parse(const std::string& text) { return JsonReader(text).document(); }
 
 Scene oneSphereScene() {
-    Scene scene;
-    scene.camera.origin = {0, 0, 0};
-    scene.camera.destination = {0, 0, 1};
-    scene.camera.fovDegrees = 60;
-    scene.materials.push_back({});
+    Scene scene = sceneLookingDownZ();
     scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
     scene.lights.push_back({{0, 0, 0}});
     scene.flatten();

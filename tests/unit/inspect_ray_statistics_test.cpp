@@ -4,21 +4,13 @@
 #include "accel/naive.h"
 #include "core/error.h"
 #include "inspect/ray_statistics.h"
+#include "inspect_test_scenes.h"
 #include "render/camera_rays.h"
 #include "test_util.h"
 
 using namespace rt;
 
 namespace {
-
-Scene sceneLookingDownZ() {
-    Scene scene;
-    scene.camera.origin = {0, 0, 0};
-    scene.camera.destination = {0, 0, 1};
-    scene.camera.fovDegrees = 60;
-    scene.materials.push_back({});
-    return scene;
-}
 
 // Pixels whose camera ray hits anything, counted directly.
 std::uint64_t cameraHits(const Scene& scene, const Accelerator& accel, const RayOptions& o) {
