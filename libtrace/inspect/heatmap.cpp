@@ -59,24 +59,30 @@ std::string tickLabel(float v) {
     return buf;
 }
 
-// The colour bar, its ticks and labels, and the caption line, in the strip below the picture.
+// The colour bar, its ticks and labels, and the caption and summary, in the strip below the
+// picture. Lettering grows with the picture (2x from 640 pixels wide); the summary moves
+// under the caption when both do not fit on one line.
 class ColorBarStrip {
 public:
-    ColorBarStrip(int width, int top) : width_(width), top_(top), s_(std::max(1, width / 320)) {}
+    ColorBarStrip(int width, std::string caption, std::string summary)
+        : width_(width), s_(std::max(1, width / 320)), caption_(std::move(caption)), summary_(std::move(summary)) {
+        const int margin = 8 * s_;
+        twoLines_ = textWidth(caption_, s_) + 4 * kGlyphAdvance * s_ + textWidth(summary_, s_) > width - 2 * margin;
+    }
 
-    static int height(int width) { return 41 * std::max(1, width / 320); }
+    int height() const { return (41 + (twoLines_ ? kGlyphHeight + 5 : 0)) * s_; }
 
-    void draw(RgbImage& image, float maximum, const HeatmapOptions& options, const std::string& summary) const {
-        const int pad = 4 * s_, barTop = top_ + pad, barHeight = 10 * s_;
-        const int x0 = 8 * s_, x1 = width_ - 8 * s_;  // bar spans [x0, x1)
+    void draw(RgbImage& image, int top, float maximum, HeatScale scale) const {
+        const int barTop = top + 4 * s_, barHeight = 10 * s_;
+        const int x0 = 8 * s_, x1 = width_ - 8 * s_;  // the bar spans [x0, x1)
         for (int x = x0; x < x1; ++x) {
             const float t = float(x - x0) / float(std::max(1, x1 - x0 - 1));
             image.fillRect(x, barTop, 1, barHeight, viridis(t));
         }
         const int tickTop = barTop + barHeight, labelTop = tickTop + 5 * s_;
         int labelEnd = -width_;  // right edge of the last label, to keep labels apart
-        for (const float v : heatTicks(maximum, options.scale)) {
-            const int x = x0 + int(std::lround(heatPosition(v, maximum, options.scale) * float(x1 - x0 - 1)));
+        for (const float v : heatTicks(maximum, scale)) {
+            const int x = x0 + int(std::lround(heatPosition(v, maximum, scale) * float(x1 - x0 - 1)));
             image.fillRect(x, tickTop, s_, 3 * s_, kTextColor);
             const std::string label = tickLabel(v);
             const int w = textWidth(label, s_);
@@ -86,12 +92,15 @@ public:
             labelEnd = lx + w;
         }
         const int captionTop = labelTop + (kGlyphHeight + 5) * s_;
-        drawText(image, x0, captionTop, options.caption, s_, kTextColor);
-        drawText(image, x1 - textWidth(summary, s_), captionTop, summary, s_, kTextColor);
+        drawText(image, x0, captionTop, caption_, s_, kTextColor);
+        const int summaryTop = twoLines_ ? captionTop + (kGlyphHeight + 5) * s_ : captionTop;
+        drawText(image, twoLines_ ? x0 : x1 - textWidth(summary_, s_), summaryTop, summary_, s_, kTextColor);
     }
 
 private:
-    int width_, top_, s_;
+    int width_, s_;
+    std::string caption_, summary_;
+    bool twoLines_;
 };
 
 }  // namespace
@@ -100,21 +109,23 @@ RgbImage renderHeatmap(const std::vector<float>& cost, int width, int height, co
     if (width <= 0 || height <= 0 || cost.size() != std::size_t(width) * std::size_t(height))
         throw std::invalid_argument("renderHeatmap: the cost buffer does not match the image size");
     const float maximum = heatMaximum(cost, options);
-    RgbImage image(width, height + ColorBarStrip::height(width), kStripBackground);
     double sum = 0;
     float largest = 0;
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const float c = cost[std::size_t(y) * std::size_t(width) + std::size_t(x)];
-            image.set(x, y, viridis(heatPosition(c, maximum, options.scale)));
-            sum += c;
-            largest = std::max(largest, c);
-        }
+    for (const float c : cost) {
+        sum += c;
+        largest = std::max(largest, c);
     }
     char summary[96];
     std::snprintf(summary, sizeof summary, "MEAN %.1f  MAX %.0f%s", sum / double(cost.size()), double(largest),
                   options.scale == HeatScale::Log ? "  (LOG SCALE)" : "");
-    ColorBarStrip(width, height).draw(image, maximum, options, summary);
+    const ColorBarStrip strip(width, options.caption, summary);
+
+    RgbImage image(width, height + strip.height(), kStripBackground);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            image.set(x, y, viridis(heatPosition(cost[std::size_t(y) * std::size_t(width) + std::size_t(x)], maximum,
+                                                 options.scale)));
+    strip.draw(image, height, maximum, options.scale);
     return image;
 }
 

@@ -145,7 +145,8 @@ void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::op
     json.beginArray();
     for (const TreeReport& t : trees) {
         json.beginObject();
-        json.member("name", t.stats.name);
+        json.member("name", accelKindName(t.settings.kind));
+        json.member("structure", t.stats.name);  // as the accelerator names itself, e.g. "kd-sweep"
         json.key("settings");
         writeSettingsJson(json, t.settings);
         writeMembers(json, treeStatistics(), t);

@@ -25,7 +25,7 @@ scene() {
 }
 
 # Two clusters of 64 spheres, far apart on x: every tree splits between them first.
-cluster -10 0 20 4 0.5 0.2 | scene "$WORK/two_clusters.xml" 90
+{ cluster -10 0 20 4 0.5 0.2; cluster 10 0 20 4 0.5 0.2; } | scene "$WORK/two_clusters.xml" 90
 echo '    <sphere x="0" y="0" z="10" r="2" material="white" />' | scene "$WORK/one_sphere.xml" 60
 # A dense cluster of 512 small spheres at x = 5 (the left of the picture: +x is left
 # when looking down +z with +y up) and a few large spheres spread over the rest.

@@ -49,7 +49,7 @@ bool dumpsToStdout(const InspectOptions& o) {
 }
 
 void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
-    const std::string& name = tree.report.stats.name;
+    const std::string name = accelKindName(tree.report.settings.kind);
     const bool several = o.trees.size() > 1;
     if (!o.leavesPath.empty()) {
         writeFileAtomically(pathFor(o.leavesPath, name, several),
@@ -79,9 +79,10 @@ void writeHeatmaps(const InspectOptions& o, const Scene& scene, const std::vecto
     }
     if (!shared.maximum) shared.maximum = maximum;
     for (std::size_t i = 0; i < trees.size(); ++i) {
-        const std::string& name = trees[i].report.stats.name;
-        shared.caption = upperCase(name) + ": STEPS + TESTS PER CAMERA RAY";
-        writeHeatmapPng(pathFor(o.heatmapPath, name, trees.size() > 1), renderHeatmap(costs[i], w, h, shared));
+        const TreeReport& report = trees[i].report;
+        shared.caption = upperCase(report.stats.name) + ": STEPS + TESTS PER CAMERA RAY";
+        const std::string path = pathFor(o.heatmapPath, accelKindName(report.settings.kind), trees.size() > 1);
+        writeHeatmapPng(path, renderHeatmap(costs[i], w, h, shared));
     }
 }
 
