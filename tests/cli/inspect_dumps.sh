@@ -22,7 +22,6 @@ check_obj() {
         }' "$1"
 }
 
-json_number() { grep -o "\"$1\": [-0-9.e+]*" "$2" | head -1 | awk '{print $2}'; }
 
 expect_exit 0 "$RT_INSPECT" --tree kd --json "$WORK/two_clusters.xml"
 leaves=$(json_number leaves "$WORK/stdout")

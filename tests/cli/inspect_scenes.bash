@@ -1,4 +1,7 @@
-# Scenes for the rt-inspect CLI tests, written into $WORK (sourced after common.bash).
+# Scenes and helpers for the rt-inspect CLI tests, written into $WORK (sourced after common.bash).
+
+# json_number KEY FILE: the first number that is the value of "KEY" in a JSON file.
+json_number() { grep -o "\"$1\": [-0-9][-0-9.e+]*" "$2" | head -1 | awk '{print $2}'; }
 
 # cluster CX CY CZ N SPACING RADIUS: N^3 spheres in a cube centred on (CX, CY, CZ).
 cluster() {

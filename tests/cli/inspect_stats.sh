@@ -3,8 +3,6 @@
 source "$(dirname "$0")/common.bash"
 source "$(dirname "$0")/inspect_scenes.bash"
 
-# json_number KEY FILE: the first number after "KEY": in a JSON file.
-json_number() { grep -o "\"$1\": [-0-9.e+]*" "$2" | head -1 | awk '{print $2}'; }
 
 # One sphere: a single leaf holding it, in every structure.
 for tree in naive bsp kd; do
@@ -60,4 +58,14 @@ expect_exit 0 "$RT_INSPECT" --tree bsp --json --bsp-max-depth 1 "$WORK/two_clust
 grep -q '"maxDepth": 1' "$WORK/stdout" || fail "settings not reported"
 expect_exit 0 "$RT_INSPECT" --tree kd --json --kd-split sample --kd-samples 8 "$WORK/two_clusters.xml"
 grep -q '"split": "sample"' "$WORK/stdout" || fail "--kd-split not reported"
+# The rays are rt-render's: the same counts as its --stats-json for the same flags.
+flags=(-s -d 3 -x 64 -y 48)
+expect_exit 0 "$RT_RENDER" "$RT_SOURCE_DIR/scenes/demo.xml" --accel kd "${flags[@]}" -q -o null --stats-json -
+cp "$WORK/stdout" "$WORK/render.json"
+expect_exit 0 "$RT_INSPECT" "$RT_SOURCE_DIR/scenes/demo.xml" --tree kd --rays "${flags[@]}" --json
+for key in primaryRays:cameraRays shadowRays reflectionRays rays intersectionTests traversalSteps; do
+    theirs=$(json_number "${key%%:*}" "$WORK/render.json")
+    ours=$(json_number "${key##*:}" "$WORK/stdout")
+    [ -n "$ours" ] && [ "$ours" = "$theirs" ] || fail "${key##*:}: rt-inspect counts $ours, rt-render $theirs"
+done
 echo "inspect_stats: ok"
