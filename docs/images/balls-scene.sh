@@ -3,8 +3,10 @@
 # to standard output: Eric Haines's sphereflake from the Standard Procedural Databases at
 # level 4 (1 + 9 + 81 + 729 + 6561 spheres) on a ground quad, seen from the SPD's viewpoint.
 # Each sphere carries nine children a third of its radius: six around its equator and three
-# above, in the frame of the direction it grows in. Used for the heat maps in the README:
-#   docs/images/balls-scene.sh >balls.xml && rt-inspect --tree all --heatmap heatmap.png balls.xml
+# above, in the frame of the direction it grows in. Used for the heat maps in the README
+# (docs/rt-inspect.md):
+#   docs/images/balls-scene.sh >balls.xml
+#   rt-inspect --tree all --heatmap docs/images/heatmap.png balls.xml   # heatmap-bsp.png, heatmap-kd.png
 set -euo pipefail
 awk 'BEGIN {
     pi = atan2(0, -1)
@@ -14,12 +16,15 @@ awk 'BEGIN {
     print "  <camera fov=\"45\"><origin x=\"2.1\" y=\"1.3\" z=\"1.7\" /><destination x=\"0\" y=\"0\" z=\"0\" />"
     print "    <up x=\"0\" y=\"0\" z=\"1\" /></camera>"
     print "  <materials>"
-    print "    <material name=\"flake\" r=\"1\" g=\"0.75\" b=\"0.33\" diffuse=\"0.8\" specular=\"0.5\" reflection=\"0.5\" />"
+    print "    <material name=\"flake\" r=\"1\" g=\"0.75\" b=\"0.33\" diffuse=\"0.8\" specular=\"0.5\""
+    print "      reflection=\"0.5\" />"
     print "    <material name=\"ground\" r=\"1\" g=\"0.9\" b=\"0.7\" diffuse=\"0.8\" />"
     print "  </materials>"
     print "  <objects>"
-    print "    <quad material=\"ground\"><vertex x=\"-12\" y=\"-12\" z=\"-0.5\" /><vertex x=\"12\" y=\"-12\" z=\"-0.5\" />"
-    print "      <vertex x=\"12\" y=\"12\" z=\"-0.5\" /><vertex x=\"-12\" y=\"12\" z=\"-0.5\" /></quad>"
+    print "    <quad material=\"ground\">"
+    print "      <vertex x=\"-12\" y=\"-12\" z=\"-0.5\" /><vertex x=\"12\" y=\"-12\" z=\"-0.5\" />"
+    print "      <vertex x=\"12\" y=\"12\" z=\"-0.5\" /><vertex x=\"-12\" y=\"12\" z=\"-0.5\" />"
+    print "    </quad>"
     flake(0, 0, 0, 0.5, 0, 0, 1, 4)
     print "  </objects>"
     print "  <lights>"
