@@ -1,5 +1,6 @@
 #include "inspection.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -28,11 +29,6 @@ std::string pathFor(const std::string& path, const std::string& treeName, bool s
     if (!severalTrees) return path;
     const std::filesystem::path p(path);
     return (p.parent_path() / (p.stem().string() + "-" + treeName + p.extension().string())).string();
-}
-
-std::string upperCase(std::string s) {
-    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return s;
 }
 
 void checkOptions(const InspectOptions& o) {
@@ -80,7 +76,7 @@ void writeHeatmaps(const InspectOptions& o, const Scene& scene, const std::vecto
     if (!shared.maximum) shared.maximum = maximum;
     for (std::size_t i = 0; i < trees.size(); ++i) {
         const TreeReport& report = trees[i].report;
-        shared.caption = upperCase(report.stats.name) + ": STEPS + TESTS PER CAMERA RAY";
+        shared.caption = report.stats.name + ": steps + tests per camera ray";  // the font draws capitals
         const std::string path = pathFor(o.heatmapPath, accelKindName(report.settings.kind), trees.size() > 1);
         writeHeatmapPng(path, renderHeatmap(costs[i], w, h, shared));
     }
