@@ -96,11 +96,13 @@ private:
         if (meshIndex >= ai_.mNumMeshes) fail("a node names mesh " + std::to_string(meshIndex) + ", which does not exist");
         meshesPlaced_.insert(meshIndex);
         if (!models_[meshIndex]) models_[meshIndex] = convertMesh(meshIndex);
-        const std::optional<std::uint32_t> model = *models_[meshIndex];
-        if (model) out_.scene.instances.push_back({*model, materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex), world});
+        const ConvertedMesh& converted = *models_[meshIndex];
+        out_.report.droppedDegenerateInScene += converted.dropped;
+        if (converted.model)
+            out_.scene.instances.push_back({*converted.model, materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex), world});
     }
 
-    std::optional<std::uint32_t> convertMesh(unsigned meshIndex) {
+    ConvertedMesh convertMesh(unsigned meshIndex) {
         const aiMesh& mesh = *ai_.mMeshes[meshIndex];
         const std::string what = "mesh " + std::to_string(meshIndex);
         std::vector<Point3f> points(mesh.mNumVertices);
@@ -112,21 +114,27 @@ private:
         }
         Model model;
         model.name = modelNames_.claim(mesh.mName.C_Str(), "mesh" + std::to_string(meshIndex));
-        for (unsigned f = 0; f < mesh.mNumFaces; ++f) addFace(mesh.mFaces[f], points, model, what);
-        if (model.triangleCount() == 0) return std::nullopt;
+        ConvertedMesh converted;
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) converted.dropped += addFace(mesh.mFaces[f], points, model, what);
+        out_.report.droppedDegenerate += converted.dropped;
+        if (model.triangleCount() == 0) return converted;
         out_.scene.models.push_back(std::move(model));
-        return std::uint32_t(out_.scene.models.size() - 1);
+        converted.model = std::uint32_t(out_.scene.models.size() - 1);
+        return converted;
     }
 
     // Triangles as they are; a polygon Triangulate left (it should leave none) as a fan.
-    void addFace(const aiFace& face, const std::vector<Point3f>& points, Model& model, const std::string& what) {
+    // Returns the number of degenerate triangles dropped.
+    std::size_t addFace(const aiFace& face, const std::vector<Point3f>& points, Model& model, const std::string& what) {
         if (face.mNumIndices == 1) ++out_.report.droppedPoints;
         if (face.mNumIndices == 2) ++out_.report.droppedLines;
         for (unsigned i = 0; i < face.mNumIndices; ++i)
             if (face.mIndices[i] >= points.size()) fail(what + " has a face with vertex index " + std::to_string(face.mIndices[i]) + " out of range");
+        std::size_t dropped = 0;
         for (unsigned i = 1; i + 1 < face.mNumIndices; ++i)
             if (!appendTriangle(model, points[face.mIndices[0]], points[face.mIndices[i]], points[face.mIndices[i + 1]]))
-                ++out_.report.droppedDegenerate;
+                ++dropped;
+        return dropped;
     }
 
     // Diffuse colour, specular = luminance(Ks) * shininess strength, shininess as the Phong
@@ -221,7 +229,7 @@ private:
     const std::string& file_;
     const ImportOptions& options_;
     ImportResult& out_;
-    std::vector<std::optional<std::optional<std::uint32_t>>> models_;  // per aiMesh: not yet / dropped / index
+    std::vector<std::optional<ConvertedMesh>> models_;  // per aiMesh, once converted
     std::vector<std::optional<std::uint32_t>> materials_;
     std::set<unsigned> meshesPlaced_;
     std::map<std::string, Transform> worldByName_;

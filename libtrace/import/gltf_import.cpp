@@ -225,31 +225,31 @@ private:
         meshesPlaced_.insert(mesh);
         const std::vector<tinygltf::Primitive>& primitives = gltf_.meshes[std::size_t(mesh)].primitives;
         for (std::size_t p = 0; p < primitives.size(); ++p) {
-            const std::optional<std::uint32_t> model = modelFor(mesh, int(p));
-            if (model) out_.scene.instances.push_back({*model, materialFor(primitives[p].material), world});
+            const ConvertedMesh converted = modelFor(mesh, int(p));
+            out_.report.droppedDegenerateInScene += converted.dropped;
+            if (converted.model)
+                out_.scene.instances.push_back({*converted.model, materialFor(primitives[p].material), world});
         }
     }
 
     // The Model of one primitive, converted the first time a node places it.
-    std::optional<std::uint32_t> modelFor(int mesh, int primitive) {
+    ConvertedMesh modelFor(int mesh, int primitive) {
         const auto key = std::make_pair(mesh, primitive);
         const auto cached = models_.find(key);
         if (cached != models_.end()) return cached->second;
-        std::optional<std::uint32_t> index = convertPrimitive(mesh, primitive);
-        models_.emplace(key, index);
-        return index;
+        return models_[key] = convertPrimitive(mesh, primitive);
     }
 
-    std::optional<std::uint32_t> convertPrimitive(int meshIndex, int primitiveIndex) {
+    ConvertedMesh convertPrimitive(int meshIndex, int primitiveIndex) {
         const tinygltf::Mesh& mesh = gltf_.meshes[std::size_t(meshIndex)];
         const tinygltf::Primitive& prim = mesh.primitives[std::size_t(primitiveIndex)];
         const std::string what = "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(primitiveIndex);
         std::optional<Topology> topology = topologyOf(prim.mode, what);
-        if (!topology) return std::nullopt;
+        if (!topology) return {};
         const auto position = prim.attributes.find("POSITION");
         if (position == prim.attributes.end()) {
             out_.report.notes.push_back(what + " has no POSITION attribute: skipped");
-            return std::nullopt;
+            return {};
         }
         const std::vector<Point3f> points = reader_.points(position->second, what + " POSITION");
         std::vector<std::uint32_t> vertices;
@@ -265,12 +265,15 @@ private:
         model.name = modelNames_.claim(mesh.primitives.size() > 1 ? base + "_" + std::to_string(primitiveIndex) : base,
                                        "mesh" + std::to_string(meshIndex));
         model.triangleVertices.reserve(corners.size() * 3);
+        ConvertedMesh converted;
         for (std::size_t i = 0; i + 3 <= corners.size(); i += 3)
             if (!appendTriangle(model, points[corners[i]], points[corners[i + 1]], points[corners[i + 2]]))
-                ++out_.report.droppedDegenerate;
-        if (model.triangleCount() == 0) return std::nullopt;
+                ++converted.dropped;
+        out_.report.droppedDegenerate += converted.dropped;
+        if (model.triangleCount() == 0) return converted;
         out_.scene.models.push_back(std::move(model));
-        return std::uint32_t(out_.scene.models.size() - 1);
+        converted.model = std::uint32_t(out_.scene.models.size() - 1);
+        return converted;
     }
 
     std::optional<Topology> topologyOf(int mode, const std::string& what) {
@@ -415,7 +418,7 @@ private:
     const ImportOptions& options_;
     ImportResult& out_;
     GltfAccessorReader reader_;
-    std::map<std::pair<int, int>, std::optional<std::uint32_t>> models_;
+    std::map<std::pair<int, int>, ConvertedMesh> models_;
     std::map<int, std::uint32_t> materials_;
     std::set<int> meshesPlaced_;
     std::vector<Placed> cameras_;

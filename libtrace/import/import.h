@@ -39,6 +39,7 @@ struct ImportReport {
     std::size_t droppedPoints = 0;       // point primitives skipped
     std::size_t droppedLines = 0;        // line primitives skipped
     std::size_t droppedDegenerate = 0;   // zero-area triangles dropped from the models
+    std::size_t droppedDegenerateInScene = 0;  // the same counted once per instance
     std::vector<std::string> notes;      // each drop or approximation in words
 };
 

@@ -65,7 +65,7 @@ void printSummaryJson(std::ostream& out, const Summary& s) {
         << (r.cameraGenerated ? "null" : jsonString(r.cameraUsed)) << ", \"generated\": " << std::boolalpha
         << r.cameraGenerated << "}, \"lights\": {\"inFile\": " << r.lightsInFile << ", \"written\": " << scene.lights.size()
         << ", \"generated\": " << r.lightGenerated << "}, \"dropped\": {\"points\": " << r.droppedPoints
-        << ", \"lines\": " << r.droppedLines << ", \"degenerate\": " << r.droppedDegenerate << "}, \"notes\": [";
+        << ", \"lines\": " << r.droppedLines << ", \"degenerate\": " << r.droppedDegenerate << ", \"degenerateInScene\": " << r.droppedDegenerateInScene << "}, \"notes\": [";
     for (std::size_t i = 0; i < r.notes.size(); ++i) out << (i ? ", " : "") << jsonString(r.notes[i]);
     out << "]}\n";
 }
