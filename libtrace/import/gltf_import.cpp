@@ -2,7 +2,6 @@
 
 #include <tiny_gltf.h>
 
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -30,8 +29,7 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
 // as 2^64 - 1 bytes and throws std::bad_alloc), and image files are never opened: each reads
 // as one placeholder byte, which skipImage accepts, as rt has no textures.
 bool isImagePath(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lowerCaseExtension(path);
     return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".ktx2" || ext == ".webp" || ext == ".dds";
 }
 

@@ -13,12 +13,6 @@
 namespace rt {
 namespace {
 
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 void checkOptions(const ImportOptions& options) {
     if (!(options.scale > 0) || !std::isfinite(options.scale)) throw InputError("--scale must be a positive number");
     if (!(options.aspect > 0) || !std::isfinite(options.aspect)) throw InputError("--aspect must be a positive number");
@@ -34,8 +28,14 @@ void noteDrops(ImportReport& r) {
 
 }  // namespace
 
+std::string lowerCaseExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
 bool isGltfPath(const std::string& path) {
-    const std::string ext = lowerExtension(path);
+    const std::string ext = lowerCaseExtension(path);
     return ext == ".gltf" || ext == ".glb";
 }
 

@@ -48,6 +48,9 @@ struct ImportResult {
     ImportReport report;
 };
 
+// The extension of a path in lower case, with its dot (".gltf"); empty if there is none.
+std::string lowerCaseExtension(const std::string& path);
+
 // True for the extensions that importScene reads through tinygltf (.gltf, .glb).
 bool isGltfPath(const std::string& path);
 

@@ -60,6 +60,25 @@ inline std::size_t sceneTriangles(const Scene& scene) {
     return n;
 }
 
+// Imports every manifest file under `folders` and checks that the triangles kept plus the
+// degenerate ones dropped (zero area in float) give Assimp's counts, for the mesh data and
+// for the scene with every instance; `more` checks anything else. Returns the file count.
+template <class Check>
+std::size_t expectManifestTriangleCounts(std::initializer_list<const char*> folders, Check more) {
+    std::size_t files = 0;
+    for (const std::string folder : folders) {
+        for (const auto& [file, counts] : manifestRows(folder)) {
+            SCOPED_TRACE(file);
+            const ImportResult r = importScene(sharedModels() + "/" + file);
+            EXPECT_EQ(modelTriangles(r.scene) + r.report.droppedDegenerate, counts.meshTriangles);
+            EXPECT_EQ(sceneTriangles(r.scene) + r.report.droppedDegenerateInScene, counts.sceneTriangles);
+            more(r);
+            ++files;
+        }
+    }
+    return files;
+}
+
 inline std::string base64(const std::vector<std::uint8_t>& bytes) {
     static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;
