@@ -32,6 +32,7 @@ struct RayCounters {
 // What a built structure looks like (thesis Table 4.3 and more).
 struct AccelStats {
     std::string name;
+    std::uint64_t primitives = 0;         // that the structure was built over
     double buildSeconds = 0;
     std::uint64_t nodes = 0;
     std::uint64_t leaves = 0;
@@ -42,6 +43,8 @@ struct AccelStats {
     std::uint64_t primitiveReferences = 0;
     std::uint64_t memoryBytes = 0;        // nodes and index arrays, not the primitives
     double sahCost = 0;
+
+    double bytesPerPrimitive() const { return primitives ? double(memoryBytes) / double(primitives) : 0; }
 };
 
 // One node of a tree as a tool sees it (rt-inspect's dumps and histograms).

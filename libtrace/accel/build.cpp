@@ -1,7 +1,7 @@
 #include "accel/build.h"
 
-#include <stdexcept>
-
+#include "accel/bsp.h"
+#include "accel/kdtree.h"
 #include "accel/naive.h"
 
 namespace rt {
@@ -9,11 +9,10 @@ namespace rt {
 std::unique_ptr<Accelerator> buildAccelerator(const Primitives& prims, const AccelSettings& settings) {
     switch (settings.kind) {
         case AccelKind::Naive: return std::make_unique<NaiveAccelerator>(prims);
-        case AccelKind::Bsp:
+        case AccelKind::Bsp: return buildBspTree(prims, settings.bsp);
         case AccelKind::Kd: break;
     }
-    throw std::runtime_error(std::string("the ") + accelKindName(settings.kind) +
-                             " tree is not implemented yet; use --accel naive");
+    return buildKdTree(prims, settings.kd);
 }
 
 }  // namespace rt

@@ -28,6 +28,7 @@ bool NaiveAccelerator::occluded(const Ray& ray, Real tMax, RayCounters& counters
 AccelStats NaiveAccelerator::stats() const {
     AccelStats s;
     s.name = "naive";
+    s.primitives = prims_.size();
     s.nodes = 1;
     s.leaves = 1;
     s.primitiveReferences = prims_.size();

@@ -1,0 +1,91 @@
+// Finding the SAH split of a KD node (thesis 2.5.1). The three methods of KdSplitMethod
+// share the cost model and the sweep over sorted plane events; they differ in where the
+// sorted events come from (kept sorted from the root by the builder for Sweep, sorted in
+// every node for Sort) or in evaluating only a few fixed planes (Sample).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "accel/settings.h"
+#include "core/aabb.h"
+
+namespace rt {
+
+// A primitive's bounds clipped to a node's voxel. Floats: the builder rounds the clipped
+// bounds outwards to float, so every candidate plane is a value a node can store.
+struct FloatBox {
+    float lo[3], hi[3];
+
+    bool planar(int axis) const { return lo[axis] == hi[axis]; }
+    // Which children of the plane `pos` on `axis` the primitive goes to. One lying in
+    // the plane goes to both, so that rays starting on it or running along the plane
+    // find it on either side.
+    bool below(int axis, float pos) const { return lo[axis] < pos || (planar(axis) && lo[axis] == pos); }
+    bool above(int axis, float pos) const { return hi[axis] > pos || (planar(axis) && lo[axis] == pos); }
+};
+
+// Where a primitive's clipped bounds start or end along one axis (Wald and Havran 2006,
+// thesis [12]). Sorted by position, then ends before planars before starts.
+struct SplitEvent {
+    enum Type : std::uint32_t { End = 0, Planar = 1, Start = 2 };
+
+    float pos;
+    std::uint32_t code;  // (local primitive index << 2) | type
+
+    SplitEvent(float p, std::uint32_t primitive, Type type) : pos(p), code((primitive << 2) | type) {}
+    std::uint32_t primitive() const { return code >> 2; }
+    Type type() const { return Type(code & 3u); }
+    bool operator<(const SplitEvent& o) const { return pos < o.pos || (pos == o.pos && type() < o.type()); }
+};
+
+// Appends the events of one primitive's bounds on `axis`.
+void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vector<SplitEvent>& events);
+
+struct SahSplit {
+    int axis = -1;
+    float pos = 0;
+    double cost = std::numeric_limits<double>::infinity();
+};
+
+// Cost of splitting a voxel, K = C_T + C_I (S_A/S_V N_A + S_B/S_V N_B) (thesis 2.5.1),
+// times the empty-space bonus when one side holds nothing (Wald and Havran 2006).
+class SahModel {
+public:
+    SahModel(const Aabb& voxel, const KdSettings& settings);
+
+    double leafCost(std::size_t primitives) const { return intersectionCost_ * double(primitives); }
+    bool degenerate() const { return !(area_ > 0); }
+    // Keeps the cheaper of `best` and the plane `pos`; planes on the voxel's faces cut
+    // nothing off and are ignored. A child of extent e along the axis has area
+    // 2 (face + e rim). Inline: the sweep calls it for every distinct event position.
+    void consider(int axis, float pos, std::size_t below, std::size_t above, SahSplit& best) const {
+        if (!(pos > lo_[axis] && pos < hi_[axis])) return;
+        const double belowArea = face_[axis] + (pos - lo_[axis]) * rim_[axis];
+        const double aboveArea = face_[axis] + (hi_[axis] - pos) * rim_[axis];
+        double cost = traversalCost_ + areaScale_ * (belowArea * double(below) + aboveArea * double(above));
+        if (below == 0 || above == 0) cost *= emptyBonus_;
+        if (cost < best.cost) best = {axis, pos, cost};
+    }
+
+private:
+    double lo_[3], hi_[3];
+    double face_[3], rim_[3];  // per split axis: area of the face across it, and its perimeter / 2
+    double area_;
+    double areaScale_;         // 2 C_I / area: turns (face + e rim) N into C_I P N
+    double traversalCost_, intersectionCost_, emptyBonus_;
+};
+
+// One pass over the sorted events of `axis` evaluates every candidate plane there.
+void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives,
+                       const SahModel& sah, SahSplit& best);
+
+// The thesis's method: build and sort the events of every axis in this node.
+SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& sah);
+
+// The thesis's sampling: `samples` evenly spaced planes per axis, counted by binary search.
+SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples,
+                             const SahModel& sah);
+
+}  // namespace rt

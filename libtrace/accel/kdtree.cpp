@@ -1,0 +1,202 @@
+#include "accel/kdtree.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+#include "accel/kd_split.h"
+#include "accel/tree_builder.h"
+#include "geometry/clip.h"
+
+namespace rt {
+
+int defaultKdMaxDepth(std::size_t primitives) {
+    return int(std::lround(8 + 1.3 * std::log2(double(std::max<std::size_t>(primitives, 1)))));
+}
+
+namespace {
+
+// Below this many primitives a node finds its split by sorting its own events, as the
+// Sort method does: the same split (kd_split.h), without the bookkeeping of carrying
+// sorted events down, which costs about as much as sorting a few dozen events.
+constexpr std::size_t kSweepMinimum = 32;
+
+bool carriesEvents(KdSplitMethod method, std::size_t primitives) {
+    return method == KdSplitMethod::Sweep && primitives >= kSweepMinimum;
+}
+
+struct KdNode {
+    std::vector<std::uint32_t> primitives;  // ids into Primitives
+    std::vector<FloatBox> boxes;            // their bounds clipped to the voxel
+    std::array<std::vector<SplitEvent>, 3> events;  // Sweep only: per axis, sorted, indices into `primitives`
+    Aabb voxel;
+    int depth = 0;
+};
+
+// Bounds rounded outwards to float, then kept inside the (float-valued) voxel.
+FloatBox toFloatBox(const Aabb& b, const Aabb& voxel) {
+    FloatBox f;
+    for (int a = 0; a < 3; ++a) {
+        f.lo[a] = std::max(floatBelow(b.lo[a]), float(voxel.lo[a]));
+        f.hi[a] = std::min(floatAbove(b.hi[a]), float(voxel.hi[a]));
+    }
+    return f;
+}
+
+class KdSplitter {
+public:
+    KdSplitter(const Primitives& prims, const KdSettings& settings)
+        : prims_(prims),
+          settings_(settings),
+          maxDepth_(std::clamp(settings.maxDepth.value_or(defaultKdMaxDepth(prims.size())), 0, kMaxTreeDepth)) {}
+
+    std::optional<Partition<KdNode>> operator()(KdNode& node) const {
+        const std::size_t n = node.primitives.size();
+        if (n == 0 || node.depth >= maxDepth_) return std::nullopt;
+        const SahModel sah(node.voxel, settings_);
+        if (sah.degenerate()) return std::nullopt;
+        const SahSplit best = findSplit(node, sah);
+        if (best.axis < 0 || best.cost >= sah.leafCost(n)) return std::nullopt;  // no plane beats the leaf
+        return partition(node, best);
+    }
+
+private:
+    SahSplit findSplit(const KdNode& node, const SahModel& sah) const {
+        if (settings_.splitMethod == KdSplitMethod::Sample)
+            return findSplitBySampling(node.boxes, node.voxel, settings_.samples, sah);
+        if (!carriesEvents(settings_.splitMethod, node.primitives.size())) return findSplitBySorting(node.boxes, sah);
+        SahSplit best;
+        for (int axis = 0; axis < 3; ++axis)
+            sweepSortedEvents(node.events[axis], axis, node.primitives.size(), sah, best);
+        return best;
+    }
+
+    // Sorts the node's primitives to the two sides. One that straddles the plane is
+    // clipped to each child's voxel; one that lies on a single side keeps its bounds
+    // and, for the sweep, its already sorted events (Wald and Havran 2006, section 4.3),
+    // so that no node sorts more than its straddling primitives' events.
+    Partition<KdNode> partition(KdNode& node, const SahSplit& split) const {
+        const int axis = split.axis;
+        Partition<KdNode> parts{axis, split.pos, {}, {}};
+        KdNode& below = parts.below;
+        KdNode& above = parts.above;
+        below.voxel = above.voxel = node.voxel;
+        below.voxel.hi[axis] = above.voxel.lo[axis] = split.pos;
+        below.depth = above.depth = node.depth + 1;
+
+        constexpr std::uint32_t kNone = ~0u;
+        const std::size_t n = node.primitives.size();
+        for (KdNode* child : {&below, &above}) {
+            child->primitives.reserve(n);
+            child->boxes.reserve(n);
+        }
+        std::vector<std::uint32_t> index(2 * n, kNone);  // each primitive's index in the child below, above
+        std::uint32_t* belowIndex = index.data();
+        std::uint32_t* aboveIndex = index.data() + n;
+        std::vector<std::uint32_t> straddling;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const FloatBox& box = node.boxes[i];
+            const bool b = box.below(axis, split.pos), a = box.above(axis, split.pos);
+            if (b && a) {
+                straddling.push_back(i);
+            } else if (b) {
+                belowIndex[i] = add(below, node.primitives[i], box);
+            } else {
+                aboveIndex[i] = add(above, node.primitives[i], box);
+            }
+        }
+        const std::size_t belowKept = below.primitives.size(), aboveKept = above.primitives.size();
+        for (std::uint32_t i : straddling) {
+            addClipped(below, node.primitives[i]);
+            addClipped(above, node.primitives[i]);
+        }
+        if (carriesEvents(settings_.splitMethod, n)) {
+            for (int a = 0; a < 3; ++a) {
+                std::vector<SplitEvent>& belowEvents = below.events[a];
+                std::vector<SplitEvent>& aboveEvents = above.events[a];
+                belowEvents.reserve(2 * below.primitives.size());
+                aboveEvents.reserve(2 * above.primitives.size());
+                for (const SplitEvent& e : node.events[a]) {
+                    const std::uint32_t i = e.primitive();
+                    if (belowIndex[i] != kNone) belowEvents.emplace_back(e.pos, belowIndex[i], e.type());
+                    else if (aboveIndex[i] != kNone) aboveEvents.emplace_back(e.pos, aboveIndex[i], e.type());
+                }
+                mergeClippedEvents(below, belowKept, a);
+                mergeClippedEvents(above, aboveKept, a);
+            }
+            for (KdNode* child : {&below, &above}) {
+                if (carriesEvents(settings_.splitMethod, child->primitives.size())) continue;
+                for (std::vector<SplitEvent>& events : child->events) events = {};
+            }
+        }
+        return parts;
+    }
+
+    static std::uint32_t add(KdNode& child, std::uint32_t id, const FloatBox& box) {
+        child.primitives.push_back(id);
+        child.boxes.push_back(box);
+        return std::uint32_t(child.primitives.size() - 1);
+    }
+
+    // Perfect split: the primitive's own extent inside the child's voxel.
+    void addClipped(KdNode& child, std::uint32_t id) const {
+        const Aabb clipped = prims_.isSphere(id) ? clippedBounds(prims_.sphere(id), child.voxel)
+                                                 : clippedBounds(prims_.triangle(id), child.voxel);
+        if (!clipped.empty()) add(child, id, toFloatBox(clipped, child.voxel));
+    }
+
+    // A child's events on `axis` are the parent's events of the primitives that went to
+    // this side only (still sorted, renumbered), merged with the freshly sorted events of
+    // the clipped primitives, which are the child's primitives from `kept` on.
+    static void mergeClippedEvents(KdNode& child, std::size_t kept, int axis) {
+        std::vector<SplitEvent>& events = child.events[axis];
+        const std::size_t inherited = events.size();
+        for (std::size_t i = kept; i < child.primitives.size(); ++i)
+            addEvents(child.boxes[i], std::uint32_t(i), axis, events);
+        std::sort(events.begin() + std::ptrdiff_t(inherited), events.end());
+        std::inplace_merge(events.begin(), events.begin() + std::ptrdiff_t(inherited), events.end());
+    }
+
+    const Primitives& prims_;
+    const KdSettings& settings_;
+    int maxDepth_;
+};
+
+KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
+    KdNode root;
+    root.voxel = roundOutToFloat(prims.bounds());
+    const std::uint32_t n = prims.size();
+    root.primitives.resize(n);
+    root.boxes.resize(n);
+    for (std::uint32_t id = 0; id < n; ++id) {
+        root.primitives[id] = id;
+        root.boxes[id] = toFloatBox(prims.bounds(id), root.voxel);
+    }
+    if (carriesEvents(settings.splitMethod, n)) {
+#pragma omp parallel for schedule(static, 1)
+        for (int axis = 0; axis < 3; ++axis) {
+            std::vector<SplitEvent>& events = root.events[axis];
+            events.reserve(2 * std::size_t(n));
+            for (std::uint32_t i = 0; i < n; ++i) addEvents(root.boxes[i], i, axis, events);
+            std::sort(events.begin(), events.end());
+        }
+    }
+    return root;
+}
+
+}  // namespace
+
+std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& settings) {
+    const auto start = std::chrono::steady_clock::now();
+    KdNode root = makeRoot(prims, settings);
+    const Aabb bounds = root.voxel;
+    FlatTree flat = buildFlatTree(std::move(root), KdSplitter(prims, settings));
+    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat),
+                                            std::string("kd-") + kdSplitMethodName(settings.splitMethod),
+                                            SahCosts{settings.traversalCost, settings.intersectionCost});
+    tree->setBuildSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return tree;
+}
+
+}  // namespace rt

@@ -1,0 +1,20 @@
+// The KD tree of thesis 2.5: planes anywhere, placed by the surface area heuristic
+// (2.5.1) over the primitives' bounds clipped to each voxel ("perfect splits"), with the
+// empty-space bonus and the O(N log N) build of Wald and Havran 2006 (thesis [12]).
+#pragma once
+
+#include <memory>
+
+#include "accel/accelerator.h"
+#include "accel/settings.h"
+
+namespace rt {
+
+// The depth limit when KdSettings::maxDepth is unset: 8 + 1.3 log2(N) (pbrt, Havran).
+int defaultKdMaxDepth(std::size_t primitives);
+
+// The primitives must outlive the tree. The build runs on all OpenMP threads; the tree
+// does not depend on their number.
+std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& settings);
+
+}  // namespace rt

@@ -1,0 +1,177 @@
+#include "accel/split_tree.h"
+
+#include <cmath>
+#include <utility>
+
+namespace rt {
+
+void FlatTree::addLeaf(const std::vector<std::uint32_t>& primitives) {
+    nodes.push_back(SplitNode::leaf(std::uint32_t(primitiveIndices.size()), std::uint32_t(primitives.size())));
+    primitiveIndices.insert(primitiveIndices.end(), primitives.begin(), primitives.end());
+}
+
+void FlatTree::append(const FlatTree& subtree) {
+    const auto nodeBase = std::uint32_t(nodes.size());
+    const auto primitiveBase = std::uint32_t(primitiveIndices.size());
+    for (SplitNode node : subtree.nodes) {
+        node.relocate(nodeBase, primitiveBase);
+        nodes.push_back(node);
+    }
+    primitiveIndices.insert(primitiveIndices.end(), subtree.primitiveIndices.begin(),
+                            subtree.primitiveIndices.end());
+}
+
+SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs)
+    : prims_(prims),
+      bounds_(bounds),
+      nodes_(std::move(tree.nodes)),
+      primitiveIndices_(std::move(tree.primitiveIndices)) {
+    stats_ = computeStats(std::move(name), costs);
+}
+
+// Front-to-back traversal with an explicit stack (Havran's TA_B, thesis [7]; pbrt-v3's
+// KdTreeAccel::Intersect). Each stack entry is a far child still to visit and the part
+// [tMin, tMax] of the ray inside it. Entries lower in the stack lie farther along the
+// ray, so once the nearest hit so far (`tLimit`) lies before the current node, nothing
+// left can be nearer and the search stops.
+template <typename LeafVisitor>
+void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
+                         const LeafVisitor& visitLeaf) const {
+    Real tMin = 0;
+    if (nodes_.empty() || bounds_.empty()) return;
+    const Vec3 invDir = reciprocal(ray.direction);
+    if (!clipRay(bounds_, ray, invDir, tMin, tMax)) return;
+
+    struct Pending {
+        std::uint32_t node;
+        Real tMin, tMax;
+    };
+    Pending stack[kMaxTreeDepth];
+    int size = 0;
+    std::uint32_t index = 0;
+    for (;;) {
+        if (tLimit < tMin) return;
+        ++counters.traversalSteps;
+        const SplitNode node = nodes_[index];
+        if (!node.isLeaf()) {
+            const int axis = node.axis();
+            const Real split = node.split();
+            const Real origin = ray.origin[axis];
+            const Real tPlane = (split - origin) * invDir[axis];
+            // The child holding the origin comes first; an origin on the plane belongs to
+            // the side the ray moves into.
+            const bool belowFirst = origin < split || (origin == split && ray.direction[axis] <= 0);
+            const std::uint32_t first = belowFirst ? index + 1 : node.aboveChild();
+            const std::uint32_t second = belowFirst ? node.aboveChild() : index + 1;
+            if (std::isnan(tPlane)) {
+                // The ray lies in the plane (0 * inf): primitives on either side may touch it.
+                stack[size++] = {second, tMin, tMax};
+                index = first;
+            } else if (tPlane > tMax || tPlane <= 0) {
+                index = first;
+            } else if (tPlane < tMin) {
+                index = second;
+            } else {
+                stack[size++] = {second, tPlane, tMax};
+                index = first;
+                tMax = tPlane;
+            }
+            continue;
+        }
+        if (visitLeaf(&primitiveIndices_[node.primitiveOffset()], node.primitiveCount())) return;
+        if (size == 0) return;
+        --size;
+        index = stack[size].node;
+        tMin = stack[size].tMin;
+        tMax = stack[size].tMax;
+    }
+}
+
+bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
+    Hit nearest;
+    nearest.t = tMax;
+    bool found = false;
+    traverse(ray, tMax, nearest.t, counters, [&](const std::uint32_t* ids, std::uint32_t count) {
+        counters.intersectionTests += count;
+        for (std::uint32_t i = 0; i < count; ++i) found |= prims_.intersect(ids[i], ray, nearest.t, nearest);
+        return false;  // a nearer hit may still lie in a later node; traverse() knows when not
+    });
+    if (found) hit = nearest;
+    return found;
+}
+
+bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
+    bool found = false;
+    traverse(ray, tMax, tMax, counters, [&](const std::uint32_t* ids, std::uint32_t count) {
+        Hit scratch;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            ++counters.intersectionTests;
+            if (prims_.intersect(ids[i], ray, tMax, scratch)) return found = true;
+        }
+        return false;
+    });
+    return found;
+}
+
+void SplitTree::forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const {
+    if (nodes_.empty()) return;
+    struct Pending {
+        std::uint32_t node, depth;
+        Aabb bounds;
+    };
+    std::vector<Pending> stack{{0, 0, bounds_}};
+    while (!stack.empty()) {
+        const Pending p = stack.back();
+        stack.pop_back();
+        const SplitNode node = nodes_[p.node];
+        TreeNodeInfo info;
+        info.id = p.node;  // nodes are stored in pre-order
+        info.depth = p.depth;
+        info.bounds = p.bounds;
+        info.leaf = node.isLeaf();
+        if (node.isLeaf()) {
+            info.primitives = node.primitiveCount();
+        } else {
+            info.axis = node.axis();
+            info.split = node.split();
+            Aabb below = p.bounds, above = p.bounds;
+            below.hi[info.axis] = info.split;
+            above.lo[info.axis] = info.split;
+            stack.push_back({node.aboveChild(), p.depth + 1, above});
+            stack.push_back({p.node + 1, p.depth + 1, below});  // popped first: lower child first
+        }
+        visit(info);
+    }
+}
+
+// The tree's expected cost per ray by the SAH (thesis 2.5.1): each node is entered with
+// probability proportional to its surface area, relative to the root's.
+AccelStats SplitTree::computeStats(std::string name, SahCosts costs) const {
+    AccelStats s;
+    s.name = std::move(name);
+    s.primitives = prims_.size();
+    s.memoryBytes = nodes_.size() * sizeof(SplitNode) + primitiveIndices_.size() * sizeof(std::uint32_t);
+    const double rootArea = bounds_.surfaceArea();
+    double leafDepthSum = 0;
+    std::uint64_t nonEmptyLeaves = 0;
+    forEachNode([&](const TreeNodeInfo& n) {
+        ++s.nodes;
+        s.maxDepth = std::max(s.maxDepth, n.depth);
+        const double probability = rootArea > 0 ? n.bounds.surfaceArea() / rootArea : 1.0;
+        if (!n.leaf) {
+            s.sahCost += costs.traversal * probability;
+            return;
+        }
+        ++s.leaves;
+        leafDepthSum += n.depth;
+        s.primitiveReferences += n.primitives;
+        if (n.primitives == 0) ++s.emptyLeaves;
+        else ++nonEmptyLeaves;
+        s.sahCost += costs.intersection * n.primitives * probability;
+    });
+    s.averageLeafDepth = s.leaves ? leafDepthSum / double(s.leaves) : 0;
+    s.averagePrimitivesPerLeaf = nonEmptyLeaves ? double(s.primitiveReferences) / double(nonEmptyLeaves) : 0;
+    return s;
+}
+
+}  // namespace rt

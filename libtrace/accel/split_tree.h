@@ -1,0 +1,99 @@
+// The structure the BSP and KD trees share (thesis 2.4, 2.5): a binary partition of
+// space by axis-aligned planes whose leaves list the primitives they overlap. The two
+// trees differ only in where their builders put the planes (bsp.cpp, kdtree.cpp);
+// traversal, statistics and the node visitor live here, once.
+//
+// Layout, as in pbrt-v3's KdTreeAccel: 8-byte nodes in one array in pre-order, so the
+// lower child of an inner node is the next node and only the upper child's index is
+// stored; leaves point into one flat array of primitive indices.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "accel/accelerator.h"
+#include "accel/settings.h"
+
+namespace rt {
+
+// The deepest tree any builder makes; it bounds the traversal stack.
+constexpr int kMaxTreeDepth = 64;
+
+// One node in 8 bytes. The split position is a float even when Real is double: the
+// builders round every plane to float before they sort primitives against it, so the
+// tree is exact for the planes it stores.
+class SplitNode {
+public:
+    static SplitNode leaf(std::uint32_t primitiveOffset, std::uint32_t primitiveCount) {
+        return SplitNode(primitiveOffset, (primitiveCount << 2) | 3u);
+    }
+    static SplitNode inner(int axis, float split, std::uint32_t aboveChild) {
+        return SplitNode(std::bit_cast<std::uint32_t>(split), (aboveChild << 2) | std::uint32_t(axis));
+    }
+
+    bool isLeaf() const { return (bits_ & 3u) == 3u; }
+    int axis() const { return int(bits_ & 3u); }
+    float split() const { return std::bit_cast<float>(word_); }
+    std::uint32_t aboveChild() const { return bits_ >> 2; }  // the below child is this node + 1
+    std::uint32_t primitiveOffset() const { return word_; }
+    std::uint32_t primitiveCount() const { return bits_ >> 2; }
+
+    // Moves a subtree built on its own to `nodeBase` and `primitiveBase` in a larger array.
+    void relocate(std::uint32_t nodeBase, std::uint32_t primitiveBase) {
+        if (isLeaf())
+            word_ += primitiveBase;
+        else
+            bits_ += nodeBase << 2;
+    }
+
+private:
+    SplitNode(std::uint32_t word, std::uint32_t bits) : word_(word), bits_(bits) {}
+    std::uint32_t word_;  // split position (inner) or offset into the primitive indices (leaf)
+    std::uint32_t bits_;  // axis 0-2 or 3 for a leaf, then the upper child or the primitive count
+};
+static_assert(sizeof(SplitNode) == 8);
+
+// A tree (or subtree) as the builders produce it.
+struct FlatTree {
+    std::vector<SplitNode> nodes;             // pre-order
+    std::vector<std::uint32_t> primitiveIndices;
+
+    void addLeaf(const std::vector<std::uint32_t>& primitives);
+    // Appends `subtree`, built separately, fixing its node and primitive offsets.
+    void append(const FlatTree& subtree);
+};
+
+// SAH constants used to report a tree's cost (thesis 2.5.1).
+struct SahCosts {
+    double traversal = 1.0;
+    double intersection = 1.5;
+};
+
+class SplitTree final : public Accelerator {
+public:
+    // `bounds` is the root voxel; every plane in `tree` must lie inside it.
+    SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs);
+
+    bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
+    bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
+    AccelStats stats() const override { return stats_; }
+    void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const override;
+
+    void setBuildSeconds(double seconds) { stats_.buildSeconds = seconds; }
+
+private:
+    template <typename LeafVisitor>
+    void traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
+                  const LeafVisitor& visitLeaf) const;
+    AccelStats computeStats(std::string name, SahCosts costs) const;
+
+    const Primitives& prims_;
+    Aabb bounds_;
+    std::vector<SplitNode> nodes_;
+    std::vector<std::uint32_t> primitiveIndices_;
+    AccelStats stats_;
+};
+
+}  // namespace rt

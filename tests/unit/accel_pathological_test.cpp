@@ -1,0 +1,88 @@
+// Inputs that break naive tree builders (issue 4): every build must finish with memory
+// bounded by a small multiple of the input, and still agree with the naive list.
+#include <functional>
+#include <memory>
+#include <random>
+
+#include "accel/bsp.h"
+#include "accel/kdtree.h"
+#include "accel/naive.h"
+#include "scene/generate.h"
+#include "test_util.h"
+
+using namespace rt;
+
+namespace {
+
+// Builds every tree over `prims`, checks that nodes and references stay within a few
+// per primitive, and that `rays` rays through the scene agree with the naive list.
+void expectBoundedAndCorrect(const Primitives& prims, int rays) {
+    std::vector<std::unique_ptr<Accelerator>> trees;
+    trees.push_back(buildBspTree(prims, BspSettings{}));
+    for (KdSplitMethod method : {KdSplitMethod::Sweep, KdSplitMethod::Sort, KdSplitMethod::Sample}) {
+        KdSettings kd;
+        kd.splitMethod = method;
+        trees.push_back(buildKdTree(prims, kd));
+    }
+    const NaiveAccelerator naive(prims);
+    const Aabb bounds = prims.bounds();
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<Real> unit(0, 1);
+    RayCounters counters;
+    for (const auto& tree : trees) {
+        const AccelStats s = tree->stats();
+        EXPECT_LE(s.primitiveReferences, 4 * std::uint64_t(prims.size()) + 1000) << s.name;
+        EXPECT_LE(s.memoryBytes, 100 * std::uint64_t(prims.size()) + 10000) << s.name;  // normal scenes: 25-70
+    }
+    for (int i = 0; i < rays; ++i) {
+        // From outside the scene towards a random point in it.
+        const Vec3 target = bounds.lo + mul(bounds.diagonal(), {unit(gen), unit(gen), unit(gen)});
+        const Vec3 origin = bounds.center() + normalize(Vec3{unit(gen) - Real(0.5), unit(gen) - Real(0.5),
+                                                             unit(gen) - Real(0.5)}) *
+                                                  (length(bounds.diagonal()) + 1);
+        const Ray ray{origin, normalize(target - origin)};
+        Hit expected;
+        const bool found = naive.intersect(ray, kInfinity, expected, counters);
+        for (const auto& tree : trees) {
+            Hit hit;
+            ASSERT_EQ(tree->intersect(ray, kInfinity, hit, counters), found) << tree->stats().name << " ray " << i;
+            if (found) {
+                EXPECT_NEAR(hit.t, expected.t, 1e-4 * expected.t) << tree->stats().name << " ray " << i;
+            }
+            EXPECT_EQ(tree->occluded(ray, kInfinity, counters), found) << tree->stats().name << " ray " << i;
+        }
+    }
+}
+
+}  // namespace
+
+TEST(AccelPathological, HundredThousandIdenticalTriangles) {
+    Primitives prims;
+    for (int i = 0; i < 100000; ++i) prims.addTriangle({{0, 0, 0}, {1, 0, 0}, {0, 1, Real(0.5)}}, 0);
+    expectBoundedAndCorrect(prims, 20);  // every tree is one leaf of 100,000: few rays
+}
+
+TEST(AccelPathological, AllPrimitivesAtOnePoint) {
+    // Tiny triangles that all have a vertex at the same point, and tiny spheres centred on it.
+    Primitives prims;
+    std::mt19937 gen(4);
+    std::uniform_real_distribution<Real> tiny(-1e-6f, 1e-6f);
+    const Vec3 p{Real(0.3), Real(0.3), Real(0.3)};
+    for (int i = 0; i < 20000; ++i)
+        prims.addTriangle({p, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}}, 0);
+    for (int i = 0; i < 1000; ++i) prims.addSphere({p, Real(1e-6)}, 0);
+    expectBoundedAndCorrect(prims, 50);
+}
+
+TEST(AccelPathological, NestedSpheres) {
+    // A thousand concentric shells: every plane near the centre cuts most of them.
+    Primitives prims;
+    for (int i = 1; i <= 1000; ++i) prims.addSphere({{Real(0.3), Real(0.3), Real(0.3)}, Real(1e-3) * Real(i)}, 0);
+    expectBoundedAndCorrect(prims, 500);
+}
+
+TEST(AccelPathological, OneHugeTriangleAmongManyTinyOnes) {
+    Primitives prims = generateScene({20000, 0, Placement::Uniform, 12}).primitives;
+    prims.addTriangle({{-100, -100, -0.3f}, {100, -100, 0.2f}, {0, 100, 0.1f}}, 0);
+    expectBoundedAndCorrect(prims, 200);
+}

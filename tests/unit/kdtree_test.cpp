@@ -1,0 +1,182 @@
+// The KD tree's SAH model, split finders, limits and determinism (thesis 2.5.1).
+#include "accel/kdtree.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <random>
+#include <sstream>
+
+#include "accel/kd_split.h"
+#include "scene/generate.h"
+#include "test_util.h"
+
+using namespace rt;
+
+namespace {
+
+std::string dump(const Accelerator& tree) {
+    std::ostringstream out;
+    tree.forEachNode([&](const TreeNodeInfo& n) {
+        out << n.id << ' ' << n.depth << ' ' << n.leaf << ' ' << n.axis << ' ' << n.split << ' ' << n.primitives
+            << '\n';
+    });
+    return out.str();
+}
+
+KdSettings withMethod(KdSplitMethod method) {
+    KdSettings s;
+    s.splitMethod = method;
+    return s;
+}
+
+std::vector<FloatBox> randomBoxes(int n, std::uint32_t seed) {
+    std::mt19937 gen(seed);
+    std::uniform_int_distribution<int> grid(0, 8);  // on a grid, so positions repeat and planars occur
+    std::vector<FloatBox> boxes;
+    for (int i = 0; i < n; ++i) {
+        FloatBox b;
+        for (int a = 0; a < 3; ++a) {
+            const int x = grid(gen), y = grid(gen);
+            b.lo[a] = float(std::min(x, y)) / 8;
+            b.hi[a] = float(std::max(x, y)) / 8;
+        }
+        boxes.push_back(b);
+    }
+    return boxes;
+}
+
+}  // namespace
+
+TEST(SahModel, CostOfASplit) {
+    const KdSettings settings;  // C_T 1, C_I 1.5, empty bonus 0.8
+    const SahModel sah(Aabb{{0, 0, 0}, {1, 1, 1}}, settings);
+    SahSplit best;
+    sah.consider(0, 0.5f, 4, 6, best);  // each half has 4/6 of the area
+    EXPECT_EQ(best.axis, 0);
+    EXPECT_NEAR(best.cost, 1 + 1.5 * (4.0 / 6 * 4 + 4.0 / 6 * 6), 1e-9);
+    sah.consider(1, 0.25f, 0, 10, best);  // cuts off empty space: the bonus applies
+    EXPECT_EQ(best.axis, 1);
+    EXPECT_NEAR(best.cost, 0.8 * (1 + 1.5 * (5.0 / 6 * 10)), 1e-9);
+    sah.consider(2, 0.0f, 0, 10, best);  // on the voxel's face: cuts off nothing, ignored
+    EXPECT_EQ(best.axis, 1);
+    EXPECT_DOUBLE_EQ(sah.leafCost(10), 15);
+}
+
+// The sweep must find the cheapest of all planes at box edges, as counting every
+// candidate directly (the O(N^2) method the thesis starts from) does.
+TEST(KdSplit, SweepAndSamplingMatchDirectCounting) {
+    const std::vector<FloatBox> boxes = randomBoxes(60, 8);
+    const Aabb voxel{{0, 0, 0}, {1, 1, 1}};
+    const SahModel sah(voxel, KdSettings{});
+    auto direct = [&](const std::vector<float>& candidates) {
+        SahSplit best;
+        for (int axis = 0; axis < 3; ++axis) {
+            for (float p : candidates) {
+                std::size_t below = 0, above = 0;
+                for (const FloatBox& b : boxes) {
+                    below += b.below(axis, p);
+                    above += b.above(axis, p);
+                }
+                sah.consider(axis, p, below, above, best);
+            }
+        }
+        return best;
+    };
+    std::vector<float> edges;
+    for (int k = 0; k <= 8; ++k) edges.push_back(float(k) / 8);
+    const SahSplit expected = direct(edges);
+    const SahSplit sorted = findSplitBySorting(boxes, sah);
+    EXPECT_EQ(sorted.axis, expected.axis);
+    EXPECT_EQ(sorted.pos, expected.pos);
+    EXPECT_DOUBLE_EQ(sorted.cost, expected.cost);
+
+    // Seven samples fall exactly on the grid planes 1/8 .. 7/8 (and some boxes lie in them).
+    const SahSplit sampled = findSplitBySampling(boxes, voxel, 7, sah);
+    EXPECT_DOUBLE_EQ(sampled.cost, expected.cost);
+    const SahSplit fewer = findSplitBySampling(boxes, voxel, 3, sah);  // planes 1/4, 1/2, 3/4
+    EXPECT_DOUBLE_EQ(fewer.cost, direct({0.25f, 0.5f, 0.75f}).cost);
+}
+
+TEST(KdTree, SweepAndSortBuildTheSameTree) {
+    const Primitives prims = generateScene({1500, 300, Placement::Clustered, 5}).primitives;
+    const auto sweep = buildKdTree(prims, withMethod(KdSplitMethod::Sweep));
+    const auto sort = buildKdTree(prims, withMethod(KdSplitMethod::Sort));
+    EXPECT_EQ(dump(*sweep), dump(*sort));
+    EXPECT_EQ(sweep->stats().name, "kd-sweep");
+    EXPECT_GT(sweep->stats().nodes, 100u);
+    // Sampling evaluates fewer planes: never a cheaper tree than the exact search here.
+    EXPECT_GE(buildKdTree(prims, withMethod(KdSplitMethod::Sample))->stats().sahCost, sweep->stats().sahCost);
+}
+
+TEST(KdTree, SameTreeForAnyNumberOfThreads) {
+    const Primitives prims = generateScene({20000, 0, Placement::Uniform, 6}).primitives;
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const std::string one = dump(*buildKdTree(prims, KdSettings{}));
+    omp_set_num_threads(3);
+    const std::string three = dump(*buildKdTree(prims, KdSettings{}));
+    omp_set_num_threads(threads);
+    EXPECT_EQ(one, three);
+}
+
+TEST(KdTree, DepthLimitGrowsWithLogN) {
+    EXPECT_EQ(defaultKdMaxDepth(1), 8);
+    EXPECT_EQ(defaultKdMaxDepth(1024), 21);  // 8 + 1.3 * 10
+    EXPECT_EQ(defaultKdMaxDepth(1000000), 34);
+    const Primitives prims = generateScene({3000, 0, Placement::Clustered, 7}).primitives;
+    KdSettings shallow;
+    shallow.maxDepth = 4;
+    EXPECT_LE(buildKdTree(prims, shallow)->stats().maxDepth, 4u);
+    EXPECT_LE(buildKdTree(prims, KdSettings{})->stats().maxDepth, std::uint32_t(defaultKdMaxDepth(prims.size())));
+}
+
+TEST(KdTree, LeafWhenNoSplitBeatsIt) {
+    Primitives one;
+    one.addTriangle({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 0);
+    EXPECT_EQ(buildKdTree(one, KdSettings{})->stats().nodes, 1u);
+    const Primitives prims = generateScene({500, 0, Placement::Uniform, 8}).primitives;
+    KdSettings costlyTraversal;
+    costlyTraversal.traversalCost = 1e6;
+    EXPECT_EQ(buildKdTree(prims, costlyTraversal)->stats().nodes, 1u);
+    EXPECT_GT(buildKdTree(prims, KdSettings{})->stats().nodes, 1u);
+}
+
+TEST(KdTree, CutsOffEmptySpaceFirst) {
+    // A cluster in one corner of a large, otherwise empty scene (its far corner is one
+    // tiny sphere): the first planes wrap the cluster, leaving large empty leaves.
+    Primitives prims = generateScene({2000, 0, Placement::Uniform, 9}).primitives;
+    const Aabb cluster = prims.bounds();
+    prims.addSphere({{20, 20, 20}, Real(0.01)}, 0);
+    const auto tree = buildKdTree(prims, KdSettings{});
+    std::vector<TreeNodeInfo> nodes;
+    tree->forEachNode([&](const TreeNodeInfo& n) { nodes.push_back(n); });
+    ASSERT_GT(nodes.size(), 3u);
+    EXPECT_FALSE(nodes[0].leaf);
+    EXPECT_NEAR(nodes[0].split, cluster.hi[nodes[0].axis], 1e-3);  // the cluster's far face, not the middle
+    const AccelStats s = tree->stats();
+    EXPECT_GT(s.emptyLeaves, 0u);
+    EXPECT_LT(s.sahCost, 0.5 * 1.5 * double(prims.size()));
+}
+
+TEST(KdTree, StatisticsAddUp) {
+    const Primitives prims = generateScene({3000, 500, Placement::Uniform, 10}).primitives;
+    const auto tree = buildKdTree(prims, KdSettings{});
+    const AccelStats s = tree->stats();
+    std::uint64_t references = 0, nonEmpty = 0;
+    double depthSum = 0;
+    tree->forEachNode([&](const TreeNodeInfo& n) {
+        if (!n.leaf) return;
+        references += n.primitives;
+        nonEmpty += n.primitives > 0;
+        depthSum += n.depth;
+    });
+    EXPECT_EQ(s.nodes, 2 * s.leaves - 1);
+    EXPECT_EQ(s.primitiveReferences, references);
+    EXPECT_DOUBLE_EQ(s.averagePrimitivesPerLeaf, double(references) / double(nonEmpty));
+    EXPECT_DOUBLE_EQ(s.averageLeafDepth, depthSum / double(s.leaves));
+    EXPECT_EQ(s.primitives, prims.size());
+    EXPECT_LT(s.averagePrimitivesPerLeaf, 8);
+    EXPECT_LT(s.bytesPerPrimitive(), 64);
+    EXPECT_GT(s.buildSeconds, 0);
+}

@@ -1,0 +1,97 @@
+// Traversal of hand-built trees: the corner cases the property tests rarely meet.
+#include "accel/split_tree.h"
+
+#include "test_util.h"
+
+using namespace rt;
+
+namespace {
+
+// Root split at z = 0; below: sphere 0; above: sphere 1, touching the plane at the origin.
+struct TwoSpheres {
+    Primitives prims;
+    std::unique_ptr<SplitTree> tree;
+
+    TwoSpheres() {
+        prims.addSphere({{0, 0, Real(-1.5)}, Real(0.5)}, 0);
+        prims.addSphere({{0, 0, Real(0.5)}, Real(0.5)}, 0);
+        FlatTree flat;
+        flat.nodes.push_back(SplitNode::inner(2, 0.0f, 2));
+        flat.addLeaf({0});
+        flat.addLeaf({1});
+        tree = std::make_unique<SplitTree>(prims, Aabb{{-2, -2, -2}, {2, 2, 2}}, flat, "test", SahCosts{});
+    }
+};
+
+}  // namespace
+
+TEST(SplitNode, PacksIntoEightBytes) {
+    const SplitNode inner = SplitNode::inner(1, 0.25f, 12345);
+    EXPECT_FALSE(inner.isLeaf());
+    EXPECT_EQ(inner.axis(), 1);
+    EXPECT_EQ(inner.split(), 0.25f);
+    EXPECT_EQ(inner.aboveChild(), 12345u);
+    const SplitNode leaf = SplitNode::leaf(77, 1u << 29);
+    EXPECT_TRUE(leaf.isLeaf());
+    EXPECT_EQ(leaf.primitiveOffset(), 77u);
+    EXPECT_EQ(leaf.primitiveCount(), 1u << 29);
+}
+
+TEST(SplitTree, RayInTheSplitPlaneSeesBothSides) {
+    const TwoSpheres s;
+    RayCounters counters;
+    Hit hit;
+    // Along the plane z = 0, grazing sphere 1 at the origin: 0 * inf = NaN for this axis,
+    // and the ray "starts" below (it does not move up), yet the upper side must be seen.
+    ASSERT_TRUE(s.tree->intersect({{-5, 0, 0}, {1, 0, 0}}, kInfinity, hit, counters));
+    EXPECT_EQ(hit.prim, 1u);
+    EXPECT_NEAR(hit.t, 5, kTol);
+    EXPECT_TRUE(s.tree->occluded({{-5, 0, 0}, {1, 0, 0}}, 6, counters));
+}
+
+TEST(SplitTree, FrontToBackStopsAtTheFirstNodeWithAHit) {
+    const TwoSpheres s;
+    RayCounters down, up;
+    Hit hit;
+    ASSERT_TRUE(s.tree->intersect({{0, 0, 5}, {0, 0, -1}}, kInfinity, hit, down));
+    EXPECT_EQ(hit.prim, 1u);
+    EXPECT_NEAR(hit.t, 4, kTol);
+    EXPECT_EQ(down.intersectionTests, 1u);  // the lower leaf was never opened
+    ASSERT_TRUE(s.tree->intersect({{0, 0, -5}, {0, 0, 1}}, kInfinity, hit, up));
+    EXPECT_EQ(hit.prim, 0u);
+    EXPECT_NEAR(hit.t, 3, kTol);
+    EXPECT_EQ(up.intersectionTests, 1u);
+    EXPECT_EQ(up.traversalSteps, 2u);
+}
+
+TEST(SplitTree, RayStartingOnThePlaneGoesToTheSideItMovesInto) {
+    const TwoSpheres s;
+    RayCounters counters;
+    Hit hit;
+    ASSERT_TRUE(s.tree->intersect({{0, 0, 0}, {0, 0, 1}}, kInfinity, hit, counters));
+    EXPECT_EQ(hit.prim, 1u);  // from its surface, through the inside, to the far side
+    EXPECT_NEAR(hit.t, 1, kTol);
+    EXPECT_EQ(counters.intersectionTests, 1u);
+    EXPECT_FALSE(s.tree->occluded({{0, 0, Real(0.5)}, {0, 0, 1}}, Real(0.4), counters));
+}
+
+TEST(SplitTree, StatsAndVisitorDescribeTheTree) {
+    const TwoSpheres s;
+    const AccelStats st = s.tree->stats();
+    EXPECT_EQ(st.nodes, 3u);
+    EXPECT_EQ(st.leaves, 2u);
+    EXPECT_EQ(st.primitiveReferences, 2u);
+    EXPECT_EQ(st.memoryBytes, 3 * 8u + 2 * 4u);
+    EXPECT_DOUBLE_EQ(st.bytesPerPrimitive(), 16.0);
+    EXPECT_EQ(st.maxDepth, 1u);
+    // Root 1.0 * C_T; each half has area 2*(16 + 2*4*2) = 64 of 96: 2 * 1.5 * 1 * 2/3.
+    EXPECT_NEAR(st.sahCost, 1.0 + 2.0, 1e-9);
+    std::vector<TreeNodeInfo> nodes;
+    s.tree->forEachNode([&](const TreeNodeInfo& n) { nodes.push_back(n); });
+    ASSERT_EQ(nodes.size(), 3u);
+    EXPECT_EQ(nodes[0].axis, 2);
+    EXPECT_EQ(nodes[1].id, 1u);
+    EXPECT_EQ(nodes[1].bounds.hi.z, 0);  // the lower child first
+    EXPECT_EQ(nodes[2].bounds.lo.z, 0);
+    EXPECT_EQ(nodes[2].depth, 1u);
+}
