@@ -3,10 +3,12 @@
 // writes and reports.
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
-#include "core/error.h"
 
+#include "core/error.h"
 #include "import/import.h"
+#include "scene/xml_writer.h"
 #include "summary.h"
 #include "tool.h"
 
@@ -20,10 +22,26 @@ struct Options {
     std::string upAxis = "y";
 };
 
+// saveSceneXml writes each file atomically, the RAW models first and the XML last. If it
+// fails part way, the model folder is removed when this run made it, so a failed
+// conversion leaves nothing behind.
+void writeScene(const rt::Scene& scene, const std::string& output) {
+    const std::filesystem::path folder = output == "-" ? "" : rt::modelFolderFor(output);
+    std::error_code ec;
+    const bool existed = output == "-" || std::filesystem::exists(folder, ec);
+    try {
+        rt::saveSceneXml(scene, output);
+    } catch (...) {
+        if (!existed) std::filesystem::remove_all(folder, ec);
+        throw;
+    }
+}
+
 int convert(Options& o) {
     if (o.json && o.output == "-") throw rt::InputError("--json prints on standard output, where -o - writes the scene");
     o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
     const rt::ImportResult result = rt::importScene(o.input, o.import);
+    if (!o.output.empty()) writeScene(result.scene, o.output);
     const rt::convert::Summary summary{o.input, o.output, &result};
     rt::convert::printSummary(std::cerr, summary);
     if (o.json) rt::convert::printSummaryJson(std::cout, summary);
