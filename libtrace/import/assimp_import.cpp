@@ -48,8 +48,8 @@ std::string formatName(const Assimp::Importer& importer, const std::string& path
         if (!importer.GetImporter(i)->CanRead(path, importer.GetIOHandler(), true)) continue;
         const aiImporterDesc* desc = importer.GetImporterInfo(i);
         if (!(desc->mFlags & aiImporterFlags_SupportBinaryFlavour))
-            throw InputError(path + ": the file name has no known extension and the content looks like " +
-                             desc->mName + " text only by its keywords; rename it with the right extension");
+            throw InputError(path + ": the file name has no known extension and the content looks like " + desc->mName +
+                             " text only by its keywords; rename it with the right extension");
         return desc->mName;
     }
     throw InputError(path + ": unknown file format (no known extension, no recognised signature)");
@@ -93,13 +93,15 @@ private:
     }
 
     void placeMesh(unsigned meshIndex, const Transform& world) {
-        if (meshIndex >= ai_.mNumMeshes) fail("a node names mesh " + std::to_string(meshIndex) + ", which does not exist");
+        if (meshIndex >= ai_.mNumMeshes)
+            fail("a node names mesh " + std::to_string(meshIndex) + ", which does not exist");
         meshesPlaced_.insert(meshIndex);
         if (!models_[meshIndex]) models_[meshIndex] = convertMesh(meshIndex);
         const ConvertedMesh& converted = *models_[meshIndex];
         out_.report.droppedDegenerateInScene += converted.dropped;
         if (converted.model)
-            out_.scene.instances.push_back({*converted.model, materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex), world});
+            out_.scene.instances.push_back(
+                {*converted.model, materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex), world});
     }
 
     ConvertedMesh convertMesh(unsigned meshIndex) {
@@ -129,10 +131,12 @@ private:
         if (face.mNumIndices == 1) ++out_.report.droppedPoints;
         if (face.mNumIndices == 2) ++out_.report.droppedLines;
         for (unsigned i = 0; i < face.mNumIndices; ++i)
-            if (face.mIndices[i] >= points.size()) fail(what + " has a face with vertex index " + std::to_string(face.mIndices[i]) + " out of range");
+            if (face.mIndices[i] >= points.size())
+                fail(what + " has a face with vertex index " + std::to_string(face.mIndices[i]) + " out of range");
         std::size_t dropped = 0;
         for (unsigned i = 1; i + 1 < face.mNumIndices; ++i)
-            if (!appendTriangle(model, points[face.mIndices[0]], points[face.mIndices[i]], points[face.mIndices[i + 1]]))
+            if (!appendTriangle(model, points[face.mIndices[0]], points[face.mIndices[i]],
+                                points[face.mIndices[i + 1]]))
                 ++dropped;
         return dropped;
     }
@@ -140,7 +144,8 @@ private:
     // Diffuse colour, specular = luminance(Ks) * shininess strength, shininess as the Phong
     // exponent, reflectivity as the mirror coefficient (docs/conversion.md).
     std::uint32_t materialFor(unsigned index) {
-        if (index >= ai_.mNumMaterials) fail("a mesh names material " + std::to_string(index) + ", which does not exist");
+        if (index >= ai_.mNumMaterials)
+            fail("a mesh names material " + std::to_string(index) + ", which does not exist");
         if (materials_[index]) return *materials_[index];
         const aiMaterial& am = *ai_.mMaterials[index];
         Material m;
@@ -180,7 +185,8 @@ private:
         for (unsigned i = 0; i < ai_.mNumCameras; ++i) {
             const aiCamera& cam = *ai_.mCameras[i];
             const std::string name = cam.mName.C_Str();
-            const bool wanted = options_.camera.empty() || options_.camera == std::to_string(i) || options_.camera == name;
+            const bool wanted =
+                options_.camera.empty() || options_.camera == std::to_string(i) || options_.camera == name;
             const Transform* world = placement(cam.mName);
             if (!wanted || !world) continue;
             const std::string what = "camera " + std::to_string(i) + " \"" + name + "\"";
@@ -192,7 +198,8 @@ private:
             out_.scene.camera = viewCamera(world->point(toVec3(cam.mPosition)), world->vector(toVec3(cam.mLookAt)),
                                            world->vector(toVec3(cam.mUp)), 2.0 * cam.mHorizontalFOV, bounds);
             report.cameraUsed = name;
-            if (name.empty()) report.cameraUsed.append("#").append(std::to_string(i));  // (GCC 12 -Wrestrict misfires on "#" + s)
+            if (name.empty())
+                report.cameraUsed.append("#").append(std::to_string(i));  // (GCC 12 -Wrestrict misfires on "#" + s)
             return;
         }
         if (!options_.camera.empty()) fail("no node places a camera named or numbered \"" + options_.camera + "\"");

@@ -13,22 +13,31 @@ namespace {
 std::size_t componentBytes(int componentType) {
     switch (componentType) {
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
         case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;  // INT and DOUBLE are not glTF 2.0 accessor types
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;  // INT and DOUBLE are not glTF 2.0 accessor types
     }
 }
 
 int componentsOf(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        case TINYGLTF_TYPE_VEC4: return 4;
-        default: return 0;  // matrices are never geometry
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        default:
+            return 0;  // matrices are never geometry
     }
 }
 
@@ -58,20 +67,29 @@ double decode(const unsigned char* p, int componentType, bool normalized) {
             const double v = load<std::uint16_t>(p);
             return normalized ? v / 65535.0 : v;
         }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load<std::uint32_t>(p);
-        default: return load<float>(p);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return load<std::uint32_t>(p);
+        default:
+            return load<float>(p);
     }
 }
 
 std::string typeName(int componentType) {
     switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
-        case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
-        default: return "component type " + std::to_string(componentType);
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return "BYTE";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return "UNSIGNED_BYTE";
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return "SHORT";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return "UNSIGNED_SHORT";
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return "UNSIGNED_INT";
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return "FLOAT";
+        default:
+            return "component type " + std::to_string(componentType);
     }
 }
 
@@ -135,8 +153,8 @@ const unsigned char* checkedRange(const tinygltf::Model& gltf, int viewIndex, st
                       count - 1 <= (view.byteLength - elementBytes - offset) / stride;
     if (!fits) {
         error = std::to_string(count) + " elements of " + std::to_string(elementBytes) + " bytes, " +
-                std::to_string(stride) + " apart, from byte " + std::to_string(offset) + " do not fit in " +
-                viewName + " (" + std::to_string(view.byteLength) + " bytes)";
+                std::to_string(stride) + " apart, from byte " + std::to_string(offset) + " do not fit in " + viewName +
+                " (" + std::to_string(view.byteLength) + " bytes)";
         return nullptr;
     }
     return data.data() + view.byteOffset + offset;
@@ -177,8 +195,9 @@ GltfAccessorReader::Elements GltfAccessorReader::locate(int accessor, const std:
             fail(name, std::to_string(acc.count) + " elements without a bufferView are more than the file's data");
         return e;
     }
-    const std::size_t viewStride =
-        std::size_t(acc.bufferView) < gltf_.bufferViews.size() ? gltf_.bufferViews[std::size_t(acc.bufferView)].byteStride : 0;
+    const std::size_t viewStride = std::size_t(acc.bufferView) < gltf_.bufferViews.size()
+                                       ? gltf_.bufferViews[std::size_t(acc.bufferView)].byteStride
+                                       : 0;
     e.stride = viewStride ? viewStride : elementBytes;
     if (e.stride < elementBytes || e.stride % bytes != 0)
         fail(name, "byteStride " + std::to_string(e.stride) + " does not suit elements of " +
@@ -193,8 +212,9 @@ std::vector<double> GltfAccessorReader::readAll(int accessor, int wantType, cons
     const Elements e = locate(accessor, what);
     const tinygltf::Accessor& acc = gltf_.accessors[std::size_t(accessor)];
     const std::string name = what + " (accessor " + std::to_string(accessor) + ")";
-    if (acc.type != wantType) fail(name, "has " + std::to_string(e.components) + " components per element, expected " +
-                                             std::to_string(componentsOf(wantType)));
+    if (acc.type != wantType)
+        fail(name, "has " + std::to_string(e.components) + " components per element, expected " +
+                       std::to_string(componentsOf(wantType)));
     std::vector<double> out(e.count * std::size_t(e.components));
     for (std::size_t i = 0; i < e.count; ++i)
         for (int c = 0; c < e.components; ++c) out[i * std::size_t(e.components) + std::size_t(c)] = e.at(i, c);
@@ -207,8 +227,9 @@ std::vector<double> GltfAccessorReader::readAll(int accessor, int wantType, cons
     if (!isIndexType(indexType)) fail(name, "sparse indices of type " + typeName(indexType));
     if (acc.sparse.indices.byteOffset < 0 || acc.sparse.values.byteOffset < 0) fail(name, "negative sparse byteOffset");
     std::string error;
-    const unsigned char* idx = checkedRange(gltf_, acc.sparse.indices.bufferView, std::size_t(acc.sparse.indices.byteOffset),
-                                            sparseCount, componentBytes(indexType), componentBytes(indexType), error);
+    const unsigned char* idx =
+        checkedRange(gltf_, acc.sparse.indices.bufferView, std::size_t(acc.sparse.indices.byteOffset), sparseCount,
+                     componentBytes(indexType), componentBytes(indexType), error);
     if (!idx) fail(name + " sparse indices", error);
     const std::size_t elementBytes = componentBytes(e.componentType) * std::size_t(e.components);
     Elements values = e;
@@ -219,7 +240,8 @@ std::vector<double> GltfAccessorReader::readAll(int accessor, int wantType, cons
     if (!values.data) fail(name + " sparse values", error);
     for (std::size_t j = 0; j < sparseCount; ++j) {
         const double target = decode(idx + j * componentBytes(indexType), indexType, false);
-        if (target >= double(e.count)) fail(name, "sparse index " + std::to_string(std::uint64_t(target)) + " is out of range");
+        if (target >= double(e.count))
+            fail(name, "sparse index " + std::to_string(std::uint64_t(target)) + " is out of range");
         for (int c = 0; c < e.components; ++c)
             out[std::size_t(target) * std::size_t(e.components) + std::size_t(c)] = values.at(j, c);
     }
@@ -244,7 +266,8 @@ std::vector<Point3f> GltfAccessorReader::points(int accessor, const std::string&
     return out;
 }
 
-std::vector<std::uint32_t> GltfAccessorReader::indices(int accessor, std::size_t vertexCount, const std::string& what) const {
+std::vector<std::uint32_t> GltfAccessorReader::indices(int accessor, std::size_t vertexCount,
+                                                       const std::string& what) const {
     const std::string name = what + " (accessor " + std::to_string(accessor) + ")";
     count(accessor, what);
     const tinygltf::Accessor& acc = gltf_.accessors[std::size_t(accessor)];

@@ -125,7 +125,8 @@ Transform nodeTransform(const tinygltf::Node& node, const std::string& file, con
     const std::vector<double> s = node.scale.empty() ? std::vector<double>{1, 1, 1} : node.scale;
     double x = 0, y = 0, z = 0, w = 1;
     if (!node.rotation.empty()) {
-        const double n = std::sqrt(std::inner_product(node.rotation.begin(), node.rotation.end(), node.rotation.begin(), 0.0));
+        const double n =
+            std::sqrt(std::inner_product(node.rotation.begin(), node.rotation.end(), node.rotation.begin(), 0.0));
         if (!(n > 0)) throw InputError(file + ": " + what + ": rotation is a zero quaternion");
         x = node.rotation[0] / n, y = node.rotation[1] / n, z = node.rotation[2] / n, w = node.rotation[3] / n;
     }
@@ -147,7 +148,8 @@ struct Placed {
 
 class GltfSceneBuilder {
 public:
-    GltfSceneBuilder(const tinygltf::Model& gltf, const std::string& file, const ImportOptions& options, ImportResult& out)
+    GltfSceneBuilder(const tinygltf::Model& gltf, const std::string& file, const ImportOptions& options,
+                     ImportResult& out)
         : gltf_(gltf), file_(file), options_(options), out_(out), reader_(gltf, file) {}
 
     void build(const Transform& root) {
@@ -193,18 +195,22 @@ private:
         try {
             return parent * nodeTransform(gltf_.nodes[std::size_t(index)], file_, what);
         } catch (const std::invalid_argument&) {
-            out_.report.notes.push_back(what + " has a singular transform (zero scale): it and its children are left out");
+            out_.report.notes.push_back(what +
+                                        " has a singular transform (zero scale): it and its children are left out");
             return std::nullopt;
         }
     }
 
     void placeNode(int index, const Transform& world) {
         const tinygltf::Node& node = gltf_.nodes[std::size_t(index)];
-        if (node.mesh >= 0) placeMesh(node.mesh, world);
-        else if (node.mesh < -1) fail("node " + std::to_string(index) + " names mesh " + std::to_string(node.mesh));
+        if (node.mesh >= 0)
+            placeMesh(node.mesh, world);
+        else if (node.mesh < -1)
+            fail("node " + std::to_string(index) + " names mesh " + std::to_string(node.mesh));
         if (node.camera >= 0) {
             if (std::size_t(node.camera) >= gltf_.cameras.size())
-                fail("node " + std::to_string(index) + " names camera " + std::to_string(node.camera) + ", which does not exist");
+                fail("node " + std::to_string(index) + " names camera " + std::to_string(node.camera) +
+                     ", which does not exist");
             cameras_.push_back({node.camera, world});
         }
         const auto light = node.extensions.find("KHR_lights_punctual");
@@ -219,7 +225,8 @@ private:
 
     void placeMesh(int mesh, const Transform& world) {
         if (std::size_t(mesh) >= gltf_.meshes.size())
-            fail("mesh " + std::to_string(mesh) + " does not exist (the file has " + std::to_string(gltf_.meshes.size()) + ")");
+            fail("mesh " + std::to_string(mesh) + " does not exist (the file has " +
+                 std::to_string(gltf_.meshes.size()) + ")");
         meshesPlaced_.insert(mesh);
         const std::vector<tinygltf::Primitive>& primitives = gltf_.meshes[std::size_t(mesh)].primitives;
         for (std::size_t p = 0; p < primitives.size(); ++p) {
@@ -276,14 +283,22 @@ private:
 
     std::optional<Topology> topologyOf(int mode, const std::string& what) {
         switch (mode) {
-            case TINYGLTF_MODE_TRIANGLES: return Topology::Triangles;
-            case TINYGLTF_MODE_TRIANGLE_STRIP: return Topology::Strip;
-            case TINYGLTF_MODE_TRIANGLE_FAN: return Topology::Fan;
-            case TINYGLTF_MODE_POINTS: ++out_.report.droppedPoints; return std::nullopt;
+            case TINYGLTF_MODE_TRIANGLES:
+                return Topology::Triangles;
+            case TINYGLTF_MODE_TRIANGLE_STRIP:
+                return Topology::Strip;
+            case TINYGLTF_MODE_TRIANGLE_FAN:
+                return Topology::Fan;
+            case TINYGLTF_MODE_POINTS:
+                ++out_.report.droppedPoints;
+                return std::nullopt;
             case TINYGLTF_MODE_LINE:
             case TINYGLTF_MODE_LINE_LOOP:
-            case TINYGLTF_MODE_LINE_STRIP: ++out_.report.droppedLines; return std::nullopt;
-            default: fail(what + " has the unknown mode " + std::to_string(mode));
+            case TINYGLTF_MODE_LINE_STRIP:
+                ++out_.report.droppedLines;
+                return std::nullopt;
+            default:
+                fail(what + " has the unknown mode " + std::to_string(mode));
         }
     }
 
@@ -345,7 +360,8 @@ private:
         const Placed* chosen = nullptr;
         for (const Placed& c : cameras_) {
             const tinygltf::Camera& cam = gltf_.cameras[std::size_t(c.index)];
-            const bool named = options_.camera == std::to_string(c.index) || (!cam.name.empty() && options_.camera == cam.name);
+            const bool named =
+                options_.camera == std::to_string(c.index) || (!cam.name.empty() && options_.camera == cam.name);
             if (options_.camera.empty() ? cam.type == "perspective" : named) {
                 chosen = &c;
                 break;
@@ -407,8 +423,9 @@ private:
 
     void noteTextures() {
         if (texturedMaterials_)
-            out_.report.notes.push_back(std::to_string(texturedMaterials_) +
-                                        " material(s) have a base colour texture, which is ignored (the factor is kept)");
+            out_.report.notes.push_back(
+                std::to_string(texturedMaterials_) +
+                " material(s) have a base colour texture, which is ignored (the factor is kept)");
     }
 
     const tinygltf::Model& gltf_;

@@ -20,8 +20,8 @@ void checkOptions(const ImportOptions& options) {
 
 void noteDrops(ImportReport& r) {
     if (r.droppedPoints || r.droppedLines)
-        r.notes.push_back("skipped " + std::to_string(r.droppedPoints) + " point and " + std::to_string(r.droppedLines) +
-                          " line primitive(s): rt renders triangles");
+        r.notes.push_back("skipped " + std::to_string(r.droppedPoints) + " point and " +
+                          std::to_string(r.droppedLines) + " line primitive(s): rt renders triangles");
     if (r.droppedDegenerate)
         r.notes.push_back("dropped " + std::to_string(r.droppedDegenerate) + " degenerate (zero-area) triangle(s)");
 }
@@ -51,8 +51,8 @@ ImportResult importScene(const std::string& path, const ImportOptions& options) 
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
     const Transform root = rootTransform(options);
-    ImportResult result = isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, root)
-                                                                : importAssimp(path, options, root);
+    ImportResult result =
+        isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, root) : importAssimp(path, options, root);
     if (result.scene.instances.empty()) throw InputError(path + ": nothing to convert: the scene places no triangles");
     noteDrops(result.report);
     addMissingCameraAndLight(result, options.aspect);

@@ -19,28 +19,28 @@ namespace rt {
 enum class UpAxis { Y, Z };
 
 struct ImportOptions {
-    std::optional<int> scene;    // glTF scene index; default: the file's default scene, else 0
-    std::string camera;          // camera name or index; empty: the first camera in the file
-    double scale = 1;            // uniform factor applied at the root (units)
-    UpAxis upAxis = UpAxis::Y;   // the file's up axis; Z-up files are turned so that +Z becomes +Y
-    double aspect = 4.0 / 3.0;   // width/height used to turn a vertical fov into rt's horizontal
-                                 // one when the file gives no aspect ratio
+    std::optional<int> scene;   // glTF scene index; default: the file's default scene, else 0
+    std::string camera;         // camera name or index; empty: the first perspective camera placed
+    double scale = 1;           // uniform factor applied at the root (units)
+    UpAxis upAxis = UpAxis::Y;  // the file's up axis; Z-up files are turned so that +Z becomes +Y
+    double aspect = 4.0 / 3.0;  // width/height used to turn a vertical fov into rt's horizontal
+                                // one when the file gives no aspect ratio
 };
 
 // What an import kept, dropped and approximated; the tools print it as the summary.
 struct ImportReport {
-    std::string format;                  // "glTF 2.0 binary", "Wavefront Object Importer", ...
-    std::size_t meshes = 0;              // distinct meshes placed in the scene
+    std::string format;      // "glTF 2.0 binary", "Wavefront Object Importer", ...
+    std::size_t meshes = 0;  // distinct meshes placed in the scene
     std::size_t camerasInFile = 0;
     std::size_t lightsInFile = 0;
-    std::string cameraUsed;              // name (or "#index") of the camera taken; empty if generated
-    bool cameraGenerated = false;        // no usable camera: one framing the scene was made
-    bool lightGenerated = false;         // no light: a default light was made
-    std::size_t droppedPoints = 0;       // point primitives skipped
-    std::size_t droppedLines = 0;        // line primitives skipped
-    std::size_t droppedDegenerate = 0;   // zero-area triangles dropped from the models
+    std::string cameraUsed;                    // name (or "#index") of the camera taken; empty if generated
+    bool cameraGenerated = false;              // no usable camera: one framing the scene was made
+    bool lightGenerated = false;               // no light: a default light was made
+    std::size_t droppedPoints = 0;             // point primitives skipped
+    std::size_t droppedLines = 0;              // line primitives skipped
+    std::size_t droppedDegenerate = 0;         // zero-area triangles dropped from the models
     std::size_t droppedDegenerateInScene = 0;  // the same counted once per instance
-    std::vector<std::string> notes;      // each drop or approximation in words
+    std::vector<std::string> notes;            // each drop or approximation in words
 };
 
 struct ImportResult {

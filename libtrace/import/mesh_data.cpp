@@ -9,10 +9,10 @@ bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Poin
     // or coincident float points, the triangles a ray tracer can never hit.
     const double e1[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
     const double e2[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                         e1[0] * e2[1] - e1[1] * e2[0]};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
     if (n[0] == 0 && n[1] == 0 && n[2] == 0) return false;
-    for (const Point3f* p : {&a, &b, &c}) model.triangleVertices.insert(model.triangleVertices.end(), p->begin(), p->end());
+    for (const Point3f* p : {&a, &b, &c})
+        model.triangleVertices.insert(model.triangleVertices.end(), p->begin(), p->end());
     return true;
 }
 

@@ -22,9 +22,9 @@ struct MetallicRoughness {
     Color baseColor{1, 1, 1};
     float metallic = 1;
     float roughness = 1;
-    float ior = 1.5f;               // KHR_materials_ior
-    float specularFactor = 1;       // KHR_materials_specular
-    Color specularColor{1, 1, 1};   // KHR_materials_specular
+    float ior = 1.5f;              // KHR_materials_ior
+    float specularFactor = 1;      // KHR_materials_specular
+    Color specularColor{1, 1, 1};  // KHR_materials_specular
 };
 
 // Throws nothing: inputs are clamped to their valid ranges (colours >= 0, metallic and

@@ -73,9 +73,9 @@ TEST(ImportAssimp, NanVerticesAreAnInputError) {
 
 // Garbage whose keywords look like OBJ text, under a name without extension.
 TEST(ImportAssimp, ContentGuessesAreOnlyTrustedForBinaryFormats) {
-    EXPECT_THROW(importScene(sharedModels() +
-                             "/bad/assimp-fuzz/clusterfuzz-testcase-minimized-assimp_fuzzer-4751812606885888"),
-                 InputError);
+    EXPECT_THROW(
+        importScene(sharedModels() + "/bad/assimp-fuzz/clusterfuzz-testcase-minimized-assimp_fuzzer-4751812606885888"),
+        InputError);
     const ImportResult r = importScene(sharedModels() + "/3ds/testFormatDetection/testFormatDetection");
     EXPECT_EQ(r.report.format, "Discreet 3DS Importer");
 }

@@ -9,8 +9,8 @@ namespace {
 TEST(ImportMeshData, TrianglesWithoutAreaAreDropped) {
     Model m;
     EXPECT_TRUE(appendTriangle(m, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-    EXPECT_FALSE(appendTriangle(m, {0, 0, 0}, {1, 1, 1}, {2, 2, 2}));   // collinear
-    EXPECT_FALSE(appendTriangle(m, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}));   // repeated vertex
+    EXPECT_FALSE(appendTriangle(m, {0, 0, 0}, {1, 1, 1}, {2, 2, 2}));         // collinear
+    EXPECT_FALSE(appendTriangle(m, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}));         // repeated vertex
     EXPECT_TRUE(appendTriangle(m, {0, 0, 0}, {1e-3f, 0, 0}, {0, 1e-3f, 0}));  // small is fine
     EXPECT_EQ(m.triangleCount(), 2u);
     EXPECT_EQ(m.triangleVertices[3], 1.0f);

@@ -55,7 +55,8 @@ TEST_P(ImportRoundTrip, WrittenAndReadBackIsTheSameScene) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, ImportRoundTrip,
-                         ::testing::Values("gltf/SharedMesh/02_shared_mesh.gltf", "glb/2CylinderEngine/2CylinderEngine.glb",
+                         ::testing::Values("gltf/SharedMesh/02_shared_mesh.gltf",
+                                           "glb/2CylinderEngine/2CylinderEngine.glb",
                                            "gltf/PointLightCamera-issue261/issue-261.gltf",
                                            "obj/CornellBox-Original/CornellBox-Original.obj", "3ds/jeep1/jeep1.3ds"));
 

@@ -38,7 +38,8 @@ void writeScene(const rt::Scene& scene, const std::string& output) {
 }
 
 int convert(Options& o) {
-    if (o.json && o.output == "-") throw rt::InputError("--json prints on standard output, where -o - writes the scene");
+    if (o.json && o.output == "-")
+        throw rt::InputError("--json prints on standard output, where -o - writes the scene");
     o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
     const rt::ImportResult result = rt::importScene(o.input, o.import);
     if (!o.output.empty()) writeScene(result.scene, o.output);
@@ -51,8 +52,9 @@ int convert(Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Converts a 3-D model (glTF, OBJ, 3DS and what else Assimp reads) to the rt XML+RAW scene format.\n"
-                 "Without -o nothing is written: the file is checked and summarised."};
+    CLI::App app{
+        "Converts a 3-D model (glTF, OBJ, 3DS and what else Assimp reads) to the rt XML+RAW scene format.\n"
+        "Without -o nothing is written: the file is checked and summarised."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-convert"));
     Options o;
     app.add_option("input", o.input, "Model file: .gltf, .glb, .obj, .3ds, .ply, .stl, .fbx, .dae, ...")->required();
@@ -64,7 +66,8 @@ int main(int argc, char** argv) {
     app.add_option("--camera", o.import.camera, "Camera to use, by name or index (default: the first)");
     app.add_option("--scale", o.import.scale, "Uniform scale applied at the root, e.g. 0.01 for centimetres")
         ->check(CLI::PositiveNumber);
-    app.add_option("--up-axis", o.upAxis, "The file's up axis; z turns a Z-up model so that it stands in rt's Y-up world")
+    app.add_option("--up-axis", o.upAxis,
+                   "The file's up axis; z turns a Z-up model so that it stands in rt's Y-up world")
         ->check(CLI::IsMember({"y", "z"}));
     app.add_option("--aspect", o.import.aspect,
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")

@@ -57,15 +57,18 @@ void printSummaryJson(std::ostream& out, const Summary& s) {
     const Scene& scene = s.result->scene;
     const ImportReport& r = s.result->report;
     const Counts c = countTriangles(scene);
-    out << "{\"input\": " << jsonString(s.input) << ", \"output\": " << (s.output.empty() ? "null" : jsonString(s.output))
-        << ", \"format\": " << jsonString(r.format) << ", \"meshes\": " << r.meshes << ", \"models\": " << scene.models.size()
-        << ", \"modelTriangles\": " << c.modelTriangles << ", \"sceneTriangles\": " << c.sceneTriangles
-        << ", \"instances\": " << scene.instances.size() << ", \"materials\": " << scene.materials.size()
-        << ", \"cameras\": {\"inFile\": " << r.camerasInFile << ", \"used\": "
-        << (r.cameraGenerated ? "null" : jsonString(r.cameraUsed)) << ", \"generated\": " << std::boolalpha
-        << r.cameraGenerated << "}, \"lights\": {\"inFile\": " << r.lightsInFile << ", \"written\": " << scene.lights.size()
+    out << "{\"input\": " << jsonString(s.input)
+        << ", \"output\": " << (s.output.empty() ? "null" : jsonString(s.output))
+        << ", \"format\": " << jsonString(r.format) << ", \"meshes\": " << r.meshes
+        << ", \"models\": " << scene.models.size() << ", \"modelTriangles\": " << c.modelTriangles
+        << ", \"sceneTriangles\": " << c.sceneTriangles << ", \"instances\": " << scene.instances.size()
+        << ", \"materials\": " << scene.materials.size() << ", \"cameras\": {\"inFile\": " << r.camerasInFile
+        << ", \"used\": " << (r.cameraGenerated ? "null" : jsonString(r.cameraUsed))
+        << ", \"generated\": " << std::boolalpha << r.cameraGenerated
+        << "}, \"lights\": {\"inFile\": " << r.lightsInFile << ", \"written\": " << scene.lights.size()
         << ", \"generated\": " << r.lightGenerated << "}, \"dropped\": {\"points\": " << r.droppedPoints
-        << ", \"lines\": " << r.droppedLines << ", \"degenerate\": " << r.droppedDegenerate << ", \"degenerateInScene\": " << r.droppedDegenerateInScene << "}, \"notes\": [";
+        << ", \"lines\": " << r.droppedLines << ", \"degenerate\": " << r.droppedDegenerate
+        << ", \"degenerateInScene\": " << r.droppedDegenerateInScene << "}, \"notes\": [";
     for (std::size_t i = 0; i < r.notes.size(); ++i) out << (i ? ", " : "") << jsonString(r.notes[i]);
     out << "]}\n";
 }
