@@ -103,6 +103,12 @@ double finiteNumber(double v, const std::string& file, const std::string& what) 
     return v;
 }
 
+// A number from an extension object, which tinygltf leaves as untyped JSON values.
+double numberValue(const tinygltf::Value& v, const std::string& file, const std::string& what) {
+    if (!v.IsNumber()) throw InputError(file + ": " + what + " is not a number");
+    return finiteNumber(v.GetNumberAsDouble(), file, what);
+}
+
 // A node's local transform: its matrix (column-major), or T * R * S (glTF 3.5.2).
 // Throws InputError for malformed values, std::invalid_argument for a singular matrix.
 Transform nodeTransform(const tinygltf::Node& node, const std::string& file, const std::string& what) {
@@ -215,7 +221,7 @@ private:
         }
         const auto light = node.extensions.find("KHR_lights_punctual");
         if (light != node.extensions.end() && light->second.Has("light")) {
-            const double l = light->second.Get("light").GetNumberAsDouble();
+            const double l = numberValue(light->second.Get("light"), file_, "node " + std::to_string(index) + " light");
             if (!(l >= 0 && l < double(gltf_.lights.size())))
                 fail("node " + std::to_string(index) + " names KHR_lights_punctual light " + std::to_string(l) +
                      ", which does not exist");
@@ -324,23 +330,22 @@ private:
     MetallicRoughness metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
         const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
         MetallicRoughness in;
-        if (pbr.baseColorFactor.size() < 3) fail(what + ": baseColorFactor needs 4 numbers");
         in.baseColor = color(pbr.baseColorFactor, what + " baseColorFactor");
         in.metallic = float(finiteNumber(pbr.metallicFactor, file_, what + " metallicFactor"));
         in.roughness = float(finiteNumber(pbr.roughnessFactor, file_, what + " roughnessFactor"));
         const auto ior = gm.extensions.find("KHR_materials_ior");
         if (ior != gm.extensions.end() && ior->second.Has("ior"))
-            in.ior = float(finiteNumber(ior->second.Get("ior").GetNumberAsDouble(), file_, what + " ior"));
+            in.ior = float(numberValue(ior->second.Get("ior"), file_, what + " ior"));
         const auto specular = gm.extensions.find("KHR_materials_specular");
         if (specular != gm.extensions.end()) {
             const tinygltf::Value& ext = specular->second;
             if (ext.Has("specularFactor"))
                 in.specularFactor =
-                    float(finiteNumber(ext.Get("specularFactor").GetNumberAsDouble(), file_, what + " specularFactor"));
+                    float(numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"));
             if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray()) {
                 const tinygltf::Value& c = ext.Get("specularColorFactor");
                 std::vector<double> v;
-                for (int i = 0; i < int(c.ArrayLen()); ++i) v.push_back(c.Get(i).GetNumberAsDouble());
+                for (int i = 0; i < int(c.ArrayLen()); ++i) v.push_back(numberValue(c.Get(i), file_, what));
                 in.specularColor = color(v, what + " specularColorFactor");
             }
         }

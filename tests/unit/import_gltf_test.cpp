@@ -165,6 +165,23 @@ TEST(ImportGltf, StripsAndFansAreUnrolled) {
     EXPECT_EQ(test::modelTriangles(importScene(dir.write("fan.gltf", f.json())).scene), 3u);
 }
 
+// KHR_materials_ior and KHR_materials_specular reach the Phong mapping; a non-number is an error.
+TEST(ImportGltf, MaterialExtensionsAreRead) {
+    TempDir dir;
+    GltfFixture f;
+    f.extra = R"(, "materials": [{"name": "glass", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1, 1],)"
+              R"( "metallicFactor": 0}, "extensions": {"KHR_materials_ior": {"ior": 2},)"
+              R"( "KHR_materials_specular": {"specularFactor": 0.5}}}])";
+    const std::string json = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
+    const ImportResult r = importScene(dir.write("m.gltf", json));
+    ASSERT_EQ(r.scene.materials.size(), 1u);
+    const Material& m = r.scene.materials[0];
+    EXPECT_EQ(m.name, "glass");
+    EXPECT_EQ(m.color, Color(0.5f, 0.25f, 1));
+    EXPECT_NEAR(m.specular, 0.5f / 9, 1e-6);  // ((2 - 1) / (2 + 1))^2 * 0.5
+    EXPECT_THROW(importScene(dir.write("bad.gltf", replaceOnce(json, R"("ior": 2)", R"("ior": "two")"))), InputError);
+}
+
 TEST(ImportGltf, ChoosesTheSceneAndRejectsAMissingOne) {
     TempDir dir;
     const std::string path = dir.write("s.gltf", GltfFixture().json());
