@@ -39,8 +39,10 @@ public:
             // Bounds wholly on one side decide at once; only a primitive whose bounds
             // straddle the plane needs the exact tests.
             const Aabb b = prims_.bounds(id);
-            const bool below = b.lo[axis] <= split && (b.hi[axis] <= split || overlapsVoxel(prims_, id, parts.below.voxel));
-            const bool above = b.hi[axis] >= split && (b.lo[axis] >= split || overlapsVoxel(prims_, id, parts.above.voxel));
+            const bool below =
+                b.lo[axis] <= split && (b.hi[axis] <= split || overlapsVoxel(prims_, id, parts.below.voxel));
+            const bool above =
+                b.hi[axis] >= split && (b.lo[axis] >= split || overlapsVoxel(prims_, id, parts.above.voxel));
             // A primitive of this voxel touches one of its halves; if rounding says
             // neither, keep it in both rather than lose it.
             if (below || !above) parts.below.primitives.push_back(id);

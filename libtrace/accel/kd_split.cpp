@@ -1,6 +1,7 @@
 #include "accel/kd_split.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace rt {
 
@@ -10,6 +11,39 @@ void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vect
     } else {
         events.emplace_back(box.lo[axis], primitive, SplitEvent::Start);
         events.emplace_back(box.hi[axis], primitive, SplitEvent::End);
+    }
+}
+
+namespace {
+
+// A float's bits as an unsigned key in the float's order (negative values flipped
+// whole, positive ones get the sign bit set); -0 is made +0, which compares equal.
+std::uint32_t orderedKey(float pos) {
+    const auto bits = std::bit_cast<std::uint32_t>(pos == 0 ? 0.0f : pos);
+    return bits & 0x80000000u ? ~bits : bits | 0x80000000u;
+}
+
+// One stable counting-sort pass of `events` by `digit` (values below `buckets`).
+template <typename Digit>
+void countingPass(std::vector<SplitEvent>& events, std::vector<SplitEvent>& buffer, std::size_t buckets,
+                  const Digit& digit) {
+    std::vector<std::size_t> start(buckets + 1, 0);
+    for (const SplitEvent& e : events) ++start[digit(e) + 1];
+    for (std::size_t b = 1; b <= buckets; ++b) start[b] += start[b - 1];
+    for (const SplitEvent& e : events) buffer[start[digit(e)]++] = e;
+    events.swap(buffer);
+}
+
+}  // namespace
+
+// The type first, then the position in three passes of 11 bits: each pass is stable, so
+// the last (the position's top bits) decides first and the type last, as operator< does.
+void radixSortEvents(std::vector<SplitEvent>& events) {
+    std::vector<SplitEvent> buffer(events.size(), SplitEvent(0, 0, SplitEvent::End));
+    countingPass(events, buffer, 3, [](const SplitEvent& e) { return std::size_t(e.type()); });
+    for (int shift = 0; shift < 32; shift += 11) {
+        countingPass(events, buffer, 2048,
+                     [shift](const SplitEvent& e) { return std::size_t(orderedKey(e.pos) >> shift) & 2047u; });
     }
 }
 
@@ -31,7 +65,7 @@ SahModel::SahModel(const Aabb& voxel, const KdSettings& settings)
 
 // At each position: primitives ending there leave the upper side before the plane is
 // evaluated, those starting there join the lower side after it, and those lying in it
-// count on both sides (FloatBox::below/above).
+// are offered to either side (SahModel::consider).
 void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives,
                        const SahModel& sah, SahSplit& best) {
     std::size_t below = 0, above = primitives;
@@ -42,7 +76,7 @@ void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::siz
         for (; i < n && events[i].pos == pos; ++i) ++count[events[i].type()];
         const std::size_t ends = count[SplitEvent::End], planars = count[SplitEvent::Planar];
         above -= ends + planars;
-        sah.consider(axis, pos, below + planars, above + planars, best);
+        sah.consider(axis, pos, below, above, planars, best);
         below += count[SplitEvent::Start] + planars;
     }
 }
@@ -85,7 +119,7 @@ SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& vox
         for (std::size_t k = 0; k < m; ++k) {
             started += starts[k];
             ended += ends[k];
-            sah.consider(axis, planes[k], started + planars[k], n - ended + planars[k], best);
+            sah.consider(axis, planes[k], started, n - ended, planars[k], best);
         }
     }
     return best;

@@ -19,11 +19,17 @@ struct FloatBox {
     float lo[3], hi[3];
 
     bool planar(int axis) const { return lo[axis] == hi[axis]; }
-    // Which children of the plane `pos` on `axis` the primitive goes to. One lying in
-    // the plane goes to both, so that rays starting on it or running along the plane
-    // find it on either side.
-    bool below(int axis, float pos) const { return lo[axis] < pos || (planar(axis) && lo[axis] == pos); }
-    bool above(int axis, float pos) const { return hi[axis] > pos || (planar(axis) && lo[axis] == pos); }
+    // Which children of the plane `pos` on `axis` the primitive goes to. One lying in the
+    // plane goes to one side only, the side the split chose (Wald and Havran 2006): a ray
+    // crossing the plane meets it at the plane's distance from either side, and a ray in
+    // the plane or starting on it cannot hit it (Moller-Trumbore gives det = 0 or t = 0).
+    bool inPlane(int axis, float pos) const { return lo[axis] == pos && hi[axis] == pos; }
+    bool below(int axis, float pos, bool planarBelow) const {
+        return lo[axis] < pos || (planarBelow && inPlane(axis, pos));
+    }
+    bool above(int axis, float pos, bool planarBelow) const {
+        return hi[axis] > pos || (!planarBelow && inPlane(axis, pos));
+    }
 };
 
 // Where a primitive's clipped bounds start or end along one axis (Wald and Havran 2006,
@@ -40,6 +46,10 @@ struct SplitEvent {
     bool operator<(const SplitEvent& o) const { return pos < o.pos || (pos == o.pos && type() < o.type()); }
 };
 
+// Sorts events into operator<'s order in linear time (LSD radix sort), for the root's
+// millions of events; std::sort serves the small lists below it.
+void radixSortEvents(std::vector<SplitEvent>& events);
+
 // Appends the events of one primitive's bounds on `axis`.
 void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vector<SplitEvent>& events);
 
@@ -47,6 +57,7 @@ struct SahSplit {
     int axis = -1;
     float pos = 0;
     double cost = std::numeric_limits<double>::infinity();
+    bool planarBelow = true;  // primitives lying in the plane go below (else above)
 };
 
 // Cost of splitting a voxel, K = C_T + C_I (S_A/S_V N_A + S_B/S_V N_B) (thesis 2.5.1),
@@ -57,19 +68,28 @@ public:
 
     double leafCost(std::size_t primitives) const { return intersectionCost_ * double(primitives); }
     bool degenerate() const { return !(area_ > 0); }
-    // Keeps the cheaper of `best` and the plane `pos`; planes on the voxel's faces cut
-    // nothing off and are ignored. A child of extent e along the axis has area
-    // 2 (face + e rim). Inline: the sweep calls it for every distinct event position.
-    void consider(int axis, float pos, std::size_t below, std::size_t above, SahSplit& best) const {
+    // Keeps the cheaper of `best` and the plane `pos`, given the primitives wholly below
+    // and above it and those lying in it, which go to the cheaper side. Planes on the
+    // voxel's faces cut nothing off and are ignored. A child of extent e along the axis
+    // has area 2 (face + e rim). Inline: the sweep calls it for every event position.
+    void consider(int axis, float pos, std::size_t below, std::size_t above, std::size_t inPlane,
+                  SahSplit& best) const {
         if (!(pos > lo_[axis] && pos < hi_[axis])) return;
         const double belowArea = face_[axis] + (pos - lo_[axis]) * rim_[axis];
         const double aboveArea = face_[axis] + (hi_[axis] - pos) * rim_[axis];
-        double cost = traversalCost_ + areaScale_ * (belowArea * double(below) + aboveArea * double(above));
-        if (below == 0 || above == 0) cost *= emptyBonus_;
-        if (cost < best.cost) best = {axis, pos, cost};
+        offer({axis, pos, cost(belowArea, aboveArea, below + inPlane, above), true}, best);
+        if (inPlane > 0) offer({axis, pos, cost(belowArea, aboveArea, below, above + inPlane), false}, best);
     }
 
 private:
+    double cost(double belowArea, double aboveArea, std::size_t below, std::size_t above) const {
+        const double k = traversalCost_ + areaScale_ * (belowArea * double(below) + aboveArea * double(above));
+        return below == 0 || above == 0 ? k * emptyBonus_ : k;
+    }
+    static void offer(const SahSplit& candidate, SahSplit& best) {
+        if (candidate.cost < best.cost) best = candidate;
+    }
+
     double lo_[3], hi_[3];
     double face_[3], rim_[3];  // per split axis: area of the face across it, and its perimeter / 2
     double area_;

@@ -22,8 +22,8 @@ enum class KdSplitMethod {
 };
 
 struct KdSettings {
-    double traversalCost = 1.0;     // C_T of the SAH (thesis 2.5.1)
-    double intersectionCost = 1.5;  // C_I of the SAH
+    double traversalCost = 2.0;     // C_T of the SAH (thesis 2.5.1); measured, see docs/trees.md
+    double intersectionCost = 1.5;  // C_I of the SAH, for a triangle; a sphere test counts 0.4 of it
     double emptyBonus = 0.8;        // cost factor for splits that cut off empty space (1 = none)
     std::optional<int> maxDepth;    // default 8 + 1.3 log2(N)
     KdSplitMethod splitMethod = KdSplitMethod::Sweep;

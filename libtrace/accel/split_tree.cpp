@@ -42,6 +42,10 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     const Vec3 invDir = reciprocal(ray.direction);
     if (!clipRay(bounds_, ray, invDir, tMin, tMax)) return;
 
+    // Indexed by the split axis in the loop: arrays, not Vec3's branching operator[].
+    const Real origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const Real direction[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+    const Real inverse[3] = {invDir.x, invDir.y, invDir.z};
     struct Pending {
         std::uint32_t node;
         Real tMin, tMax;
@@ -49,42 +53,43 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     Pending stack[kMaxTreeDepth];
     int size = 0;
     std::uint32_t index = 0;
+    std::uint64_t steps = 0;  // in a register; added to the caller's counters once
     for (;;) {
-        if (tLimit < tMin) return;
-        ++counters.traversalSteps;
+        if (tLimit < tMin) break;
+        ++steps;
         const SplitNode node = nodes_[index];
         if (!node.isLeaf()) {
             const int axis = node.axis();
             const Real split = node.split();
-            const Real origin = ray.origin[axis];
-            const Real tPlane = (split - origin) * invDir[axis];
+            const Real tPlane = (split - origin[axis]) * inverse[axis];
             // The child holding the origin comes first; an origin on the plane belongs to
             // the side the ray moves into.
-            const bool belowFirst = origin < split || (origin == split && ray.direction[axis] <= 0);
+            const bool belowFirst = origin[axis] < split || (origin[axis] == split && direction[axis] <= 0);
             const std::uint32_t first = belowFirst ? index + 1 : node.aboveChild();
             const std::uint32_t second = belowFirst ? node.aboveChild() : index + 1;
-            if (std::isnan(tPlane)) {
-                // The ray lies in the plane (0 * inf): primitives on either side may touch it.
-                stack[size++] = {second, tMin, tMax};
-                index = first;
-            } else if (tPlane > tMax || tPlane <= 0) {
+            if (tPlane > tMax || tPlane <= 0) {
                 index = first;
             } else if (tPlane < tMin) {
                 index = second;
-            } else {
+            } else if (!std::isnan(tPlane)) {
                 stack[size++] = {second, tPlane, tMax};
                 index = first;
                 tMax = tPlane;
+            } else {
+                // The ray lies in the plane (0 * inf fails every test above): primitives on
+                // either side may touch it, so both children get the whole interval.
+                stack[size++] = {second, tMin, tMax};
+                index = first;
             }
             continue;
         }
-        if (visitLeaf(&primitiveIndices_[node.primitiveOffset()], node.primitiveCount())) return;
-        if (size == 0) return;
+        if (visitLeaf(&primitiveIndices_[node.primitiveOffset()], node.primitiveCount()) || size == 0) break;
         --size;
         index = stack[size].node;
         tMin = stack[size].tMin;
         tMax = stack[size].tMax;
     }
+    counters.traversalSteps += steps;
 }
 
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {

@@ -20,7 +20,10 @@ public:
     }
     double uniform() { return double(next() >> 11) * 0x1.0p-53; }                 // [0, 1)
     double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-    Vec3 inCube(double half) { return {Real(uniform(-half, half)), Real(uniform(-half, half)), Real(uniform(-half, half))}; }
+    Vec3 inCube(double half) {
+        const Real x = Real(uniform(-half, half)), y = Real(uniform(-half, half)), z = Real(uniform(-half, half));
+        return {x, y, z};
+    }
     double gaussian() {  // Box-Muller
         const double u = 1 - uniform(), v = uniform();
         return std::sqrt(-2 * std::log(u)) * std::cos(2 * kPi * v);

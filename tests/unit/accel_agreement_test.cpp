@@ -2,6 +2,7 @@
 // Each scene is shot with 100,000 rays of several kinds; for each ray the nearest hit
 // must be the same primitive, or at a distance equal within a relative 1e-4 (an equally
 // near hit), and the shadow query must give the same answer.
+#include <array>
 #include <cmath>
 #include <memory>
 #include <sstream>

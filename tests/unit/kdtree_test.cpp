@@ -49,17 +49,25 @@ std::vector<FloatBox> randomBoxes(int n, std::uint32_t seed) {
 }  // namespace
 
 TEST(SahModel, CostOfASplit) {
-    const KdSettings settings;  // C_T 1, C_I 1.5, empty bonus 0.8
+    KdSettings settings;
+    settings.traversalCost = 1;
+    settings.intersectionCost = 1.5;
+    settings.emptyBonus = 0.8;
     const SahModel sah(Aabb{{0, 0, 0}, {1, 1, 1}}, settings);
     SahSplit best;
-    sah.consider(0, 0.5f, 4, 6, best);  // each half has 4/6 of the area
+    sah.consider(0, 0.5f, 4, 6, 0, best);  // each half has 4/6 of the area
     EXPECT_EQ(best.axis, 0);
     EXPECT_NEAR(best.cost, 1 + 1.5 * (4.0 / 6 * 4 + 4.0 / 6 * 6), 1e-9);
-    sah.consider(1, 0.25f, 0, 10, best);  // cuts off empty space: the bonus applies
+    sah.consider(1, 0.25f, 0, 10, 0, best);  // cuts off empty space: the bonus applies
     EXPECT_EQ(best.axis, 1);
     EXPECT_NEAR(best.cost, 0.8 * (1 + 1.5 * (5.0 / 6 * 10)), 1e-9);
-    sah.consider(2, 0.0f, 0, 10, best);  // on the voxel's face: cuts off nothing, ignored
+    sah.consider(2, 0.0f, 0, 10, 0, best);  // on the voxel's face: cuts off nothing, ignored
     EXPECT_EQ(best.axis, 1);
+    // Two primitives lying in the plane y = 0.75 join the cheaper, smaller upper side.
+    SahSplit planar;
+    sah.consider(1, 0.75f, 6, 2, 2, planar);
+    EXPECT_FALSE(planar.planarBelow);
+    EXPECT_NEAR(planar.cost, 1 + 1.5 * (5.0 / 6 * 6 + 3.0 / 6 * 4), 1e-9);  // below: 5/6 of the area
     EXPECT_DOUBLE_EQ(sah.leafCost(10), 15);
 }
 
@@ -73,12 +81,14 @@ TEST(KdSplit, SweepAndSamplingMatchDirectCounting) {
         SahSplit best;
         for (int axis = 0; axis < 3; ++axis) {
             for (float p : candidates) {
-                std::size_t below = 0, above = 0;
-                for (const FloatBox& b : boxes) {
-                    below += b.below(axis, p);
-                    above += b.above(axis, p);
+                for (bool planarBelow : {true, false}) {
+                    std::size_t below = 0, above = 0;
+                    for (const FloatBox& b : boxes) {
+                        below += b.below(axis, p, planarBelow);
+                        above += b.above(axis, p, planarBelow);
+                    }
+                    sah.consider(axis, p, below, above, 0, best);
                 }
-                sah.consider(axis, p, below, above, best);
             }
         }
         return best;
@@ -98,6 +108,24 @@ TEST(KdSplit, SweepAndSamplingMatchDirectCounting) {
     EXPECT_DOUBLE_EQ(fewer.cost, direct({0.25f, 0.5f, 0.75f}).cost);
 }
 
+TEST(KdSplit, RadixSortOrdersEventsAsOperatorLess) {
+    std::mt19937 gen(9);
+    std::uniform_int_distribution<int> pick(0, 9);
+    const float positions[] = {-1e30f, -2.5f, -1.0f, -0.0f, 0.0f, 1e-40f, 0.5f, 0.5f, 3.0f, 1e30f};
+    std::vector<SplitEvent> events;
+    for (std::uint32_t i = 0; i < 5000; ++i)
+        events.emplace_back(positions[pick(gen)], i, SplitEvent::Type(pick(gen) % 3));
+    std::vector<SplitEvent> expected = events;
+    std::stable_sort(expected.begin(), expected.end());
+    radixSortEvents(events);
+    ASSERT_EQ(events.size(), expected.size());
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        // Equal positions and types may come in any order; -0 and +0 are equal positions.
+        EXPECT_EQ(events[i].pos, expected[i].pos) << i;
+        EXPECT_EQ(events[i].type(), expected[i].type()) << i;
+    }
+}
+
 TEST(KdTree, SweepAndSortBuildTheSameTree) {
     const Primitives prims = generateScene({1500, 300, Placement::Clustered, 5}).primitives;
     const auto sweep = buildKdTree(prims, withMethod(KdSplitMethod::Sweep));
@@ -110,7 +138,7 @@ TEST(KdTree, SweepAndSortBuildTheSameTree) {
 }
 
 TEST(KdTree, SameTreeForAnyNumberOfThreads) {
-    const Primitives prims = generateScene({20000, 0, Placement::Uniform, 6}).primitives;
+    const Primitives prims = generateScene({50000, 0, Placement::Uniform, 6}).primitives;  // tasks below the root
     const int threads = omp_get_max_threads();
     omp_set_num_threads(1);
     const std::string one = dump(*buildKdTree(prims, KdSettings{}));
