@@ -1,7 +1,14 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds rt, and renders a bundled scene to out/.
+# Installs what is missing, builds rt, and renders the bundled demo scene (scenes/demo.xml)
+# to out/demo.png (sRGB, for any image viewer) and out/demo.exr (linear half float).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh release
-build/release/tools/render/rt-render --version
+mkdir -p out
+render=build/release/tools/render/rt-render
+# KD tree, shadows, reflections up to depth 5, 9 jittered samples per pixel.
+options=(scenes/demo.xml -K -s -d 5 -S 9 -x 800 -y 600)
+"$render" "${options[@]}" -f out/demo.png
+"$render" "${options[@]}" -q -f out/demo.exr
+echo "demo: wrote $PWD/out/demo.png and $PWD/out/demo.exr"

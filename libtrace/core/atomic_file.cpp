@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -16,10 +17,12 @@ namespace {
 // "dir/.name.rt-tmp-PID-N.ext": hidden, unique per process, same extension as the target
 // (OpenImageIO picks the format from it).
 std::string temporaryPathFor(const std::string& path) {
-    static int counter = 0;
+    static std::atomic<int> counter{0};  // unique per call, also across threads
     const std::filesystem::path p(path);
-    const std::string name = "." + p.stem().string() + ".rt-tmp-" + std::to_string(getpid()) + "-" +
-                             std::to_string(counter++) + p.extension().string();
+    std::string name = ".";  // built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string
+    name += p.stem().string();
+    name += ".rt-tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
+    name += p.extension().string();
     return (p.parent_path() / name).string();
 }
 

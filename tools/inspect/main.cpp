@@ -1,18 +1,70 @@
-// rt-inspect: statistics, dumps and heat maps of the KD and BSP trees.
+// rt-inspect: statistics, dumps and heat maps of the KD and BSP trees (docs/rt-inspect.md).
 #include <CLI/CLI.hpp>
 
+#include "accel_options.h"
+#include "inspection.h"
 #include "tool.h"
+
+namespace {
+
+std::vector<rt::AccelKind> treesNamed(const std::string& name) {
+    // "all" means the trees; the naive list is the reference, and tracing a real scene
+    // through it takes hours, so it is inspected only by name.
+    if (name == "all") return {rt::AccelKind::Bsp, rt::AccelKind::Kd};
+    return {*rt::parseAccelKind(name)};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"Shows how the KD and BSP trees of a scene look and perform."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-inspect"));
+    rt::tool::InspectOptions o;
+    std::string tree = "kd", leaves = "all", scale = "linear";
+    std::optional<std::uint32_t> maxDepth;
+    std::optional<float> heatmapMax;
+
+    app.add_option("scene", o.scenePath, "Scene file (thesis XML), - for standard input")->required();
+    app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, or all (bsp and kd)")
+        ->check(CLI::IsMember({"naive", "bsp", "kd", "all"}))->capture_default_str();
+    app.add_flag("--json", o.json, "Print the statistics as one JSON document");
+
+    const char* rays = "Rays (as rt-render)";
+    app.add_flag("--rays", o.rays, "Trace the picture's rays and report the work per ray")->group(rays);
+    app.add_option("-x,--width", o.rayOptions.width, "Picture width in pixels (rays and heat map)")
+        ->check(CLI::Range(1, 16384))->capture_default_str()->group(rays);
+    app.add_option("-y,--height", o.rayOptions.height, "Picture height in pixels")
+        ->check(CLI::Range(1, 16384))->capture_default_str()->group(rays);
+    app.add_flag("-s,--shadows", o.rayOptions.shadows, "Also shadow rays, one per hit and light")->group(rays);
+    app.add_option("-d,--depth", o.rayOptions.reflectionDepth, "Mirror bounces after a camera ray, 0-10 (as rt-render)")
+        ->check(CLI::Range(0, 10))->capture_default_str()->group(rays);
+
+    const char* dumps = "Looking inside";
+    app.add_flag("--depth-histogram", o.depthHistogram, "Leaves and primitive references per depth")->group(dumps);
+    app.add_option("--dump-leaves", o.leavesPath, "Write the leaf boxes as a wireframe OBJ")->group(dumps);
+    app.add_option("--leaves", leaves, "Which leaf boxes: all or nonempty")
+        ->check(CLI::IsMember({"all", "nonempty"}))->capture_default_str()->group(dumps);
+    app.add_option("--dump", o.dumpFormat, "Write the tree structure: dot (Graphviz) or json")
+        ->check(CLI::IsMember({"dot", "json"}))->group(dumps);
+    app.add_option("-f,--file", o.dumpPath, "Where --dump writes, - for standard output")
+        ->capture_default_str()->group(dumps);
+    app.add_option("--max-depth", maxDepth, "Dump the tree only down to this depth")->group(dumps);
+    app.add_option("--heatmap", o.heatmapPath, "Write a PNG heat map of the camera rays' work")->group(dumps);
+    app.add_option("--heatmap-scale", scale, "Colour scale: linear or log")
+        ->check(CLI::IsMember({"linear", "log"}))->capture_default_str()->group(dumps);
+    app.add_option("--heatmap-max", heatmapMax, "Work at the top of the colour bar [default: the largest]")
+        ->check(CLI::PositiveNumber)->group(dumps);
+    rt::tool::addAccelOptions(app, o.accel);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? rt::tool::kExitOk : rt::tool::kExitBadInput;
     }
-    return rt::tool::run("rt-inspect", [] {
-        throw std::runtime_error("inspection is not implemented yet");
-        return 0;
-    });
+    o.trees = treesNamed(tree);
+    o.cut.maxDepth = maxDepth;
+    o.cut.nonEmptyOnly = leaves == "nonempty";
+    o.heatmap.scale = scale == "log" ? rt::HeatScale::Log : rt::HeatScale::Linear;
+    o.heatmap.maximum = heatmapMax;
+    return rt::tool::run("rt-inspect", [&] { return rt::tool::runInspection(o); });
 }

@@ -1,18 +1,118 @@
-// rt-render: the Whitted ray tracer of the thesis, with EXR and PNG output.
+// rt-render: the ray tracer of the thesis (appendix B), with EXR, PNG, TGA and text output.
+// This file only declares the command line; runRender (render_command.cpp) does the work.
 #include <CLI/CLI.hpp>
 
+#include "render_command.h"
 #include "tool.h"
 
+namespace {
+
+using rt::render_tool::RenderOptions;
+
+void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName) {
+    const char* group = "Rendering options";
+    app.add_option("-o,--output", o.outputType, "Output type: null png exr tga text (default: from -f, else null)")
+        ->check(CLI::IsMember({"null", "png", "exr", "tga", "text"}))->group(group);
+    app.add_option("-f,--file", o.outputPath, "Output file; - for standard output")->group(group);
+    app.add_option("-x,--width", o.render.width, "Image width in pixels")->check(CLI::Range(1, 65536))
+        ->capture_default_str()->group(group);
+    app.add_option("-y,--height", o.render.height, "Image height in pixels")->check(CLI::Range(1, 65536))
+        ->capture_default_str()->group(group);
+    app.add_option("-d,--depth", o.render.maxDepth, "Reflection depth: reflections that may follow a camera ray")
+        ->check(CLI::Range(1, 10))->capture_default_str()->group(group);
+    app.add_flag("-s,--shadows", o.render.shadows, "Shadows: a shadow ray to each light")->group(group);
+    auto* bsp = app.add_flag_callback("-B,--bsp", [&] { accelName = "bsp"; }, "Use the BSP tree")->group(group);
+    auto* kd = app.add_flag_callback("-K,--kd", [&] { accelName = "kd"; }, "Use the KD tree")->group(group);
+    bsp->excludes(kd);
+    app.add_option("--accel", accelName, "Ray-scene intersection: naive, bsp or kd")
+        ->check(CLI::IsMember({"naive", "bsp", "kd"}))->excludes(bsp)->excludes(kd)->capture_default_str()
+        ->group(group);
+    app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
+        ->group(group);
+    app.add_option("--threads", o.render.threads, "Threads (default: all cores)")->check(CLI::NonNegativeNumber)
+        ->group(group);
+}
+
+void addQualityOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Image quality options";
+    app.add_option("-S,--supersample", o.render.pixelSamples, "Stochastic supersampling: rays per pixel on a jittered grid")
+        ->check(CLI::Range(1, 1 << 20))->group(group);
+    app.add_option("-D,--distributed", o.distributed,
+                   "Distributed ray tracing: s soft shadows, d diffuse (glossy) reflections, b both")
+        ->check(CLI::IsMember({"s", "d", "b"}))->group(group);
+    app.add_option("-r,--distributed-samples", o.render.distributedSamples, "Rays per distributed bundle")
+        ->check(CLI::Range(1, 1 << 20))->capture_default_str()->group(group);
+}
+
+void addTreeOptions(CLI::App& app, rt::AccelSettings& a, std::string& kdSplit) {
+    const char* group = "Tree options";
+    app.add_option("--bsp-max-depth", a.bsp.maxDepth, "BSP: maximum depth")->check(CLI::Range(1, 64))
+        ->capture_default_str()->group(group);
+    app.add_option("--bsp-min-prims", a.bsp.minPrimitives, "BSP: a node with this many primitives or fewer is a leaf")
+        ->check(CLI::Range(1, 1 << 20))->capture_default_str()->group(group);
+    app.add_flag("--bsp-round-robin", a.bsp.roundRobin, "BSP: split axes X, Y, Z in turn, not the longest")
+        ->group(group);
+    app.add_option("--kd-traversal-cost", a.kd.traversalCost, "KD: SAH traversal cost")
+        ->check(CLI::PositiveNumber)->capture_default_str()->group(group);
+    app.add_option("--kd-intersection-cost", a.kd.intersectionCost, "KD: SAH intersection cost")
+        ->check(CLI::PositiveNumber)->capture_default_str()->group(group);
+    app.add_option("--kd-empty-bonus", a.kd.emptyBonus, "KD: cost factor for cutting off empty space (1 = none)")
+        ->check(CLI::Range(0.0, 1.0))->capture_default_str()->group(group);
+    app.add_option("--kd-max-depth", a.kd.maxDepth, "KD: maximum depth (default 8 + 1.3 log2 N)")
+        ->check(CLI::Range(1, 64))->group(group);
+    app.add_option("--kd-split", kdSplit, "KD: split search sweep, sort or sample")
+        ->check(CLI::IsMember({"sweep", "sort", "sample"}))->capture_default_str()->group(group);
+    app.add_option("--kd-samples", a.kd.samples, "KD: candidate planes per axis for --kd-split sample")
+        ->check(CLI::Range(1, 1024))->capture_default_str()->group(group);
+}
+
+void addImageOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Colour and file options";
+    app.add_option("--color-config", o.color.configPath, "OpenColorIO config (default: $OCIO, then rt's own)")
+        ->group(group);
+    app.add_option("--colorspace", o.color.colorspace, "Colour space of the rendered values (default: scene_linear)")
+        ->group(group);
+    app.add_option("--display", o.color.display, "OCIO display for PNG, TGA and text (default: the config's)")
+        ->group(group);
+    app.add_option("--view", o.color.view, "OCIO view (default: the display's default, Standard)")->group(group);
+    app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
+    app.add_option("--exr-pixels", o.exrPixels, "EXR pixel type: half or float")
+        ->check(CLI::IsMember({"half", "float"}))->capture_default_str()->group(group);
+    app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}))
+        ->capture_default_str()->group(group);
+}
+
+void addOtherOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Other options";
+    app.add_flag("-q,--quiet", o.quiet, "Quiet: no progress bar or summary on standard error")->group(group);
+    app.add_flag("-b,--batch-stats", o.statsLine,
+                 "Print 'preprocessing render objects lights nodes tests-per-ray' on standard output")->group(group);
+    app.add_flag("-p,--preprocess-only", o.preprocessOnly, "Build the tree and render nothing (implies -o null)")
+        ->group(group);
+    app.add_option("--stats-json", o.statsJson, "Write every statistic as JSON to FILE (- for standard output)")
+        ->group(group);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-    CLI::App app{"Renders an rt scene by ray tracing."};
+    CLI::App app{"Renders a scene by ray tracing (thesis appendix B)."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-render"));
+    RenderOptions options;
+    std::string accelName = "naive";
+    std::string kdSplit = rt::kdSplitMethodName(options.accel.kd.splitMethod);
+    app.add_option("scene", options.scenePath, "Scene file (XML); - reads standard input")->required();
+    addRenderingOptions(app, options, accelName);
+    addQualityOptions(app, options);
+    addTreeOptions(app, options.accel, kdSplit);
+    addImageOptions(app, options);
+    addOtherOptions(app, options);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? rt::tool::kExitOk : rt::tool::kExitBadInput;
     }
-    return rt::tool::run("rt-render", [] {
-        throw std::runtime_error("rendering is not implemented yet");
-        return 0;
-    });
+    options.accel.kind = *rt::parseAccelKind(accelName);
+    options.accel.kd.splitMethod = *rt::parseKdSplitMethod(kdSplit);
+    return rt::tool::run("rt-render", [&] { return rt::render_tool::runRender(options); });
 }

@@ -1,0 +1,141 @@
+#include "image/image_output.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/atomic_file.h"
+#include "image/ascii_art.h"
+
+namespace rt {
+
+namespace {
+
+struct FormatName {
+    ImageFormat format;
+    const char* name;
+    const char* extension;
+};
+constexpr FormatName kFormats[] = {{ImageFormat::Null, "null", ""},
+                                   {ImageFormat::Png, "png", ".png"},
+                                   {ImageFormat::Exr, "exr", ".exr"},
+                                   {ImageFormat::Tga, "tga", ".tga"},
+                                   {ImageFormat::Text, "text", ".txt"}};
+
+// The framebuffer's window as packed RGB floats, the layout OIIO and OCIO take.
+std::vector<float> packedRgb(const Framebuffer& image) {
+    std::vector<float> rgb;
+    rgb.reserve(image.pixels().size() * 3);
+    for (const Color& c : image.pixels()) rgb.insert(rgb.end(), {c.r, c.g, c.b});
+    return rgb;
+}
+
+// The data window is the rendered window, the display window the full image (EXR keeps both).
+OIIO::ImageSpec specFor(const Framebuffer& image, OIIO::TypeDesc type) {
+    const PixelWindow& w = image.window();
+    OIIO::ImageSpec spec(w.width(), w.height(), 3, type);
+    spec.x = w.x0;
+    spec.y = w.y0;
+    spec.full_x = spec.full_y = 0;
+    spec.full_width = image.fullWidth();
+    spec.full_height = image.fullHeight();
+    return spec;
+}
+
+void writeOiio(const std::string& file, const OIIO::ImageSpec& spec, const std::vector<float>& rgb,
+               OIIO::Filesystem::IOProxy* proxy) {
+    auto out = OIIO::ImageOutput::create(file);
+    if (!out) throw std::runtime_error(file + ": " + OIIO::geterror());
+    if (proxy && !(out->supports("ioproxy") && out->set_ioproxy(proxy)))
+        throw std::runtime_error(std::string(out->format_name()) + " files cannot be written to standard output");
+    if (!out->open(file, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !out->close())
+        throw std::runtime_error(file + ": " + out->geterror());
+}
+
+// Atomically to a file, or through memory to standard output for "-".
+void writeOiioAtomically(const std::string& path, const char* extension, const OIIO::ImageSpec& spec,
+                         const std::vector<float>& rgb) {
+    if (path != "-") {
+        commitFileAtomically(path, [&](const std::string& temp) {
+            writeOiio(temp, spec, rgb, nullptr);
+            return true;
+        });
+        return;
+    }
+    OIIO::Filesystem::IOVecOutput memory;
+    writeOiio(std::string("stdout") + extension, spec, rgb, &memory);
+    writeFileAtomically("-", [&](std::ostream& os) {
+        os.write(reinterpret_cast<const char*>(memory.buffer().data()), std::streamsize(memory.buffer().size()));
+    });
+}
+
+void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
+    const ColorPipeline color(s.color);  // resolves and checks the colour space name
+    OIIO::ImageSpec spec = specFor(image, s.exrHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+    spec.attribute("compression", "zip");
+    spec.attribute("Software", meta.software);
+    spec.attribute("oiio:ColorSpace", color.colorspace());
+    spec.attribute("rt:colorSpace", color.colorspace());
+    spec.attribute("rt:colorConfig", color.configPath().empty() ? std::string("$OCIO") : color.configPath());
+    spec.attribute("rt:scene", meta.sceneFile);
+    spec.attribute("rt:samplesPerPixel", meta.samplesPerPixel);
+    spec.attribute("rt:renderSeconds", float(meta.renderSeconds));
+    writeOiioAtomically(s.path, ".exr", spec, packedRgb(image));
+}
+
+void writeDisplayImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
+    if (s.pngBits != 8 && s.pngBits != 16) throw std::invalid_argument("PNG bits must be 8 or 16");
+    const ColorPipeline color(s.color);
+    std::vector<float> rgb = packedRgb(image);
+    color.toDisplay(rgb);
+    const bool png = s.format == ImageFormat::Png;
+    OIIO::ImageSpec spec = specFor(image, png && s.pngBits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+    spec.attribute("Software", meta.software);
+    writeOiioAtomically(s.path, png ? ".png" : ".tga", spec, rgb);
+}
+
+void writeText(const Framebuffer& image, const ImageOutputSettings& s) {
+    const ColorPipeline color(s.color);
+    std::vector<float> rgb = packedRgb(image);
+    color.toDisplay(rgb);
+    const std::string text = asciiArt(rgb, image.window().width(), image.window().height());
+    writeFileAtomically(s.path, [&](std::ostream& os) { os << text; });
+}
+
+}  // namespace
+
+std::optional<ImageFormat> parseImageFormat(const std::string& name) {
+    for (const FormatName& f : kFormats)
+        if (name == f.name) return f.format;
+    return std::nullopt;
+}
+
+std::optional<ImageFormat> imageFormatFromPath(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    for (const FormatName& f : kFormats)
+        if (!ext.empty() && ext == f.extension) return f.format;
+    return std::nullopt;
+}
+
+const char* imageFormatName(ImageFormat format) {
+    for (const FormatName& f : kFormats)
+        if (f.format == format) return f.name;
+    return "?";
+}
+
+void writeImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
+    switch (s.format) {
+        case ImageFormat::Null: return;
+        case ImageFormat::Exr: return writeExr(image, s, meta);
+        case ImageFormat::Png:
+        case ImageFormat::Tga: return writeDisplayImage(image, s, meta);
+        case ImageFormat::Text: return writeText(image, s);
+    }
+}
+
+}  // namespace rt

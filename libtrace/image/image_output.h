@@ -1,0 +1,42 @@
+// Writing the rendered picture (thesis 3.4.4): EXR keeps the linear scene-referred values,
+// PNG, TGA and text are display-referred through the OpenColorIO pipeline, null writes
+// nothing (benchmarks). Every file is written atomically: a failed or interrupted write
+// leaves an existing file untouched and no partial file; "-" writes to standard output.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "image/color_pipeline.h"
+#include "render/framebuffer.h"
+
+namespace rt {
+
+enum class ImageFormat { Null, Png, Exr, Tga, Text };
+
+std::optional<ImageFormat> parseImageFormat(const std::string& name);  // null png exr tga text
+// From a file name's extension (.png .exr .tga .txt), case-insensitive.
+std::optional<ImageFormat> imageFormatFromPath(const std::string& path);
+const char* imageFormatName(ImageFormat format);
+
+struct ImageOutputSettings {
+    ImageFormat format = ImageFormat::Null;
+    std::string path;     // "-" is standard output
+    bool exrHalf = true;  // EXR pixels as half (else float)
+    int pngBits = 8;      // 8 or 16
+    ColorSettings color;
+};
+
+// What the EXR header records about the render.
+struct ImageMetadata {
+    std::string software;  // "rt-render 0.1.0"
+    std::string sceneFile;
+    int samplesPerPixel = 1;
+    double renderSeconds = 0;
+};
+
+// Writes `image` as the settings say. Throws rt::InputError for bad colour settings and
+// std::runtime_error when the file cannot be written.
+void writeImage(const Framebuffer& image, const ImageOutputSettings& settings, const ImageMetadata& metadata);
+
+}  // namespace rt

@@ -1,0 +1,263 @@
+#include "import/assimp_import.h"
+
+#include <assimp/BaseImporter.h>
+#include <assimp/Importer.hpp>
+#include <assimp/importerdesc.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "core/error.h"
+#include "import/mesh_data.h"
+#include "import/scene_defaults.h"
+
+namespace rt {
+namespace {
+
+Transform toTransform(const aiMatrix4x4& m) {
+    Transform::Matrix r{};
+    const ai_real* rows[4] = {&m.a1, &m.b1, &m.c1, &m.d1};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[i][j] = Real(rows[i][j]);
+    return Transform(r);  // throws std::invalid_argument when singular or not affine
+}
+
+Vec3 toVec3(const aiVector3D& v) { return {Real(v.x), Real(v.y), Real(v.z)}; }
+
+// An importer without Assimp's glTF readers, which abort on some broken files.
+void removeGltfImporters(Assimp::Importer& importer) {
+    for (const char* ext : {"gltf", "glb"})
+        while (Assimp::BaseImporter* reader = importer.GetImporter(ext)) importer.UnregisterLoader(reader);
+}
+
+// The name of the importer that reads the file. Without an extension Assimp knows, Assimp
+// guesses the format from the content: binary formats have signatures, but text formats are
+// guessed from keywords ("v ", "f " for OBJ) that garbage can contain too (the OSS-Fuzz case
+// in shared/models/bad/assimp-fuzz), so such a guess is only trusted for a binary format.
+std::string formatName(const Assimp::Importer& importer, const std::string& path) {
+    const std::string::size_type dot = path.find_last_of("./");
+    const std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot + 1);
+    const std::size_t byExtension = ext.empty() ? std::size_t(-1) : importer.GetImporterIndex(ext.c_str());
+    if (byExtension != std::size_t(-1)) return importer.GetImporterInfo(byExtension)->mName;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        if (!importer.GetImporter(i)->CanRead(path, importer.GetIOHandler(), true)) continue;
+        const aiImporterDesc* desc = importer.GetImporterInfo(i);
+        if (!(desc->mFlags & aiImporterFlags_SupportBinaryFlavour))
+            throw InputError(path + ": the file name has no known extension and the content looks like " + desc->mName +
+                             " text only by its keywords; rename it with the right extension");
+        return desc->mName;
+    }
+    throw InputError(path + ": unknown file format (no known extension, no recognised signature)");
+}
+
+class AssimpSceneBuilder {
+public:
+    AssimpSceneBuilder(const aiScene& ai, const std::string& file, const ImportOptions& options, ImportResult& out)
+        : ai_(ai), file_(file), options_(options), out_(out), models_(ai.mNumMeshes), materials_(ai.mNumMaterials) {}
+
+    void build(const Transform& root) {
+        std::vector<std::pair<const aiNode*, Transform>> stack{{ai_.mRootNode, root}};
+        std::set<const aiNode*> visited;
+        while (!stack.empty()) {  // depth first, without recursion
+            auto [node, parent] = stack.back();
+            stack.pop_back();
+            if (!node || !visited.insert(node).second) fail("the node tree is not a tree");
+            std::optional<Transform> world = worldTransform(*node, parent);
+            if (!world) continue;
+            worldByName_.emplace(node->mName.C_Str(), *world);
+            for (unsigned i = 0; i < node->mNumMeshes; ++i) placeMesh(node->mMeshes[i], *world);
+            for (unsigned i = node->mNumChildren; i-- > 0;) stack.emplace_back(node->mChildren[i], *world);
+        }
+        out_.report.meshes = meshesPlaced_.size();
+        const Aabb bounds = sceneBounds(out_.scene);
+        takeCamera(bounds);
+        takeLights(bounds);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& message) const { throw InputError(file_ + ": " + message); }
+
+    std::optional<Transform> worldTransform(const aiNode& node, const Transform& parent) {
+        try {
+            return parent * toTransform(node.mTransformation);
+        } catch (const std::invalid_argument& e) {
+            out_.report.notes.push_back("node \"" + std::string(node.mName.C_Str()) + "\": " + e.what() +
+                                        ": it and its children are left out");
+            return std::nullopt;
+        }
+    }
+
+    void placeMesh(unsigned meshIndex, const Transform& world) {
+        if (meshIndex >= ai_.mNumMeshes)
+            fail("a node names mesh " + std::to_string(meshIndex) + ", which does not exist");
+        meshesPlaced_.insert(meshIndex);
+        if (!models_[meshIndex]) models_[meshIndex] = convertMesh(meshIndex);
+        const ConvertedMesh& converted = *models_[meshIndex];
+        out_.report.droppedDegenerateInScene += converted.dropped;
+        if (converted.model)
+            out_.scene.instances.push_back(
+                {*converted.model, materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex), world});
+    }
+
+    ConvertedMesh convertMesh(unsigned meshIndex) {
+        const aiMesh& mesh = *ai_.mMeshes[meshIndex];
+        const std::string what = "mesh " + std::to_string(meshIndex);
+        std::vector<Point3f> points(mesh.mNumVertices);
+        for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+            const aiVector3D& v = mesh.mVertices[i];
+            if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+                fail(what + " vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+            points[i] = {float(v.x), float(v.y), float(v.z)};
+        }
+        Model model;
+        model.name = modelNames_.claim(mesh.mName.C_Str(), "mesh" + std::to_string(meshIndex));
+        ConvertedMesh converted;
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) converted.dropped += addFace(mesh.mFaces[f], points, model, what);
+        out_.report.droppedDegenerate += converted.dropped;
+        if (model.triangleCount() == 0) return converted;
+        out_.scene.models.push_back(std::move(model));
+        converted.model = std::uint32_t(out_.scene.models.size() - 1);
+        return converted;
+    }
+
+    // Triangles as they are; a polygon Triangulate left (it should leave none) as a fan.
+    // Returns the number of degenerate triangles dropped.
+    std::size_t addFace(const aiFace& face, const std::vector<Point3f>& points, Model& model, const std::string& what) {
+        if (face.mNumIndices == 1) ++out_.report.droppedPoints;
+        if (face.mNumIndices == 2) ++out_.report.droppedLines;
+        for (unsigned i = 0; i < face.mNumIndices; ++i)
+            if (face.mIndices[i] >= points.size())
+                fail(what + " has a face with vertex index " + std::to_string(face.mIndices[i]) + " out of range");
+        std::size_t dropped = 0;
+        for (unsigned i = 1; i + 1 < face.mNumIndices; ++i)
+            if (!appendTriangle(model, points[face.mIndices[0]], points[face.mIndices[i]],
+                                points[face.mIndices[i + 1]]))
+                ++dropped;
+        return dropped;
+    }
+
+    // Diffuse colour, specular = luminance(Ks) * shininess strength, shininess as the Phong
+    // exponent, reflectivity as the mirror coefficient (docs/conversion.md).
+    std::uint32_t materialFor(unsigned index) {
+        if (index >= ai_.mNumMaterials)
+            fail("a mesh names material " + std::to_string(index) + ", which does not exist");
+        if (materials_[index]) return *materials_[index];
+        const aiMaterial& am = *ai_.mMaterials[index];
+        Material m;
+        aiColor3D c(1, 1, 1);
+        if (am.Get(AI_MATKEY_COLOR_DIFFUSE, c) == aiReturn_SUCCESS) m.color = clampedColor(c);
+        float strength = 1, shininess = 0, reflectivity = 0;
+        am.Get(AI_MATKEY_SHININESS_STRENGTH, strength);
+        aiColor3D ks(0, 0, 0);
+        if (am.Get(AI_MATKEY_COLOR_SPECULAR, ks) == aiReturn_SUCCESS)
+            m.specular = std::clamp(luminance(clampedColor(ks)) * finiteOr(strength, 1), 0.0f, 1.0f);
+        if (am.Get(AI_MATKEY_SHININESS, shininess) == aiReturn_SUCCESS && shininess > 0)
+            m.shininess = std::clamp(finiteOr(shininess, m.shininess), 1.0f, 10000.0f);
+        if (am.Get(AI_MATKEY_REFLECTIVITY, reflectivity) == aiReturn_SUCCESS)
+            m.reflection = std::clamp(finiteOr(reflectivity, 0), 0.0f, 1.0f);
+        aiString name;
+        am.Get(AI_MATKEY_NAME, name);
+        m.name = materialNames_.claim(name.C_Str(), "material" + std::to_string(index));
+        out_.scene.materials.push_back(m);
+        return *(materials_[index] = std::uint32_t(out_.scene.materials.size() - 1));
+    }
+
+    static float finiteOr(float v, float fallback) { return std::isfinite(v) ? v : fallback; }
+    static Color clampedColor(const aiColor3D& c) {
+        return {std::max(finiteOr(c.r, 0), 0.0f), std::max(finiteOr(c.g, 0), 0.0f), std::max(finiteOr(c.b, 0), 0.0f)};
+    }
+
+    const Transform* placement(const aiString& name) const {
+        const auto it = worldByName_.find(name.C_Str());
+        return it == worldByName_.end() ? nullptr : &it->second;
+    }
+
+    // --camera NAME|INDEX, else the first perspective camera a node places. Assimp's
+    // mHorizontalFOV is half the horizontal angle.
+    void takeCamera(const Aabb& bounds) {
+        ImportReport& report = out_.report;
+        report.camerasInFile = ai_.mNumCameras;
+        for (unsigned i = 0; i < ai_.mNumCameras; ++i) {
+            const aiCamera& cam = *ai_.mCameras[i];
+            const std::string name = cam.mName.C_Str();
+            const bool wanted =
+                options_.camera.empty() || options_.camera == std::to_string(i) || options_.camera == name;
+            const Transform* world = placement(cam.mName);
+            if (!wanted || !world) continue;
+            const std::string what = "camera " + std::to_string(i) + " \"" + name + "\"";
+            if (cam.mOrthographicWidth > 0 || !(cam.mHorizontalFOV > 0 && cam.mHorizontalFOV < kPi / 2)) {
+                if (!options_.camera.empty()) fail(what + " is orthographic or has an invalid fov");
+                report.notes.push_back(what + " is orthographic or has an invalid fov: not used");
+                continue;
+            }
+            out_.scene.camera = viewCamera(world->point(toVec3(cam.mPosition)), world->vector(toVec3(cam.mLookAt)),
+                                           world->vector(toVec3(cam.mUp)), 2.0 * cam.mHorizontalFOV, bounds);
+            report.cameraUsed = name;
+            if (name.empty())
+                report.cameraUsed.append("#").append(std::to_string(i));  // (GCC 12 -Wrestrict misfires on "#" + s)
+            return;
+        }
+        if (!options_.camera.empty()) fail("no node places a camera named or numbered \"" + options_.camera + "\"");
+    }
+
+    // Point lights as they are, spot and area lights as point lights, directional lights as
+    // point lights 100 scene radii away against their direction, ambient lights dropped.
+    void takeLights(const Aabb& bounds) {
+        out_.report.lightsInFile = ai_.mNumLights;
+        const Vec3 centre = bounds.empty() ? Vec3() : bounds.center();
+        const Real radius = bounds.empty() ? Real(1) : std::max(length(bounds.diagonal()) / 2, Real(1e-6));
+        for (unsigned i = 0; i < ai_.mNumLights; ++i) {
+            const aiLight& al = *ai_.mLights[i];
+            const std::string what = "light " + std::to_string(i) + " \"" + std::string(al.mName.C_Str()) + "\"";
+            const Transform* world = placement(al.mName);
+            if (!world || al.mType == aiLightSource_AMBIENT || al.mType == aiLightSource_UNDEFINED) {
+                out_.report.notes.push_back(what + (world ? " is ambient: dropped" : " is placed by no node: dropped"));
+                continue;
+            }
+            Light light{world->point(toVec3(al.mPosition)), clampedColor(al.mColorDiffuse), 0};
+            if (al.mType == aiLightSource_DIRECTIONAL) {
+                light.position = centre - normalize(world->vector(toVec3(al.mDirection))) * (100 * radius);
+                out_.report.notes.push_back(what + " (directional) approximated by a point light 100 scene radii away");
+            } else if (al.mType != aiLightSource_POINT) {
+                out_.report.notes.push_back(what + " (spot or area) approximated by a point light");
+            }
+            if (!isFinite(light.position)) fail(what + " has a NaN or infinite position or direction");
+            out_.scene.lights.push_back(light);
+        }
+        scaleLightsToUnitPeak(out_.scene.lights);
+    }
+
+    const aiScene& ai_;
+    const std::string& file_;
+    const ImportOptions& options_;
+    ImportResult& out_;
+    std::vector<std::optional<ConvertedMesh>> models_;  // per aiMesh, once converted
+    std::vector<std::optional<std::uint32_t>> materials_;
+    std::set<unsigned> meshesPlaced_;
+    std::map<std::string, Transform> worldByName_;
+    NameTable modelNames_;
+    NameTable materialNames_;
+};
+
+}  // namespace
+
+ImportResult importAssimp(const std::string& path, const ImportOptions& options, const Transform& root) {
+    Assimp::Importer importer;
+    removeGltfImporters(importer);
+    ImportResult result;
+    result.report.format = formatName(importer, path);
+    const aiScene* ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
+    if (!ai || !ai->mRootNode) {
+        const std::string why = importer.GetErrorString();
+        throw InputError(path + ": " + (why.empty() ? "Assimp cannot read the file" : why));
+    }
+    AssimpSceneBuilder(*ai, path, options, result).build(root);
+    return result;
+}
+
+}  // namespace rt

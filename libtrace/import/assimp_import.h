@@ -1,0 +1,18 @@
+// Every other format Assimp reads (OBJ with its .mtl, 3DS, PLY, STL, FBX, DAE, NFF, ...).
+#pragma once
+
+#include <string>
+
+#include "import/import.h"
+
+namespace rt {
+
+// Reads the file with aiProcess_Triangulate and aiProcess_ValidateDataStructure only (no
+// post-processing that joins meshes, so instancing survives), with Assimp's glTF importers
+// removed (they abort the process on some broken files; glTF goes through tinygltf). The node
+// tree gives the instances (world = parent * local), each aiMesh one Model, aiMaterial the
+// diffuse colour, specular, shininess and reflectivity, aiCamera and aiLight the camera and
+// lights. Camera and light defaults are left to the caller. Throws rt::InputError.
+ImportResult importAssimp(const std::string& path, const ImportOptions& options, const Transform& root);
+
+}  // namespace rt

@@ -1,0 +1,466 @@
+#include "import/gltf_import.h"
+
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <set>
+
+#include "core/error.h"
+#include "import/gltf_accessor.h"
+#include "import/mesh_data.h"
+#include "import/phong_from_pbr.h"
+#include "import/primitive_topology.h"
+#include "import/scene_defaults.h"
+
+namespace rt {
+namespace {
+
+// Textures are not used (rt has no texture mapping): skip decoding them.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
+// File access for tinygltf. Only regular files are read (its own reader sizes a directory
+// as 2^64 - 1 bytes and throws std::bad_alloc), and image files are never opened: each reads
+// as one placeholder byte, which skipImage accepts, as rt has no textures.
+bool isImagePath(const std::string& path) {
+    const std::string ext = lowerCaseExtension(path);
+    return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".ktx2" || ext == ".webp" || ext == ".dds";
+}
+
+bool isRegularFile(const std::string& path, void*) {
+    std::error_code ec;
+    return isImagePath(path) || std::filesystem::is_regular_file(path, ec);
+}
+
+std::string samePath(const std::string& path, void*) { return path; }
+
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    out->assign(1, 0);
+    if (isImagePath(path)) return true;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        *err += "not a file: " + path + "\n";
+        return false;
+    }
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    std::ifstream in(path, std::ios::binary);
+    if (ec || !in) {
+        *err += "cannot read " + path + "\n";
+        return false;
+    }
+    out->resize(size);
+    if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
+        *err += "cannot read " + path + "\n";
+        return false;
+    }
+    return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    *err += "rt never writes through tinygltf\n";
+    return false;
+}
+
+// The first line of a tinygltf message, printable: JSON errors quote the offending bytes.
+std::string firstLine(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    for (char& c : line)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+    return line.empty() ? "not a valid glTF file" : line;
+}
+
+tinygltf::Model loadGltf(const std::string& path, ImportReport& report) {
+    if (!std::ifstream(path, std::ios::binary)) throw InputError(path + ": cannot open the file");
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    loader.SetFsCallbacks({isRegularFile, samePath, readRegularFile, refuseWrite, nullptr});
+    tinygltf::Model gltf;
+    std::string error, warning;
+    const bool binary = hasGlbMagic(path);
+    report.format = binary ? "glTF 2.0 binary (.glb)" : "glTF 2.0";
+    const bool ok = binary ? loader.LoadBinaryFromFile(&gltf, &error, &warning, path)
+                           : loader.LoadASCIIFromFile(&gltf, &error, &warning, path);
+    if (!ok) throw InputError(path + ": " + firstLine(error));
+    for (std::size_t start = 0; start < warning.size();) {
+        const std::size_t end = std::min(warning.find('\n', start), warning.size());
+        if (end > start) report.notes.push_back("tinygltf: " + firstLine(warning.substr(start, end - start)));
+        start = end + 1;
+    }
+    for (const std::string& ext : gltf.extensionsRequired)
+        if (ext.find("compression") != std::string::npos)
+            throw InputError(path + ": requires " + ext + ", which rt-convert does not decode");
+    return gltf;
+}
+
+double finiteNumber(double v, const std::string& file, const std::string& what) {
+    if (!std::isfinite(v)) throw InputError(file + ": " + what + " is not a finite number");
+    return v;
+}
+
+// A number from an extension object, which tinygltf leaves as untyped JSON values.
+double numberValue(const tinygltf::Value& v, const std::string& file, const std::string& what) {
+    if (!v.IsNumber()) throw InputError(file + ": " + what + " is not a number");
+    return finiteNumber(v.GetNumberAsDouble(), file, what);
+}
+
+// A node's local transform: its matrix (column-major), or T * R * S (glTF 3.5.2).
+// Throws InputError for malformed values, std::invalid_argument for a singular matrix.
+Transform nodeTransform(const tinygltf::Node& node, const std::string& file, const std::string& what) {
+    auto check = [&](const std::vector<double>& v, std::size_t size, const char* field) {
+        if (!v.empty() && v.size() != size)
+            throw InputError(file + ": " + what + ": " + field + " has " + std::to_string(v.size()) + " numbers");
+        for (double x : v) finiteNumber(x, file, what + " " + field);
+    };
+    check(node.matrix, 16, "matrix");
+    check(node.translation, 3, "translation");
+    check(node.rotation, 4, "rotation");
+    check(node.scale, 3, "scale");
+    Transform::Matrix m{};
+    if (!node.matrix.empty()) {
+        for (int col = 0; col < 4; ++col)
+            for (int row = 0; row < 4; ++row) m[row][col] = Real(node.matrix[std::size_t(col * 4 + row)]);
+        return Transform(m);
+    }
+    const std::vector<double> t = node.translation.empty() ? std::vector<double>{0, 0, 0} : node.translation;
+    const std::vector<double> s = node.scale.empty() ? std::vector<double>{1, 1, 1} : node.scale;
+    double x = 0, y = 0, z = 0, w = 1;
+    if (!node.rotation.empty()) {
+        const double n =
+            std::sqrt(std::inner_product(node.rotation.begin(), node.rotation.end(), node.rotation.begin(), 0.0));
+        if (!(n > 0)) throw InputError(file + ": " + what + ": rotation is a zero quaternion");
+        x = node.rotation[0] / n, y = node.rotation[1] / n, z = node.rotation[2] / n, w = node.rotation[3] / n;
+    }
+    const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                            {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                            {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+    for (int row = 0; row < 3; ++row) {
+        for (int col = 0; col < 3; ++col) m[row][col] = Real(r[row][col] * s[std::size_t(col)]);
+        m[row][3] = Real(t[std::size_t(row)]);
+    }
+    m[3][3] = 1;
+    return Transform(m);
+}
+
+struct Placed {
+    int index;  // camera or light
+    Transform world;
+};
+
+class GltfSceneBuilder {
+public:
+    GltfSceneBuilder(const tinygltf::Model& gltf, const std::string& file, const ImportOptions& options,
+                     ImportResult& out)
+        : gltf_(gltf), file_(file), options_(options), out_(out), reader_(gltf, file) {}
+
+    void build(const Transform& root) {
+        const tinygltf::Scene& scene = gltf_.scenes[chooseScene()];
+        std::vector<std::pair<int, Transform>> stack;
+        for (auto it = scene.nodes.rbegin(); it != scene.nodes.rend(); ++it) stack.emplace_back(*it, root);
+        std::vector<char> visited(gltf_.nodes.size(), 0);
+        while (!stack.empty()) {  // depth first, children in file order, without recursion
+            auto [index, parent] = stack.back();
+            stack.pop_back();
+            if (index < 0 || std::size_t(index) >= gltf_.nodes.size())
+                fail("node " + std::to_string(index) + " does not exist (the file has " +
+                     std::to_string(gltf_.nodes.size()) + ")");
+            if (visited[std::size_t(index)]++)
+                fail("node " + std::to_string(index) + " is reached twice (a cycle, or a node with two parents)");
+            std::optional<Transform> world = worldTransform(index, parent);
+            if (!world) continue;
+            placeNode(index, *world);
+            const std::vector<int>& children = gltf_.nodes[std::size_t(index)].children;
+            for (auto it = children.rbegin(); it != children.rend(); ++it) stack.emplace_back(*it, *world);
+        }
+        out_.report.meshes = meshesPlaced_.size();
+        const Aabb bounds = sceneBounds(out_.scene);
+        takeCamera(bounds);
+        takeLights(bounds);
+        noteTextures();
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& message) const { throw InputError(file_ + ": " + message); }
+
+    std::size_t chooseScene() const {
+        if (gltf_.scenes.empty()) fail("the file has no scene");
+        const int chosen = options_.scene ? *options_.scene : std::max(gltf_.defaultScene, 0);
+        if (chosen < 0 || std::size_t(chosen) >= gltf_.scenes.size())
+            fail("scene " + std::to_string(chosen) + " does not exist (the file has " +
+                 std::to_string(gltf_.scenes.size()) + ")");
+        return std::size_t(chosen);
+    }
+
+    std::optional<Transform> worldTransform(int index, const Transform& parent) {
+        const std::string what = "node " + std::to_string(index);
+        try {
+            return parent * nodeTransform(gltf_.nodes[std::size_t(index)], file_, what);
+        } catch (const std::invalid_argument&) {
+            out_.report.notes.push_back(what +
+                                        " has a singular transform (zero scale): it and its children are left out");
+            return std::nullopt;
+        }
+    }
+
+    void placeNode(int index, const Transform& world) {
+        const tinygltf::Node& node = gltf_.nodes[std::size_t(index)];
+        if (node.mesh >= 0)
+            placeMesh(node.mesh, world);
+        else if (node.mesh < -1)
+            fail("node " + std::to_string(index) + " names mesh " + std::to_string(node.mesh));
+        if (node.camera >= 0) {
+            if (std::size_t(node.camera) >= gltf_.cameras.size())
+                fail("node " + std::to_string(index) + " names camera " + std::to_string(node.camera) +
+                     ", which does not exist");
+            cameras_.push_back({node.camera, world});
+        }
+        const auto light = node.extensions.find("KHR_lights_punctual");
+        if (light != node.extensions.end() && light->second.Has("light")) {
+            const double l = numberValue(light->second.Get("light"), file_, "node " + std::to_string(index) + " light");
+            if (!(l >= 0 && l < double(gltf_.lights.size())))
+                fail("node " + std::to_string(index) + " names KHR_lights_punctual light " + std::to_string(l) +
+                     ", which does not exist");
+            lights_.push_back({int(l), world});
+        }
+    }
+
+    void placeMesh(int mesh, const Transform& world) {
+        if (std::size_t(mesh) >= gltf_.meshes.size())
+            fail("mesh " + std::to_string(mesh) + " does not exist (the file has " +
+                 std::to_string(gltf_.meshes.size()) + ")");
+        meshesPlaced_.insert(mesh);
+        const std::vector<tinygltf::Primitive>& primitives = gltf_.meshes[std::size_t(mesh)].primitives;
+        for (std::size_t p = 0; p < primitives.size(); ++p) {
+            const ConvertedMesh converted = modelFor(mesh, int(p));
+            out_.report.droppedDegenerateInScene += converted.dropped;
+            if (converted.model)
+                out_.scene.instances.push_back({*converted.model, materialFor(primitives[p].material), world});
+        }
+    }
+
+    // The Model of one primitive, converted the first time a node places it.
+    ConvertedMesh modelFor(int mesh, int primitive) {
+        const auto key = std::make_pair(mesh, primitive);
+        const auto cached = models_.find(key);
+        if (cached != models_.end()) return cached->second;
+        return models_[key] = convertPrimitive(mesh, primitive);
+    }
+
+    ConvertedMesh convertPrimitive(int meshIndex, int primitiveIndex) {
+        const tinygltf::Mesh& mesh = gltf_.meshes[std::size_t(meshIndex)];
+        const tinygltf::Primitive& prim = mesh.primitives[std::size_t(primitiveIndex)];
+        const std::string what = "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(primitiveIndex);
+        std::optional<Topology> topology = topologyOf(prim.mode, what);
+        if (!topology) return {};
+        const auto position = prim.attributes.find("POSITION");
+        if (position == prim.attributes.end()) {
+            out_.report.notes.push_back(what + " has no POSITION attribute: skipped");
+            return {};
+        }
+        const std::vector<Point3f> points = reader_.points(position->second, what + " POSITION");
+        std::vector<std::uint32_t> vertices;
+        if (prim.indices >= 0) {
+            vertices = reader_.indices(prim.indices, points.size(), what + " indices");
+        } else {
+            vertices.resize(points.size());
+            std::iota(vertices.begin(), vertices.end(), 0u);
+        }
+        const std::vector<std::uint32_t> corners = triangleCorners(*topology, vertices);
+        Model model;
+        const std::string base = mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name;
+        model.name = modelNames_.claim(mesh.primitives.size() > 1 ? base + "_" + std::to_string(primitiveIndex) : base,
+                                       "mesh" + std::to_string(meshIndex));
+        model.triangleVertices.reserve(corners.size() * 3);
+        ConvertedMesh converted;
+        for (std::size_t i = 0; i + 3 <= corners.size(); i += 3)
+            if (!appendTriangle(model, points[corners[i]], points[corners[i + 1]], points[corners[i + 2]]))
+                ++converted.dropped;
+        out_.report.droppedDegenerate += converted.dropped;
+        if (model.triangleCount() == 0) return converted;
+        out_.scene.models.push_back(std::move(model));
+        converted.model = std::uint32_t(out_.scene.models.size() - 1);
+        return converted;
+    }
+
+    std::optional<Topology> topologyOf(int mode, const std::string& what) {
+        switch (mode) {
+            case TINYGLTF_MODE_TRIANGLES:
+                return Topology::Triangles;
+            case TINYGLTF_MODE_TRIANGLE_STRIP:
+                return Topology::Strip;
+            case TINYGLTF_MODE_TRIANGLE_FAN:
+                return Topology::Fan;
+            case TINYGLTF_MODE_POINTS:
+                ++out_.report.droppedPoints;
+                return std::nullopt;
+            case TINYGLTF_MODE_LINE:
+            case TINYGLTF_MODE_LINE_LOOP:
+            case TINYGLTF_MODE_LINE_STRIP:
+                ++out_.report.droppedLines;
+                return std::nullopt;
+            default:
+                fail(what + " has the unknown mode " + std::to_string(mode));
+        }
+    }
+
+    std::uint32_t materialFor(int index) {
+        const auto cached = materials_.find(index);
+        if (cached != materials_.end()) return cached->second;
+        if (index < -1 || index >= int(gltf_.materials.size()))
+            fail("material " + std::to_string(index) + " does not exist (the file has " +
+                 std::to_string(gltf_.materials.size()) + ")");
+        Material m;  // a primitive without material: rt's plain white diffuse default (docs/conversion.md)
+        std::string name = "default";
+        if (index >= 0) {
+            const tinygltf::Material& gm = gltf_.materials[std::size_t(index)];
+            m = phongFromMetallicRoughness(metallicRoughness(gm, "material " + std::to_string(index)));
+            name = gm.name;
+            if (gm.pbrMetallicRoughness.baseColorTexture.index >= 0) ++texturedMaterials_;
+        }
+        m.name = materialNames_.claim(name, "material" + std::to_string(index));
+        out_.scene.materials.push_back(m);
+        return materials_[index] = std::uint32_t(out_.scene.materials.size() - 1);
+    }
+
+    MetallicRoughness metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
+        const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
+        MetallicRoughness in;
+        in.baseColor = color(pbr.baseColorFactor, what + " baseColorFactor");
+        in.metallic = float(finiteNumber(pbr.metallicFactor, file_, what + " metallicFactor"));
+        in.roughness = float(finiteNumber(pbr.roughnessFactor, file_, what + " roughnessFactor"));
+        const auto ior = gm.extensions.find("KHR_materials_ior");
+        if (ior != gm.extensions.end() && ior->second.Has("ior"))
+            in.ior = float(numberValue(ior->second.Get("ior"), file_, what + " ior"));
+        const auto specular = gm.extensions.find("KHR_materials_specular");
+        if (specular != gm.extensions.end()) {
+            const tinygltf::Value& ext = specular->second;
+            if (ext.Has("specularFactor"))
+                in.specularFactor =
+                    float(numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"));
+            if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray()) {
+                const tinygltf::Value& c = ext.Get("specularColorFactor");
+                std::vector<double> v;
+                for (int i = 0; i < int(c.ArrayLen()); ++i) v.push_back(numberValue(c.Get(i), file_, what));
+                in.specularColor = color(v, what + " specularColorFactor");
+            }
+        }
+        return in;
+    }
+
+    Color color(const std::vector<double>& v, const std::string& what) const {
+        if (v.size() < 3) fail(what + " needs 3 numbers");
+        return {float(finiteNumber(v[0], file_, what)), float(finiteNumber(v[1], file_, what)),
+                float(finiteNumber(v[2], file_, what))};
+    }
+
+    // --camera NAME|INDEX, else the first perspective camera a node places.
+    void takeCamera(const Aabb& bounds) {
+        ImportReport& report = out_.report;
+        report.camerasInFile = gltf_.cameras.size();
+        const Placed* chosen = nullptr;
+        for (const Placed& c : cameras_) {
+            const tinygltf::Camera& cam = gltf_.cameras[std::size_t(c.index)];
+            const bool named =
+                options_.camera == std::to_string(c.index) || (!cam.name.empty() && options_.camera == cam.name);
+            if (options_.camera.empty() ? cam.type == "perspective" : named) {
+                chosen = &c;
+                break;
+            }
+        }
+        if (!chosen && !options_.camera.empty())
+            fail("no node of the scene places a camera named or numbered \"" + options_.camera + "\"");
+        if (cameras_.size() > (chosen ? 1u : 0u))
+            report.notes.push_back(std::to_string(cameras_.size() - (chosen ? 1 : 0)) + " other camera(s) not used");
+        if (!chosen) return;
+        const tinygltf::Camera& cam = gltf_.cameras[std::size_t(chosen->index)];
+        const std::string what = "camera " + std::to_string(chosen->index);
+        if (cam.type != "perspective") fail(what + " is " + cam.type + "; rt cameras are perspective");
+        const double yfov = finiteNumber(cam.perspective.yfov, file_, what + " yfov");
+        if (!(yfov > 0 && yfov < kPi)) fail(what + ": yfov must lie between 0 and pi");
+        double aspect = cam.perspective.aspectRatio;
+        if (!(aspect > 0) || !std::isfinite(aspect)) {
+            aspect = options_.aspect;
+            report.notes.push_back(what + " has no aspect ratio: its horizontal fov assumes " + std::to_string(aspect));
+        }
+        const Transform& w = chosen->world;
+        out_.scene.camera = viewCamera(w.point(Vec3()), w.vector(Vec3(0, 0, -1)), w.vector(Vec3(0, 1, 0)),
+                                       horizontalFov(yfov, aspect), bounds);
+        report.cameraUsed = cam.name.empty() ? "#" + std::to_string(chosen->index) : cam.name;
+    }
+
+    // KHR_lights_punctual: point lights where the node puts them; spot lights as point
+    // lights (cone dropped); directional lights as point lights 100 scene radii away against
+    // their direction. Colour times intensity, scaled by scaleLightsToUnitPeak.
+    void takeLights(const Aabb& bounds) {
+        out_.report.lightsInFile = gltf_.lights.size();
+        const Vec3 centre = bounds.empty() ? Vec3() : bounds.center();
+        const Real radius = bounds.empty() ? Real(1) : std::max(length(bounds.diagonal()) / 2, Real(1e-6));
+        for (const Placed& p : lights_) {
+            const tinygltf::Light& gl = gltf_.lights[std::size_t(p.index)];
+            const std::string what = "light " + std::to_string(p.index) + " (" + gl.type + ")";
+            Light light;
+            light.position = p.world.point(Vec3());
+            if (gl.type == "directional") {
+                light.position = centre - normalize(p.world.vector(Vec3(0, 0, -1))) * (100 * radius);
+                out_.report.notes.push_back(what + " approximated by a point light 100 scene radii away");
+            } else if (gl.type == "spot") {
+                out_.report.notes.push_back(what + " approximated by a point light (cone ignored)");
+            } else if (gl.type != "point") {
+                fail(what + " has an unknown type");
+            }
+            const Color c = gl.color.empty() ? Color(1, 1, 1) : color(gl.color, what + " color");
+            light.color = c * float(lightIntensity(gl, p.index));
+            out_.scene.lights.push_back(light);
+        }
+        scaleLightsToUnitPeak(out_.scene.lights);
+    }
+
+    double lightIntensity(const tinygltf::Light& light, int index) const {
+        const double i = finiteNumber(light.intensity, file_, "light " + std::to_string(index) + " intensity");
+        if (i < 0) fail("light " + std::to_string(index) + " has a negative intensity");
+        return i;
+    }
+
+    void noteTextures() {
+        if (texturedMaterials_)
+            out_.report.notes.push_back(
+                std::to_string(texturedMaterials_) +
+                " material(s) have a base colour texture, which is ignored (the factor is kept)");
+    }
+
+    const tinygltf::Model& gltf_;
+    const std::string& file_;
+    const ImportOptions& options_;
+    ImportResult& out_;
+    GltfAccessorReader reader_;
+    std::map<std::pair<int, int>, ConvertedMesh> models_;
+    std::map<int, std::uint32_t> materials_;
+    std::set<int> meshesPlaced_;
+    std::vector<Placed> cameras_;
+    std::vector<Placed> lights_;
+    NameTable modelNames_;
+    NameTable materialNames_;
+    std::size_t texturedMaterials_ = 0;
+};
+
+}  // namespace
+
+bool hasGlbMagic(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    return in.read(magic, 4) && std::string(magic, 4) == "glTF";
+}
+
+ImportResult importGltf(const std::string& path, const ImportOptions& options, const Transform& root) {
+    ImportResult result;
+    const tinygltf::Model gltf = loadGltf(path, result.report);
+    GltfSceneBuilder(gltf, path, options, result).build(root);
+    return result;
+}
+
+}  // namespace rt

@@ -1,0 +1,20 @@
+// glTF 2.0 (.gltf with external or embedded buffers, .glb) through tinygltf.
+#pragma once
+
+#include <string>
+
+#include "import/import.h"
+
+namespace rt {
+
+// True when the file starts with the GLB magic "glTF" (a .glb under any name).
+bool hasGlbMagic(const std::string& path);
+
+// The chosen scene's node hierarchy (world = parent * local, TRS or matrix), every triangle
+// primitive (strips and fans unrolled; points and lines skipped and counted), one Model per
+// (mesh, primitive) however many nodes place it, materials through phongFromMetallicRoughness,
+// the chosen perspective camera and the KHR_lights_punctual lights. Camera and light defaults
+// are left to the caller. Throws rt::InputError for anything invalid.
+ImportResult importGltf(const std::string& path, const ImportOptions& options, const Transform& root);
+
+}  // namespace rt

@@ -1,0 +1,40 @@
+#include "import/mesh_data.h"
+
+#include <cctype>
+
+namespace rt {
+
+bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Point3f& c) {
+    // The cross product in double of the float edges: exactly zero only for collinear
+    // or coincident float points, the triangles a ray tracer can never hit.
+    const double e1[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+    const double e2[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    if (n[0] == 0 && n[1] == 0 && n[2] == 0) return false;
+    for (const Point3f* p : {&a, &b, &c})
+        model.triangleVertices.insert(model.triangleVertices.end(), p->begin(), p->end());
+    return true;
+}
+
+Aabb modelBounds(const Model& model) {
+    Aabb box;
+    const std::vector<float>& v = model.triangleVertices;
+    for (std::size_t i = 0; i + 3 <= v.size(); i += 3) box.extend(Vec3(v[i], v[i + 1], v[i + 2]));
+    return box;
+}
+
+std::string NameTable::claim(const std::string& wanted, const std::string& fallback) {
+    std::string base;
+    for (const char ch : wanted) {
+        const bool keep = std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
+        base += keep ? ch : '_';
+    }
+    if (base.empty()) base = fallback;
+    if (base.front() == '.') base.front() = '_';  // no hidden files
+    std::string name = base;
+    for (int suffix = 2; used_.count(name); ++suffix) name = base + "_" + std::to_string(suffix);
+    used_.insert(name);
+    return name;
+}
+
+}  // namespace rt

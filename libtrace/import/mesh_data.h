@@ -1,0 +1,45 @@
+// Small pieces both importers use to fill a Model: float points as the RAW format stores
+// them, triangles appended only when they have an area, and the names of materials and
+// models, which the scene writer uses as identifiers and file names.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "core/aabb.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+using Point3f = std::array<float, 3>;
+
+// Appends triangle (a, b, c) to model.triangleVertices unless its area is zero in float,
+// the precision the model is stored in; returns false when it was dropped. The points
+// must be finite (the importers reject files with NaN or infinite positions).
+bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Point3f& c);
+
+// A converted mesh: its index in Scene::models (none when nothing was left of it) and how
+// many degenerate triangles were dropped from it.
+struct ConvertedMesh {
+    std::optional<std::uint32_t> model;
+    std::size_t dropped = 0;
+};
+
+// Bounds of a model's triangles in its own space (empty for an empty model).
+Aabb modelBounds(const Model& model);
+
+// Hands out names that are unique within one table and safe as XML attribute values and
+// file names: letters, digits, '_', '-' and '.' are kept, anything else becomes '_'.
+// A taken name gets "_2", "_3", ... appended.
+class NameTable {
+public:
+    std::string claim(const std::string& wanted, const std::string& fallback);
+
+private:
+    std::set<std::string> used_;
+};
+
+}  // namespace rt

@@ -1,0 +1,35 @@
+// The thesis camera (thesis 2.1.1: origin, destination, up, horizontal fov) made from the
+// viewpoints files describe, and the camera and light an imported scene gets when its file
+// has none, so that every converted scene renders.
+#pragma once
+
+#include "core/aabb.h"
+#include "import/import.h"
+
+namespace rt {
+
+// World bounds of the instanced models: each model's box, transformed corner by corner
+// (a little loose under rotation, which framing does not mind).
+Aabb sceneBounds(const Scene& scene);
+
+// rt's fov is horizontal; files usually give the vertical one.
+double horizontalFov(double verticalFovRadians, double aspect);
+
+// The camera at `eye` looking along `forward` with the given up vector and horizontal fov.
+// The destination lies along the view at the distance of the scene's centre (1 unit when
+// that is behind the camera or there is no geometry), which only matters to readers of the XML.
+Camera viewCamera(const Vec3& eye, const Vec3& forward, const Vec3& up, double horizontalFovRadians,
+                  const Aabb& bounds);
+
+// rt lights have no distance falloff (thesis 2.1.3), so photometric intensities cannot be
+// kept, only their ratios: when any light exceeds 1 in a channel, all lights are scaled
+// together so that the brightest channel is 1.
+void scaleLightsToUnitPeak(std::vector<Light>& lights);
+
+// If the importer chose no camera (report.cameraUsed empty), a camera with a 50 degree
+// horizontal fov looking at the bounds' centre from the front, right and above, far enough
+// for the bounding sphere to fit the narrower side of an image of `aspect`. If the scene
+// has no light, a white point light at the camera. Each is recorded in the report's notes.
+void addMissingCameraAndLight(ImportResult& result, double aspect);
+
+}  // namespace rt

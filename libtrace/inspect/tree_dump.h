@@ -1,0 +1,19 @@
+// The structure of a tree, down to a chosen depth, for people (Graphviz DOT: render it with
+// `dot -Tsvg`) and for scripts (nested JSON). Inner nodes show their split plane, leaves
+// their primitive count; an inner node at the cut depth is marked as cut off.
+#pragma once
+
+#include <ostream>
+
+#include "accel/accelerator.h"
+#include "inspect/tree_cut.h"
+
+namespace rt {
+
+void writeTreeDot(std::ostream& out, const Accelerator& accel, const TreeCut& cut);
+
+// {"tree": name, "root": {"id", "depth", "bounds": {"lo", "hi"}, then either "leaf": true and
+// "primitives", or "axis", "split" and "children" (or "cutOff": true at the cut depth)}}.
+void writeTreeJson(std::ostream& out, const Accelerator& accel, const TreeCut& cut);
+
+}  // namespace rt

@@ -1,0 +1,43 @@
+// What rt-inspect reports about each tree: its build statistics (AccelStats), optionally the
+// work done for a picture's rays and the depth histogram; as an aligned table with one column
+// per tree, as the thesis's Table 4.3 (BSP against KD), or as one JSON document.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "accel/settings.h"
+#include "inspect/depth_histogram.h"
+#include "inspect/ray_statistics.h"
+
+namespace rt {
+
+struct TreeReport {
+    AccelSettings settings;  // the kind of tree and the parameters it was built with
+    AccelStats stats;
+    std::uint32_t scenePrimitives = 0;  // for bytes per primitive
+    std::optional<RayStatistics> rays;
+    std::optional<std::vector<DepthLevel>> depths;
+};
+
+struct SceneSummary {
+    std::string file;
+    std::uint32_t triangles = 0;
+    std::uint32_t spheres = 0;
+    std::uint32_t lights = 0;
+};
+
+// Every statistic in rows, one column per tree.
+void printTreeTable(std::ostream& out, const std::vector<TreeReport>& trees);
+
+// Thesis Table 4.3 for one scene: nodes and intersection tests per ray, BSP against KD.
+// Both reports must have ray statistics.
+void printThesisTable43(std::ostream& out, const std::string& sceneName, const TreeReport& bsp, const TreeReport& kd);
+
+// {"scene": {...}, "rays": {width, height, shadows, reflectionDepth} (when traced), "trees": [...]}.
+void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RayOptions>& rayOptions,
+                     const std::vector<TreeReport>& trees);
+
+}  // namespace rt

@@ -1,0 +1,51 @@
+// The rendered picture: linear, scene-referred float RGB (thesis 3.4.4's outputs
+// convert it only when they write). A render may cover only a window of the full
+// image (render farms, --region); the framebuffer then holds just that window, as an
+// EXR data window sits inside its display window.
+#pragma once
+
+#include <vector>
+
+#include "core/color.h"
+
+namespace rt {
+
+// Pixels [x0, x1) x [y0, y1) of an image: the end coordinates are exclusive, as in
+// OpenImageIO's ROI, so neighbouring tiles share their edge value (0,0,32,24 and 32,0,64,24).
+struct PixelWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    bool inside(int w, int h) const { return x0 >= 0 && y0 >= 0 && x1 <= w && y1 <= h && !empty(); }
+    bool operator==(const PixelWindow&) const = default;
+};
+
+class Framebuffer {
+public:
+    Framebuffer(int fullWidth, int fullHeight, const PixelWindow& window)
+        : fullWidth_(fullWidth), fullHeight_(fullHeight), window_(window),
+          pixels_(std::size_t(window.width()) * std::size_t(window.height())) {}
+
+    int fullWidth() const { return fullWidth_; }
+    int fullHeight() const { return fullHeight_; }
+    const PixelWindow& window() const { return window_; }
+    bool isFullImage() const { return window_ == PixelWindow{0, 0, fullWidth_, fullHeight_}; }
+
+    // Pixel (x, y) in full-image coordinates; it must lie inside the window.
+    Color& at(int x, int y) { return pixels_[index(x, y)]; }
+    const Color& at(int x, int y) const { return pixels_[index(x, y)]; }
+    // The window's pixels, row by row from its top-left corner.
+    const std::vector<Color>& pixels() const { return pixels_; }
+
+private:
+    std::size_t index(int x, int y) const {
+        return std::size_t(y - window_.y0) * std::size_t(window_.width()) + std::size_t(x - window_.x0);
+    }
+    int fullWidth_, fullHeight_;
+    PixelWindow window_;
+    std::vector<Color> pixels_;
+};
+
+}  // namespace rt

@@ -1,0 +1,38 @@
+#include "render/render_settings.h"
+
+#include <string>
+
+#include "core/error.h"
+
+namespace rt {
+
+namespace {
+// Large enough for any real image; the framebuffer (12 bytes a pixel) stays below 3.3 GB.
+constexpr int kMaxImageSide = 65536;
+constexpr long long kMaxPixels = 1ll << 28;
+constexpr int kMaxSamples = 1 << 20;
+}  // namespace
+
+void validate(const RenderSettings& s) {
+    if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
+        throw InputError("image size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                         " is outside 1-" + std::to_string(kMaxImageSide));
+    if (const PixelWindow w = s.window(); (long long)w.width() * w.height() > kMaxPixels)
+        throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
+                         " pixels at once needs more than 3 GB; render it in regions (--region)");
+    if (s.maxDepth < 1 || s.maxDepth > 10)
+        throw InputError("recursion depth " + std::to_string(s.maxDepth) + " is outside 1-10");
+    if (s.pixelSamples < 1 || s.pixelSamples > kMaxSamples)
+        throw InputError("samples per pixel must be 1-" + std::to_string(kMaxSamples));
+    if (s.distributedSamples < 1 || s.distributedSamples > kMaxSamples)
+        throw InputError("distributed ray tracing samples must be 1-" + std::to_string(kMaxSamples));
+    if (s.threads < 0) throw InputError("the thread count must not be negative");
+    if (s.region && !s.region->inside(s.width, s.height)) {
+        const PixelWindow& r = *s.region;
+        throw InputError("region " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) +
+                         "," + std::to_string(r.y1) + " is empty or outside the " + std::to_string(s.width) + "x" +
+                         std::to_string(s.height) + " image");
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,31 @@
+// What rt-render's rendering options control (thesis appendix B), with their defaults.
+#pragma once
+
+#include <optional>
+
+#include "render/framebuffer.h"
+
+namespace rt {
+
+struct RenderSettings {
+    int width = 800;   // -x
+    int height = 600;  // -y
+    std::optional<PixelWindow> region;  // --region: render only this window
+    int maxDepth = 5;      // -d: reflection rays that may follow one camera ray (1-10)
+    bool shadows = false;  // -s: a shadow ray to each light (the thesis's default is off)
+    // -S: camera rays per pixel on a jittered grid (thesis 2.6.1); 1 shoots one ray through the centre.
+    int pixelSamples = 1;
+    // -D s|d|b (thesis 2.6.2): soft shadows over each light's size, glossy reflections over
+    // each material's spread, with -r rays per bundle.
+    bool softShadows = false;
+    bool glossyReflections = false;
+    int distributedSamples = 128;  // -r
+    int threads = 0;               // --threads; 0 lets OpenMP use every core
+
+    PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
+};
+
+// Throws rt::InputError when a setting is out of range (sizes, depth 1-10, samples, region).
+void validate(const RenderSettings& settings);
+
+}  // namespace rt

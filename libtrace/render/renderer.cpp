@@ -1,0 +1,63 @@
+#include "render/renderer.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "render/tracer.h"
+
+namespace rt {
+
+namespace {
+
+// One thread's counters on a cache line of its own, so that counting shares nothing.
+struct alignas(64) ThreadCounters {
+    RenderCounters counters;
+};
+
+std::vector<PixelWindow> blocksOf(const PixelWindow& w) {
+    std::vector<PixelWindow> blocks;
+    for (int y = w.y0; y < w.y1; y += kBlockSize)
+        for (int x = w.x0; x < w.x1; x += kBlockSize)
+            blocks.push_back({x, y, std::min(x + kBlockSize, w.x1), std::min(y + kBlockSize, w.y1)});
+    return blocks;
+}
+
+}  // namespace
+
+Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
+                   const BlockProgress& progress) {
+    validate(settings);
+    const Tracer tracer(scene, accel, settings);
+    Framebuffer image(settings.width, settings.height, settings.window());
+    const std::vector<PixelWindow> blocks = blocksOf(settings.window());
+    const int total = int(blocks.size());
+    const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
+    std::vector<ThreadCounters> perThread(static_cast<std::size_t>(threads));
+    int done = 0;
+
+    const auto start = std::chrono::steady_clock::now();
+#pragma omp parallel for num_threads(threads) schedule(dynamic)
+    for (int i = 0; i < total; ++i) {
+        const PixelWindow& b = blocks[std::size_t(i)];
+        RenderCounters& counters = perThread[std::size_t(omp_get_thread_num())].counters;
+        for (int y = b.y0; y < b.y1; ++y)
+            for (int x = b.x0; x < b.x1; ++x) image.at(x, y) = tracer.pixel(x, y, counters);
+        if (progress) {
+#pragma omp critical(rt_render_progress)
+            progress(++done, total);
+        }
+    }
+    stats.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    stats.counters = {};
+    for (const ThreadCounters& t : perThread) stats.counters += t.counters;
+    stats.objects = scene.primitives.size();
+    stats.lights = scene.lights.size();
+    stats.threads = threads;
+    return image;
+}
+
+}  // namespace rt

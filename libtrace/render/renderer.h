@@ -1,0 +1,28 @@
+// Renders a whole image, or a window of it, in 32x32 blocks spread over all cores by
+// OpenMP's dynamic schedule (thesis 3.3.4 and 3.5): blocks keep neighbouring rays on
+// the same data, and dynamic scheduling gives a free thread the next unfinished block.
+#pragma once
+
+#include <functional>
+
+#include "accel/accelerator.h"
+#include "render/framebuffer.h"
+#include "render/render_settings.h"
+#include "render/render_stats.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+constexpr int kBlockSize = 32;  // the thesis found 32x32 best; larger blocks gained nothing
+
+// Called after each finished block with the blocks done so far and the total (the
+// thesis's ProgressUpdater). Calls never overlap, so the callback need not be thread-safe.
+using BlockProgress = std::function<void(int done, int total)>;
+
+// Renders settings.window() of the scene. Fills the render part of `stats` (render time,
+// rays, tests, objects, lights, threads); preprocessing time and tree nodes are the caller's.
+// Throws rt::InputError for bad settings or a degenerate camera.
+Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
+                   const BlockProgress& progress = {});
+
+}  // namespace rt

@@ -1,0 +1,132 @@
+#include "render/tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/phong.h"
+
+namespace rt {
+
+namespace {
+
+// Secondary rays start this far off the surface, relative to the scene's size: the error
+// of a computed hit point grows with the magnitude of its coordinates, so a fixed offset
+// is too small for a city and too large for a teapot.
+constexpr Real kRelativeEpsilon = sizeof(Real) == sizeof(float) ? Real(1e-4) : Real(1e-7);
+
+Real sceneEpsilon(const Primitives& prims) {
+    const Aabb box = prims.bounds();
+    if (box.empty()) return kRelativeEpsilon;
+    Real scale = std::max(length(box.diagonal()), Real(1e-3));
+    for (int a = 0; a < 3; ++a) scale = std::max({scale, std::abs(box.lo[a]), std::abs(box.hi[a])});
+    return kRelativeEpsilon * scale;
+}
+
+const Material& materialOf(const Scene& scene, std::uint32_t prim) {
+    static const Material fallback;  // scenes built in code may give no materials
+    const std::uint32_t id = scene.primitives.material(prim);
+    return id < scene.materials.size() ? scene.materials[id] : fallback;
+}
+
+// A point on the disc of radius r around c facing along `axis` (unit): the light as the
+// shading point sees it. Uniform in area: radius r sqrt(u1), angle 2 pi u2.
+Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
+    Vec3 t, b;
+    orthonormalBasis(axis, t, b);
+    const Real radius = r * std::sqrt(rng.uniform());
+    const Real angle = 2 * kPi * rng.uniform();
+    return c + t * (radius * std::cos(angle)) + b * (radius * std::sin(angle));
+}
+
+}  // namespace
+
+Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings)
+    : scene_(scene), accel_(accel), settings_(settings), camera_(scene.camera, settings.width, settings.height),
+      epsilon_(sceneEpsilon(scene.primitives)) {
+    for (const Light& light : scene.lights) ambientLight_ += light.color;
+}
+
+Color Tracer::pixel(int x, int y, RenderCounters& counters) const {
+    const int n = settings_.pixelSamples;
+    Color sum;
+    for (int i = 0; i < n; ++i) {
+        SampleRng rng{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
+        Real sx = Real(0.5), sy = Real(0.5);
+        if (n > 1) jitteredGridSample(i, n, rng, sx, sy);
+        ++counters.primaryRays;
+        sum += trace(camera_.at(Real(x) + sx, Real(y) + sy), 0, false, rng, counters);
+    }
+    return n == 1 ? sum : sum * (1.0f / float(n));
+}
+
+Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const {
+    Hit hit;
+    if (!accel_.intersect(ray, kInfinity, hit, counters.accel)) return scene_.background;
+    return shade(ray, hit, depth, inBundle, rng, counters);
+}
+
+Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
+                    RenderCounters& counters) const {
+    const Vec3 p = ray.at(hit.t);
+    Vec3 n = scene_.primitives.normal(hit.prim, p);
+    if (dot(n, ray.direction) > 0) n = -n;  // surfaces are two-sided: light the side the ray sees
+    const Material& m = materialOf(scene_, hit.prim);
+    const Vec3 toViewer = -ray.direction;
+
+    Color c = phongAmbient(m, ambientLight_);
+    for (const Light& light : scene_.lights) {
+        const Vec3 toLight = normalize(light.position - p);
+        if (dot(n, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
+        const float seen = visibility(p, n, light, inBundle, rng, counters);
+        if (seen > 0) c += phongLight(m, n, toLight, toViewer, light.color) * seen;
+    }
+    // Thesis 2.1, step 6: the reflected intensity is added to the local one.
+    if (m.reflection > 0 && depth < settings_.maxDepth)
+        c += reflection(p, n, ray.direction, m, depth, inBundle, rng, counters) * m.reflection;
+    return c;
+}
+
+float Tracer::visibility(const Vec3& p, const Vec3& n, const Light& light, bool inBundle, SampleRng& rng,
+                         RenderCounters& counters) const {
+    if (!settings_.shadows) return 1;
+    const Vec3 origin = p + n * epsilon_;
+    const bool area = settings_.softShadows && light.size > 0;
+    const int samples = area && !inBundle ? settings_.distributedSamples : 1;
+    const Vec3 axis = normalize(light.position - origin);
+    int visible = 0;
+    for (int s = 0; s < samples; ++s) {
+        const Vec3 target = area ? pointOnDisc(light.position, axis, light.size, rng) : light.position;
+        const Vec3 d = target - origin;
+        const Real distance = length(d);
+        ++counters.shadowRays;
+        if (!accel_.occluded({origin, d / distance}, distance, counters.accel)) ++visible;
+    }
+    return samples == 1 ? float(visible) : float(visible) / float(samples);
+}
+
+Color Tracer::reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Material& m, int depth,
+                         bool inBundle, SampleRng& rng, RenderCounters& counters) const {
+    const Vec3 origin = p + n * epsilon_;
+    const Vec3 r = mirror(dir, n);
+    if (!settings_.glossyReflections || !(m.spread > 0)) {
+        ++counters.reflectionRays;
+        return trace({origin, r}, depth + 1, inBundle, rng, counters);
+    }
+    // Glossy: directions around r, offset in the plane across r by a 2-D normal
+    // distribution with sigma = spread (about the angle in radians, for small spreads).
+    Vec3 t, b;
+    orthonormalBasis(r, t, b);
+    const int samples = inBundle ? 1 : settings_.distributedSamples;
+    Color sum;
+    for (int s = 0; s < samples; ++s) {
+        Real g1, g2;
+        rng.normalPair(g1, g2);
+        Vec3 d = normalize(r + (t * g1 + b * g2) * Real(m.spread));
+        if (dot(d, n) <= 0) d = mirror(d, n);  // below the surface: fold it back above
+        ++counters.reflectionRays;
+        sum += trace({origin, d}, depth + 1, true, rng, counters);
+    }
+    return samples == 1 ? sum : sum * (1.0f / float(samples));
+}
+
+}  // namespace rt

@@ -1,0 +1,51 @@
+// The Whitted ray tracer of thesis 2.1 and 3.3.4 (the thesis's Raytracer and DistributedRT):
+// the colour of one pixel from camera rays, Phong shading with an ambient term, hard or
+// soft shadows, and mirror or glossy reflections.
+//
+// Distributed ray tracing (thesis 2.6.2) sends bundles of -r rays: shadow rays over a
+// light's disc, reflection rays spread around the mirror direction by a 2-D normal
+// distribution with the material's sigma. A bundle splits a path only once: the rays
+// under a glossy bundle take one sample each, so the cost grows as r, not r^depth.
+#pragma once
+
+#include "accel/accelerator.h"
+#include "render/camera_rays.h"
+#include "render/render_settings.h"
+#include "render/render_stats.h"
+#include "render/sampling.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+class Tracer {
+public:
+    // The scene must be flattened and `accel` built over scene.primitives; both must outlive the tracer.
+    Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings);
+
+    // The linear colour of pixel (x, y): the mean of its camera samples.
+    Color pixel(int x, int y, RenderCounters& counters) const;
+
+    // The colour seen along a ray that has already been reflected `depth` times.
+    Color trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const;
+
+    // How far secondary rays start off a surface: scaled to the scene's size (see the .cpp).
+    Real epsilon() const { return epsilon_; }
+
+private:
+    Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
+                RenderCounters& counters) const;
+    // Fraction of `light` seen from p (1 without shadows); n faces the side p is lit from.
+    float visibility(const Vec3& p, const Vec3& n, const Light& light, bool inBundle, SampleRng& rng,
+                     RenderCounters& counters) const;
+    Color reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Material& m, int depth, bool inBundle,
+                     SampleRng& rng, RenderCounters& counters) const;
+
+    const Scene& scene_;
+    const Accelerator& accel_;
+    RenderSettings settings_;
+    CameraRays camera_;
+    Color ambientLight_;
+    Real epsilon_;
+};
+
+}  // namespace rt

@@ -1,0 +1,155 @@
+#include "scene/xml_reader.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace rt {
+namespace {
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && isSpace(s.front())) s.remove_prefix(1);
+    while (!s.empty() && isSpace(s.back())) s.remove_suffix(1);
+    return s;
+}
+
+bool isListed(std::string_view name, std::initializer_list<std::string_view> list) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+}  // namespace
+
+XmlFile::XmlFile(std::string text, std::string name) : text_(std::move(text)), name_(std::move(name)) {
+    lineStarts_.push_back(0);
+    for (std::size_t i = 0; i < text_.size(); ++i)
+        if (text_[i] == '\n') lineStarts_.push_back(i + 1);
+    // In place (text_ lives as long as the document) and UTF-8 only, so that pugixml's
+    // offsets are offsets into the text as read.
+    const pugi::xml_parse_result result =
+        doc_.load_buffer_inplace(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
+    if (!result)
+        throw inputErrorAt(name_, lineAt(result.offset), std::string("malformed XML: ") + result.description());
+}
+
+int XmlFile::lineAt(std::ptrdiff_t offset) const {
+    const std::size_t at = std::size_t(std::max<std::ptrdiff_t>(offset, 0));
+    const auto next = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), at);
+    return int(next - lineStarts_.begin());
+}
+
+void XmlFile::failAt(pugi::xml_node node, const std::string& message) const {
+    std::ptrdiff_t offset = node.offset_debug();
+    if (node.type() == pugi::node_pcdata) {  // point at the text itself, not the line break before it
+        const std::size_t start = std::string_view(node.value()).find_first_not_of(" \t\r\n");
+        if (start != std::string_view::npos) offset += std::ptrdiff_t(start);
+    }
+    throw inputErrorAt(name_, lineAt(offset), message);
+}
+
+XmlElement::XmlElement(const XmlFile& file, pugi::xml_node node, std::initializer_list<std::string_view> allowed)
+    : file_(&file), node_(node) {
+    for (const pugi::xml_attribute& a : node_.attributes())
+        if (!isListed(a.name(), allowed)) fail("unknown attribute '" + std::string(a.name()) + "' on " + tag());
+}
+
+std::string XmlElement::tag() const {
+    std::string t = "<";
+    t += node_.name();
+    t += '>';
+    return t;
+}
+
+void XmlElement::fail(const std::string& message) const { file_->failAt(node_, message); }
+
+std::string XmlElement::string(const char* attribute) const {
+    std::optional<std::string> s = optionalString(attribute);
+    if (!s) fail(tag() + " needs attribute '" + attribute + "'");
+    return *s;
+}
+
+std::optional<std::string> XmlElement::optionalString(const char* attribute) const {
+    const pugi::xml_attribute a = node_.attribute(attribute);
+    if (!a) return std::nullopt;
+    return std::string(a.value());
+}
+
+Real XmlElement::parseNumber(const char* attribute, std::string_view text) const {
+    std::string_view s = trim(text);
+    if (s.size() > 1 && s.front() == '+') s.remove_prefix(1);  // from_chars takes no '+'
+    Real value = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+    const std::string where = tag() + " attribute '" + attribute + "': '" + std::string(text) + "'";
+    if (s.empty() || ec == std::errc::invalid_argument || end != s.data() + s.size())
+        fail(where + " is not a number");
+    if (ec == std::errc::result_out_of_range) {
+        // Too small is fine (it rounds to zero); too large is not finite.
+        long double wide = HUGE_VALL;  // stays if even long double is out of range
+        std::from_chars(s.data(), s.data() + s.size(), wide);
+        if (std::abs(wide) < 1) return Real(wide);
+        fail(where + " is not a finite number");
+    }
+    if (!std::isfinite(value)) fail(where + " is not a finite number");
+    return value;
+}
+
+Real XmlElement::number(const char* attribute) const {
+    if (!has(attribute)) fail(tag() + " needs attribute '" + attribute + "'");
+    return parseNumber(attribute, node_.attribute(attribute).value());
+}
+
+Real XmlElement::number(const char* attribute, Real fallback) const {
+    return has(attribute) ? number(attribute) : fallback;
+}
+
+std::optional<Real> XmlElement::optionalNumber(const char* attribute) const {
+    if (!has(attribute)) return std::nullopt;
+    return number(attribute);
+}
+
+Real XmlElement::nonNegative(const char* attribute, Real fallback) const {
+    const Real v = number(attribute, fallback);
+    if (v < 0) fail(tag() + " attribute '" + attribute + "' must not be negative");
+    return v;
+}
+
+Real XmlElement::positive(const char* attribute) const {
+    const Real v = number(attribute);
+    if (!(v > 0)) fail(tag() + " attribute '" + attribute + "' must be positive");
+    return v;
+}
+
+std::vector<Real> XmlElement::numbers(const char* attribute, std::size_t count) const {
+    if (!has(attribute)) fail(tag() + " needs attribute '" + attribute + "'");
+    std::vector<Real> values;
+    std::string_view rest = trim(node_.attribute(attribute).value());
+    while (!rest.empty() && values.size() <= count) {
+        const std::size_t end = std::size_t(std::find_if(rest.begin(), rest.end(), isSpace) - rest.begin());
+        values.push_back(parseNumber(attribute, rest.substr(0, end)));
+        rest = trim(rest.substr(end));
+    }
+    if (values.size() != count)
+        fail(tag() + " attribute '" + attribute + "' needs exactly " + std::to_string(count) + " numbers");
+    return values;
+}
+
+Vec3 XmlElement::xyz(Real fallback) const {
+    return {number("x", fallback), number("y", fallback), number("z", fallback)};
+}
+
+Color XmlElement::rgb(float fallback) const {
+    return {float(nonNegative("r", fallback)), float(nonNegative("g", fallback)), float(nonNegative("b", fallback))};
+}
+
+void XmlElement::requireOnlyChildren(std::initializer_list<std::string_view> allowed) const {
+    for (const pugi::xml_node& child : node_.children()) {
+        if (child.type() != pugi::node_element) file_->failAt(child, "unexpected text in " + tag());
+        if (!isListed(child.name(), allowed))
+            file_->failAt(child, "unknown element <" + std::string(child.name()) + "> in " + tag());
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,79 @@
+// Strict reading of XML elements for the scene loader: every error names the file and
+// the line ("scene.xml:12: unknown attribute 'colour' on <material>"). pugixml reports
+// byte offsets only, so XmlFile keeps the text and maps offsets to lines.
+#pragma once
+
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <pugixml.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/color.h"
+#include "core/vec3.h"
+
+namespace rt {
+
+// A parsed XML text and the line each of its bytes is on.
+class XmlFile {
+public:
+    // Parses `text`; throws rt::InputError "name:line: what" for malformed XML.
+    XmlFile(std::string text, std::string name);
+    XmlFile(const XmlFile&) = delete;
+    XmlFile& operator=(const XmlFile&) = delete;
+
+    const pugi::xml_document& document() const { return doc_; }
+    const std::string& name() const { return name_; }
+    int lineAt(std::ptrdiff_t offset) const;  // 1-based
+    // Throws rt::InputError "name:line: message" at the line of `node`.
+    [[noreturn]] void failAt(pugi::xml_node node, const std::string& message) const;
+
+private:
+    std::string text_;
+    std::string name_;
+    std::vector<std::size_t> lineStarts_;
+    pugi::xml_document doc_;
+};
+
+// One element, read strictly: the constructor rejects attributes not in `allowed`, and
+// every accessor throws rt::InputError at the element's line for a missing or bad value.
+class XmlElement {
+public:
+    XmlElement(const XmlFile& file, pugi::xml_node node, std::initializer_list<std::string_view> allowed);
+
+    pugi::xml_node node() const { return node_; }
+    std::string tag() const;  // "<name>", for messages
+        int line() const { return file_->lineAt(node_.offset_debug()); }
+    [[noreturn]] void fail(const std::string& message) const;
+
+    bool has(const char* attribute) const { return bool(node_.attribute(attribute)); }
+    std::string string(const char* attribute) const;  // required
+    std::optional<std::string> optionalString(const char* attribute) const;
+
+    // Finite decimal numbers ("1", "-0.5", "2e3"); NaN and infinities are errors.
+    Real number(const char* attribute) const;  // required
+    Real number(const char* attribute, Real fallback) const;
+    std::optional<Real> optionalNumber(const char* attribute) const;
+    // Like number(), and also an error below zero or (for positive) at zero.
+    Real nonNegative(const char* attribute, Real fallback) const;
+    Real positive(const char* attribute) const;
+    // Whitespace-separated numbers, exactly `count` of them.
+    std::vector<Real> numbers(const char* attribute, std::size_t count) const;
+
+    Vec3 xyz(Real fallback) const;         // attributes x, y, z
+    Color rgb(float fallback) const;       // attributes r, g, b, each >= 0
+
+    // Child elements other than those named in `allowed`, and any text, are errors.
+    void requireOnlyChildren(std::initializer_list<std::string_view> allowed) const;
+    void requireNoChildren() const { requireOnlyChildren({}); }
+
+private:
+    Real parseNumber(const char* attribute, std::string_view text) const;
+
+    const XmlFile* file_;
+    pugi::xml_node node_;
+};
+
+}  // namespace rt

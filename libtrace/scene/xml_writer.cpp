@@ -1,0 +1,223 @@
+#include "scene/xml_writer.h"
+
+#include <cctype>
+#include <charconv>
+#include <filesystem>
+#include <pugixml.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "scene/base64.h"
+#include "scene/raw_model.h"
+
+namespace rt {
+namespace {
+
+// The shortest text that reads back as the same number (std::to_chars without a format).
+template <typename T>
+std::string shortest(T value) {
+    char buffer[64];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+    return {buffer, end};
+}
+
+template <typename T>
+void setNumber(pugi::xml_node node, const char* name, T value) {
+    node.append_attribute(name).set_value(shortest(value).c_str());
+}
+
+void setXyz(pugi::xml_node node, const Vec3& p) {
+    setNumber(node, "x", p.x);
+    setNumber(node, "y", p.y);
+    setNumber(node, "z", p.z);
+}
+
+void setRgb(pugi::xml_node node, const Color& c) {
+    setNumber(node, "r", c.r);
+    setNumber(node, "g", c.g);
+    setNumber(node, "b", c.b);
+}
+
+// Names as written: non-empty and unique (case-insensitively when `caseless`, for file
+// names on case-insensitive file systems), so that every reference finds its target.
+std::vector<std::string> uniqueNames(std::vector<std::string> names, const std::string& fallback, bool caseless) {
+    std::set<std::string> taken;
+    const auto key = [&](std::string s) {
+        if (caseless)
+            for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    for (std::string& name : names) {
+        if (name.empty()) name = fallback;
+        const std::string base = name;
+        for (int n = 2; !taken.insert(key(name)).second; ++n) name = base + "-" + std::to_string(n);
+    }
+    return names;
+}
+
+// A model name as a file name: letters, digits, '-', '_' and '.' (not leading) are kept.
+std::string fileNameFor(const std::string& name) {
+    std::string s = name;
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+    if (!s.empty() && s.front() == '.') s.front() = '_';
+    return s;
+}
+
+class SceneXmlWriter {
+public:
+    SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles);
+    void build(pugi::xml_document& doc) const;
+
+private:
+    void addCamera(pugi::xml_node parent) const;
+    void addMaterials(pugi::xml_node parent) const;
+    void addModels(pugi::xml_node parent) const;
+    void addObjects(pugi::xml_node parent) const;
+    void addLights(pugi::xml_node parent) const;
+    void setMaterial(pugi::xml_node node, std::uint32_t material) const {
+        node.append_attribute("material").set_value(materialNames_.at(material).c_str());
+    }
+
+    const Scene& scene_;
+    std::vector<std::string> modelFiles_;  // relative references, or empty for inline data
+    std::vector<std::string> materialNames_;
+    std::vector<std::string> modelNames_;
+};
+
+template <typename Named>
+std::vector<std::string> namesOf(const std::vector<Named>& items) {
+    std::vector<std::string> names;
+    for (const Named& item : items) names.push_back(item.name);
+    return names;
+}
+
+SceneXmlWriter::SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles)
+    : scene_(scene),
+      modelFiles_(std::move(modelFiles)),
+      materialNames_(uniqueNames(namesOf(scene.materials), "material", false)),
+      modelNames_(uniqueNames(namesOf(scene.models), "model", false)) {}
+
+void SceneXmlWriter::build(pugi::xml_document& doc) const {
+    pugi::xml_node decl = doc.append_child(pugi::node_declaration);
+    decl.append_attribute("version").set_value("1.0");
+    pugi::xml_node root = doc.append_child("scene");
+    setRgb(root.append_child("background"), scene_.background);
+    addCamera(root);
+    if (!scene_.materials.empty()) addMaterials(root.append_child("materials"));
+    if (!scene_.models.empty()) addModels(root.append_child("models"));
+    if (scene_.looseObjects.size() > 0 || !scene_.instances.empty()) addObjects(root.append_child("objects"));
+    if (!scene_.lights.empty()) addLights(root.append_child("lights"));
+}
+
+void SceneXmlWriter::addCamera(pugi::xml_node parent) const {
+    const Camera& c = scene_.camera;
+    pugi::xml_node camera = parent.append_child("camera");
+    if (c.fovDegrees) setNumber(camera, "fov", *c.fovDegrees);
+    if (c.focalDistance) setNumber(camera, "f", *c.focalDistance);
+    setNumber(camera, "zoom", c.zoom);
+    setXyz(camera.append_child("origin"), c.origin);
+    setXyz(camera.append_child("destination"), c.destination);
+    setXyz(camera.append_child("up"), c.up);
+}
+
+void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
+    for (std::size_t i = 0; i < scene_.materials.size(); ++i) {
+        const Material& m = scene_.materials[i];
+        pugi::xml_node node = parent.append_child("material");
+        node.append_attribute("name").set_value(materialNames_[i].c_str());
+        setRgb(node, m.color);
+        setNumber(node, "ambient", m.ambient);
+        setNumber(node, "diffuse", m.diffuse);
+        setNumber(node, "specular", m.specular);
+        setNumber(node, "shininess", m.shininess);
+        setNumber(node, "reflection", m.reflection);
+        setNumber(node, "spread", m.spread);
+    }
+}
+
+void SceneXmlWriter::addModels(pugi::xml_node parent) const {
+    for (std::size_t i = 0; i < scene_.models.size(); ++i) {
+        pugi::xml_node node = parent.append_child("model");
+        node.append_attribute("name").set_value(modelNames_[i].c_str());
+        if (!modelFiles_[i].empty()) node.append_attribute("file").set_value(modelFiles_[i].c_str());
+        node.append_attribute("type").set_value("raw");
+        if (!modelFiles_[i].empty()) continue;
+        node.append_attribute("encoding").set_value("base64");
+        std::ostringstream raw;
+        writeRaw(raw, scene_.models[i]);
+        const std::string bytes = raw.str();
+        const std::string text = encodeBase64({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, 76);
+        node.append_child(pugi::node_pcdata).set_value(("\n" + text + "\n").c_str());
+    }
+}
+
+void SceneXmlWriter::addObjects(pugi::xml_node parent) const {
+    const Primitives& loose = scene_.looseObjects;
+    for (std::uint32_t id = 0; id < loose.size(); ++id) {
+        if (loose.isSphere(id)) {
+            pugi::xml_node node = parent.append_child("sphere");
+            setXyz(node, loose.sphere(id).center);
+            setNumber(node, "r", loose.sphere(id).radius);
+            setMaterial(node, loose.material(id));
+            continue;
+        }
+        pugi::xml_node node = parent.append_child("triangle");
+        setMaterial(node, loose.material(id));
+        const Triangle& t = loose.triangle(id);
+        for (const Vec3& p : {t.p0, t.p1, t.p2}) setXyz(node.append_child("vertex"), p);
+    }
+    for (const Instance& inst : scene_.instances) {
+        pugi::xml_node at = parent;
+        if (!inst.transform.isIdentity()) {
+            std::string m;
+            for (int row = 0; row < 3; ++row)
+                for (int col = 0; col < 4; ++col) {
+                    if (!m.empty()) m += ' ';
+                    m += shortest(inst.transform.matrix()[row][col]);
+                }
+            at = parent.append_child("matrix");
+            at.append_attribute("m").set_value(m.c_str());
+        }
+        pugi::xml_node node = at.append_child("model");
+        node.append_attribute("name").set_value(modelNames_.at(inst.model).c_str());
+        setMaterial(node, inst.material);
+    }
+}
+
+void SceneXmlWriter::addLights(pugi::xml_node parent) const {
+    for (const Light& light : scene_.lights) {
+        pugi::xml_node node = parent.append_child("light");
+        setXyz(node, light.position);
+        setRgb(node, light.color);
+        setNumber(node, "size", light.size);
+    }
+}
+
+}  // namespace
+
+std::string modelFolderFor(const std::string& xmlPath) {
+    const std::filesystem::path p(xmlPath);
+    return p.has_extension() ? std::filesystem::path(p).replace_extension().string() : xmlPath + ".models";
+}
+
+void saveSceneXml(const Scene& scene, const std::string& path) {
+    std::vector<std::string> modelFiles(scene.models.size());
+    if (path != "-" && !scene.models.empty()) {
+        const std::filesystem::path folder = modelFolderFor(path);
+        std::filesystem::create_directories(folder);
+        std::vector<std::string> files = namesOf(scene.models);
+        for (std::string& name : files) name = fileNameFor(name);
+        files = uniqueNames(std::move(files), "model", true);
+        for (std::size_t i = 0; i < scene.models.size(); ++i) {
+            writeRawFile((folder / (files[i] + ".raw")).string(), scene.models[i]);
+            modelFiles[i] = (folder.filename() / (files[i] + ".raw")).generic_string();
+        }
+    }
+    pugi::xml_document doc;
+    SceneXmlWriter(scene, std::move(modelFiles)).build(doc);
+    writeFileAtomically(path, [&](std::ostream& out) { doc.save(out, "  "); });
+}
+
+}  // namespace rt

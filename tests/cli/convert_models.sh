@@ -1,0 +1,65 @@
+# Every model under shared/models/{gltf,glb,obj,3ds} converts: exit 0, a scene.xml, one RAW
+# file per model (the --json "models"), whose triangle counts (RAW header, appendix D) add up
+# to "modelTriangles"; instancing writes a mesh once (SharedMesh: 1 RAW for 2 instances,
+# 2CylinderEngine: 34 RAW for 115). -o - writes one XML with every model inline, and nothing else.
+source "$(dirname "$0")/common.bash"
+MODELS="$RT_SHARED_DIR/models"
+
+json_field() { sed -n "s/.*\"$1\": \([0-9]*\).*/\1/p" "$2"; }
+
+# Sum of the uint32 counts at byte 6 of the RAW files in a folder.
+raw_triangles() {
+    local total=0 f n
+    for f in "$1"/*.raw; do
+        [ "$(head -c 6 "$f")" = "raw3dT" ] || fail "$f: not a triangle RAW file"
+        n=$(od -An -tu4 -j6 -N4 "$f" | tr -d ' ')
+        [ "$(stat -c %s "$f")" = $((10 + 36 * n)) ] || fail "$f: size does not match its count $n"
+        total=$((total + n))
+    done
+    echo "$total"
+}
+
+count=0
+while IFS= read -r -d '' model; do
+    rel=${model#"$MODELS"/}
+    out="$WORK/$count"
+    mkdir -p "$out"
+    expect_exit 0 "$RT_CONVERT" "$model" -o "$out/scene.xml" --json
+    cp "$WORK/stdout" "$out/summary.json"
+    [ -s "$out/scene.xml" ] || fail "$rel: no scene.xml"
+    models=$(json_field models "$out/summary.json")
+    [ "$(ls "$out/scene" | wc -l)" = "$models" ] || fail "$rel: $(ls "$out/scene" | wc -l) RAW files for $models models"
+    [ "$(raw_triangles "$out/scene")" = "$(json_field modelTriangles "$out/summary.json")" ] ||
+        fail "$rel: RAW triangles differ from the summary"
+    grep -q "^rt-convert: .* -> $out/scene.xml" "$WORK/stderr" || fail "$rel: no summary on stderr"
+    count=$((count + 1))
+done < <(find "$MODELS/gltf" "$MODELS/glb" "$MODELS/obj" "$MODELS/3ds" -type f \
+    \( -iname '*.gltf' -o -iname '*.glb' -o -iname '*.obj' -o -iname '*.3ds' -o -name testFormatDetection \) -print0 | sort -z)
+[ "$count" = 36 ] || fail "converted $count models, expected 36"
+
+# Instancing: one RAW per distinct mesh, however often it is placed.
+expect_exit 0 "$RT_CONVERT" "$MODELS/gltf/SharedMesh/02_shared_mesh.gltf" -o "$WORK/shared.xml" --json
+[ "$(ls "$WORK/shared" | wc -l)" = 1 ] || fail "SharedMesh: $(ls "$WORK/shared" | wc -l) RAW files"
+[ "$(json_field instances "$WORK/stdout")" = 2 ] || fail "SharedMesh: not 2 instances"
+[ "$(grep -c '<model name=' "$WORK/shared.xml")" = 3 ] || fail "SharedMesh: 1 model declared and placed twice expected"
+expect_exit 0 "$RT_CONVERT" "$MODELS/glb/2CylinderEngine/2CylinderEngine.glb" -o "$WORK/engine.xml" --json
+[ "$(ls "$WORK/engine" | wc -l)" = 34 ] || fail "2CylinderEngine: $(ls "$WORK/engine" | wc -l) RAW files"
+[ "$(json_field instances "$WORK/stdout")" = 115 ] || fail "2CylinderEngine: not 115 instances"
+
+# -o -: the scene on stdout with inline models, no files, the summary on stderr.
+cd "$WORK" && mkdir inline && cd inline
+expect_exit 0 "$RT_CONVERT" "$MODELS/gltf/Duck/Duck.gltf" -o -
+head -1 "$WORK/stdout" | grep -q '^<?xml' || fail "-o - did not write XML first"
+grep -q '<model name="[^"]*" type="raw" encoding="base64">' "$WORK/stdout" || fail "-o - has no inline model"
+[ -z "$(ls -A .)" ] || fail "-o - wrote files: $(ls -A .)"
+grep -q 'triangles  4212 in the models' "$WORK/stderr" || fail "-o -: no summary on stderr"
+
+# --json cannot share stdout with the scene; bad options exit 2.
+expect_exit 2 "$RT_CONVERT" "$MODELS/gltf/Duck/Duck.gltf" -o - --json
+expect_exit 2 "$RT_CONVERT" "$MODELS/gltf/Duck/Duck.gltf" --up-axis x
+expect_exit 2 "$RT_CONVERT" "$MODELS/gltf/Duck/Duck.gltf" --scale 0
+expect_exit 2 "$RT_CONVERT" "$MODELS/gltf/Duck/Duck.gltf" --scene 3
+expect_exit 2 "$RT_CONVERT" "$MODELS/gltf/Cameras/Cameras.gltf" --camera 1
+expect_exit 2 "$RT_CONVERT" "$WORK/absent.gltf" -o "$WORK/absent.xml"
+[ ! -e "$WORK/absent.xml" ] && [ ! -e "$WORK/absent" ] || fail "a failed conversion left output"
+echo "convert_models: $count models ok"

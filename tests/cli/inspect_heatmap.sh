@@ -1,0 +1,31 @@
+# rt-inspect --heatmap: a PNG of the picture plus its colour bar, hottest where the geometry
+# is densest. Viridis's green channel rises monotonically with the value, so it stands in
+# for the work in the comparisons below.
+source "$(dirname "$0")/common.bash"
+source "$(dirname "$0")/inspect_scenes.bash"
+
+# green STAT FILE X Y W H: the Min, Max or Avg of the green values (0-1) in a window.
+green() {
+    oiiotool "$2" --cut "${5}x${6}+${3}+${4}" --printstats 2>/dev/null | awk -v s="$1" '$2 == s ":" {print $4}'
+}
+
+for tree in kd bsp; do
+    expect_exit 0 "$RT_INSPECT" --tree $tree --heatmap "$WORK/heat.png" -x 120 -y 90 "$WORK/dense_left.xml"
+    info=$(iinfo "$WORK/heat.png") || fail "iinfo cannot read the heat map"
+    echo "$info" | grep -q "120 x *1[0-9][0-9], 3 channel, uint8 png" || fail "unexpected heat map: $info"
+    # The hottest pixel is in the dense cluster, on the left of the picture.
+    left=$(green Max "$WORK/heat.png" 0 0 60 90)
+    right=$(green Max "$WORK/heat.png" 60 0 60 90)
+    awk -v l="$left" -v r="$right" 'BEGIN { exit !(l > 0.8 && r < l - 0.2) }' \
+        || fail "$tree: the dense cluster (left, $left) should be hotter than the sparse side ($right)"
+    # The strip under the picture holds the colour bar: dark on the left end, bright on the right.
+    low=$(green Avg "$WORK/heat.png" 10 95 4 4)
+    high=$(green Avg "$WORK/heat.png" 106 95 4 4)
+    awk -v a="$low" -v b="$high" 'BEGIN { exit !(b > a + 0.5) }' || fail "$tree: no colour bar ($low to $high)"
+done
+
+# Several trees: one picture each, on one shared scale.
+expect_exit 0 "$RT_INSPECT" --tree all --heatmap "$WORK/pair.png" -x 64 -y 48 --heatmap-scale log "$WORK/dense_left.xml"
+[ -s "$WORK/pair-bsp.png" ] && [ -s "$WORK/pair-kd.png" ] || fail "--tree all should write pair-bsp.png and pair-kd.png"
+[ ! -e "$WORK/pair.png" ] || fail "pair.png should not exist"
+echo "inspect_heatmap: ok"

@@ -1,0 +1,71 @@
+# rt-inspect statistics: the table, --json, --rays and the depth histogram, on scenes whose
+# trees are known; the scene from a file and from standard input.
+source "$(dirname "$0")/common.bash"
+source "$(dirname "$0")/inspect_scenes.bash"
+
+
+# One sphere: a single leaf holding it, in every structure.
+for tree in naive bsp kd; do
+    expect_exit 0 "$RT_INSPECT" --tree $tree --json "$WORK/one_sphere.xml"
+    cp "$WORK/stdout" "$WORK/one_$tree.json"
+    [ "$(json_number nodes "$WORK/one_$tree.json")" = 1 ] || fail "$tree: one sphere should give one node"
+    [ "$(json_number leaves "$WORK/one_$tree.json")" = 1 ] || fail "$tree: one sphere should give one leaf"
+    [ "$(json_number primitiveReferences "$WORK/one_$tree.json")" = 1 ] || fail "$tree: one reference expected"
+    grep -q "\"name\": \"$tree\"" "$WORK/one_$tree.json" || fail "$tree: tree not named"
+done
+
+# Two separated clusters: both trees split between them at the root, on x, and every
+# sphere is referenced at least once.
+for tree in bsp kd; do
+    expect_exit 0 "$RT_INSPECT" --tree $tree --json --depth-histogram "$WORK/two_clusters.xml"
+    cp "$WORK/stdout" "$WORK/two_$tree.json"
+    nodes=$(json_number nodes "$WORK/two_$tree.json")
+    refs=$(json_number primitiveReferences "$WORK/two_$tree.json")
+    [ "$nodes" -ge 3 ] || fail "$tree: two clusters gave $nodes nodes"
+    [ "$refs" -ge 128 ] || fail "$tree: 128 spheres but $refs references"
+    # The histogram's references add up to the total.
+    sum=$(awk '/"depthHistogram"/ {h = 1} h && /"primitiveReferences"/ {gsub(",", ""); s += $2} END {print s}' \
+          "$WORK/two_$tree.json")
+    [ "$sum" = "$refs" ] || fail "$tree: depth histogram sums to $sum references, the tree has $refs"
+
+    expect_exit 0 "$RT_INSPECT" --tree $tree --dump json --max-depth 0 "$WORK/two_clusters.xml"
+    grep -q '"axis": "x"' "$WORK/stdout" || fail "$tree: root does not split x: $(cat "$WORK/stdout")"
+    split=$(json_number split "$WORK/stdout")
+    # The clusters span x in [-10.95, -9.05] and [9.05, 10.95]; a split on a cluster's face counts.
+    awk -v s="$split" 'BEGIN { exit !(s >= -9.051 && s <= 9.051) }' || fail "$tree: root split $split is not in the gap"
+done
+
+# The table: one column per tree; the thesis's Table 4.3 with --rays.
+expect_exit 0 "$RT_INSPECT" --tree all --rays -s -d 2 -x 80 -y 60 "$WORK/two_clusters.xml"
+grep -q "^statistic  *bsp  *kd" "$WORK/stdout" || fail "no bsp and kd columns: $(head -5 "$WORK/stdout")"
+for row in "nodes" "empty leaves" "SAH cost" "camera rays" "shadow rays" "intersection tests per ray"; do
+    grep -q "^$row  " "$WORK/stdout" || fail "no row '$row'"
+done
+grep -q "^camera rays  *4800  *4800$" "$WORK/stdout" || fail "80x60 should be 4800 camera rays"
+grep -q "^Table 4.3" "$WORK/stdout" || fail "no Table 4.3"
+grep -q "^two_clusters  " "$WORK/stdout" || fail "Table 4.3 has no row for the scene"
+
+# Standard input gives the same statistics as the file (build time aside).
+expect_exit 0 "$RT_INSPECT" --tree kd --json - <"$WORK/two_clusters.xml"
+grep -v -e buildSeconds -e '"file"' "$WORK/stdout" >"$WORK/from_stdin.json"
+expect_exit 0 "$RT_INSPECT" --tree kd --json "$WORK/two_clusters.xml"
+grep -v -e buildSeconds -e '"file"' "$WORK/stdout" >"$WORK/from_file.json"
+cmp -s "$WORK/from_stdin.json" "$WORK/from_file.json" || fail "statistics differ between standard input and file"
+
+# Tree parameters reach the trees: a BSP depth limit of 1 gives at most 3 nodes.
+expect_exit 0 "$RT_INSPECT" --tree bsp --json --bsp-max-depth 1 "$WORK/two_clusters.xml"
+[ "$(json_number nodes "$WORK/stdout")" -le 3 ] || fail "--bsp-max-depth 1 ignored"
+grep -q '"maxDepth": 1' "$WORK/stdout" || fail "settings not reported"
+expect_exit 0 "$RT_INSPECT" --tree kd --json --kd-split sample --kd-samples 8 "$WORK/two_clusters.xml"
+grep -q '"split": "sample"' "$WORK/stdout" || fail "--kd-split not reported"
+# The rays are rt-render's: the same counts as its --stats-json for the same flags.
+flags=(-s -d 3 -x 64 -y 48)
+expect_exit 0 "$RT_RENDER" "$RT_SOURCE_DIR/scenes/demo.xml" --accel kd "${flags[@]}" -q -o null --stats-json -
+cp "$WORK/stdout" "$WORK/render.json"
+expect_exit 0 "$RT_INSPECT" "$RT_SOURCE_DIR/scenes/demo.xml" --tree kd --rays "${flags[@]}" --json
+for key in primaryRays:cameraRays shadowRays reflectionRays rays intersectionTests traversalSteps; do
+    theirs=$(json_number "${key%%:*}" "$WORK/render.json")
+    ours=$(json_number "${key##*:}" "$WORK/stdout")
+    [ -n "$ours" ] && [ "$ours" = "$theirs" ] || fail "${key##*:}: rt-inspect counts $ours, rt-render $theirs"
+done
+echo "inspect_stats: ok"

@@ -1,0 +1,149 @@
+#include "image/image_output.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+using namespace rt;
+namespace fs = std::filesystem;
+
+namespace {
+
+class ImageOutputTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("rt_image_output_test_" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string file(const std::string& name) const { return (dir_ / name).string(); }
+    std::size_t filesInDir() const { return std::size_t(std::distance(fs::directory_iterator(dir_), {})); }
+
+    static ImageOutputSettings settings(ImageFormat format, const std::string& path) {
+        ImageOutputSettings s;
+        s.format = format;
+        s.path = path;
+        s.color.configPath = RT_SOURCE_DIR "/config/ocio/config.ocio";
+        return s;
+    }
+    static ImageMetadata metadata() { return {"rt-render test", "scenes/test.xml", 16, 1.5}; }
+
+    fs::path dir_;
+};
+
+// A 4x2 image: a horizontal ramp, middle grey at (1, 0).
+Framebuffer ramp(const PixelWindow& w = {0, 0, 4, 2}, int fullWidth = 4, int fullHeight = 2) {
+    Framebuffer fb(fullWidth, fullHeight, w);
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x) fb.at(x, y) = {0.06f * float(x) + 0.12f, 0.18f, float(y)};
+    return fb;
+}
+
+std::vector<float> readPixels(const std::string& path, OIIO::ImageSpec& spec) {
+    auto in = OIIO::ImageInput::open(path);
+    EXPECT_TRUE(in) << OIIO::geterror();
+    if (!in) return {};
+    spec = in->spec();
+    std::vector<float> px(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
+    EXPECT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+    return px;
+}
+
+}  // namespace
+
+TEST_F(ImageOutputTest, FormatsByNameAndExtension) {
+    EXPECT_EQ(parseImageFormat("exr"), ImageFormat::Exr);
+    EXPECT_EQ(parseImageFormat("text"), ImageFormat::Text);
+    EXPECT_EQ(parseImageFormat("jpeg"), std::nullopt);
+    EXPECT_EQ(imageFormatFromPath("out/a.PNG"), ImageFormat::Png);
+    EXPECT_EQ(imageFormatFromPath("a.tga"), ImageFormat::Tga);
+    EXPECT_EQ(imageFormatFromPath("a.txt"), ImageFormat::Text);
+    EXPECT_EQ(imageFormatFromPath("a"), std::nullopt);
+    EXPECT_STREQ(imageFormatName(ImageFormat::Null), "null");
+}
+
+TEST_F(ImageOutputTest, ExrKeepsLinearValuesAndMetadata) {
+    for (const bool half : {true, false}) {
+        ImageOutputSettings s = settings(ImageFormat::Exr, file("a.exr"));
+        s.exrHalf = half;
+        writeImage(ramp(), s, metadata());
+        OIIO::ImageSpec spec;
+        const std::vector<float> px = readPixels(s.path, spec);
+        EXPECT_EQ(spec.format, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+        EXPECT_NEAR(px[3], 0.06f + 0.12f, half ? 1e-4 : 0);
+        EXPECT_EQ(spec.get_string_attribute("Software"), "rt-render test");
+        EXPECT_EQ(spec.get_string_attribute("rt:scene"), "scenes/test.xml");
+        EXPECT_EQ(spec.get_string_attribute("rt:colorSpace"), "lin_rec709");
+        EXPECT_EQ(spec.get_int_attribute("rt:samplesPerPixel"), 16);
+        EXPECT_FLOAT_EQ(spec.get_float_attribute("rt:renderSeconds"), 1.5f);
+    }
+}
+
+TEST_F(ImageOutputTest, RegionBecomesTheDataWindow) {
+    const std::string path = file("tile.exr");
+    writeImage(ramp({2, 1, 5, 3}, 8, 6), settings(ImageFormat::Exr, path), metadata());
+    OIIO::ImageSpec spec;
+    const std::vector<float> px = readPixels(path, spec);
+    EXPECT_EQ(spec.x, 2);
+    EXPECT_EQ(spec.y, 1);
+    EXPECT_EQ(spec.width, 3);
+    EXPECT_EQ(spec.height, 2);
+    EXPECT_EQ(spec.full_x, 0);
+    EXPECT_EQ(spec.full_width, 8);
+    EXPECT_EQ(spec.full_height, 6);
+    EXPECT_NEAR(px[0], 0.06f * 2 + 0.12f, 1e-3);  // pixel (2, 1) comes first
+}
+
+TEST_F(ImageOutputTest, PngAndTgaGoThroughTheDisplayTransform) {
+    for (const auto& [format, name, bits] : {std::tuple{ImageFormat::Png, "a.png", 8},
+                                            std::tuple{ImageFormat::Png, "b.png", 16},
+                                            std::tuple{ImageFormat::Tga, "c.tga", 8}}) {
+        ImageOutputSettings s = settings(format, file(name));
+        s.pngBits = bits;
+        writeImage(ramp(), s, metadata());
+        auto in = OIIO::ImageInput::open(s.path);
+        ASSERT_TRUE(in) << OIIO::geterror();
+        EXPECT_EQ(in->spec().format, bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+        std::vector<std::uint16_t> px(4 * 2 * 3);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT16, px.data()));
+        // Linear 0.18 encodes to sRGB 0.461356: code value 118 of 255, 30235 of 65535.
+        const int expected = bits == 16 ? 30235 : 118 * 257;
+        EXPECT_EQ(px[3], expected) << name;
+        EXPECT_EQ(px[4], expected) << name;
+    }
+}
+
+TEST_F(ImageOutputTest, TextIsAsciiArt) {
+    Framebuffer fb(3, 2, {0, 0, 3, 2});
+    fb.at(1, 0) = {1, 1, 1};
+    fb.at(2, 1) = {0.18f, 0.18f, 0.18f};
+    const std::string path = file("a.txt");
+    writeImage(fb, settings(ImageFormat::Text, path), metadata());
+    std::stringstream text;
+    text << std::ifstream(path).rdbuf();
+    EXPECT_EQ(text.str(), " @ \n  =\n");  // black, white; grey 0.46 is the 5th of 10 on " .:-=+*#%@"
+}
+
+TEST_F(ImageOutputTest, FailedWritesLeaveTheOldFileAndNoTemporary) {
+    const std::string path = file("keep.png");
+    std::ofstream(path) << "previous";
+    ImageOutputSettings s = settings(ImageFormat::Png, path);
+    s.color.view = "NoSuchView";
+    EXPECT_THROW(writeImage(ramp(), s, metadata()), InputError);
+    s = settings(ImageFormat::Png, file("no/such/dir/a.png"));
+    EXPECT_THROW(writeImage(ramp(), s, metadata()), std::runtime_error);
+    std::stringstream kept;
+    kept << std::ifstream(path).rdbuf();
+    EXPECT_EQ(kept.str(), "previous");
+    EXPECT_EQ(filesInDir(), 1u);
+}
+
+TEST_F(ImageOutputTest, NullWritesNothing) {
+    writeImage(ramp(), settings(ImageFormat::Null, file("x.png")), metadata());
+    EXPECT_EQ(filesInDir(), 0u);
+}

@@ -1,0 +1,74 @@
+// The metallic-roughness to Phong mapping (import/phong_from_pbr.*, docs/conversion.md).
+#include <gtest/gtest.h>
+
+#include "import/phong_from_pbr.h"
+
+namespace rt {
+namespace {
+
+TEST(ImportMaterial, RoughDielectricIsDiffuseWithAFaintHighlight) {
+    MetallicRoughness in;
+    in.baseColor = {0.8f, 0.2f, 0.1f};
+    in.metallic = 0;
+    in.roughness = 1;
+    const Material m = phongFromMetallicRoughness(in);
+    EXPECT_EQ(m.color, Color(0.8f, 0.2f, 0.1f));
+    EXPECT_FLOAT_EQ(m.diffuse, 0.9f);
+    EXPECT_NEAR(m.specular, 0.04f, 1e-6);  // ((1.5 - 1) / (1.5 + 1))^2
+    EXPECT_FLOAT_EQ(m.reflection, 0);      // no sharp mirror image
+    EXPECT_FLOAT_EQ(m.shininess, 1);       // the broadest lobe
+}
+
+TEST(ImportMaterial, PolishedMetalIsAMirrorOfItsColour) {
+    MetallicRoughness in;
+    in.baseColor = {1, 1, 1};
+    in.metallic = 1;
+    in.roughness = 0;
+    const Material m = phongFromMetallicRoughness(in);
+    EXPECT_FLOAT_EQ(m.diffuse, 0);
+    EXPECT_NEAR(m.reflection, 1, 1e-6);
+    EXPECT_NEAR(m.specular, 1, 1e-6);
+    EXPECT_FLOAT_EQ(m.shininess, 10000);
+    EXPECT_LT(m.spread, 0.01f);
+}
+
+TEST(ImportMaterial, RougherMeansBroaderAndDimmerReflection) {
+    MetallicRoughness in;
+    in.metallic = 1;
+    float lastShininess = 1e9f, lastReflection = 2, lastSpread = -1;
+    for (float r : {0.1f, 0.3f, 0.5f, 0.8f}) {
+        in.roughness = r;
+        const Material m = phongFromMetallicRoughness(in);
+        EXPECT_LT(m.shininess, lastShininess);
+        EXPECT_LT(m.reflection, lastReflection);
+        EXPECT_GT(m.spread, lastSpread);
+        lastShininess = m.shininess, lastReflection = m.reflection, lastSpread = m.spread;
+    }
+}
+
+TEST(ImportMaterial, IorAndSpecularExtensionsSetTheDielectricReflectance) {
+    MetallicRoughness in;
+    in.metallic = 0;
+    in.roughness = 0.5f;
+    in.ior = 1;  // index matched: no reflection at all
+    EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).specular, 0);
+    in.ior = 2;
+    const float f0 = (1.0f / 3) * (1.0f / 3);
+    EXPECT_NEAR(phongFromMetallicRoughness(in).specular, f0, 1e-6);
+    in.specularFactor = 0.5f;
+    EXPECT_NEAR(phongFromMetallicRoughness(in).specular, f0 / 2, 1e-6);
+}
+
+TEST(ImportMaterial, OutOfRangeInputsAreClamped) {
+    MetallicRoughness in;
+    in.baseColor = {-1, 2, 0.5f};
+    in.metallic = 3;
+    in.roughness = -1;
+    const Material m = phongFromMetallicRoughness(in);
+    EXPECT_EQ(m.color.r, 0);
+    EXPECT_FLOAT_EQ(m.diffuse, 0);
+    EXPECT_LE(m.reflection, 1);
+}
+
+}  // namespace
+}  // namespace rt

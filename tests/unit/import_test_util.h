@@ -1,0 +1,159 @@
+// Helpers for the importer tests: the Assimp ground truth of shared/models/MANIFEST.md, and
+// small glTF files written on the fly (buffers inline as base64) to probe one rule at a time.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "import/import.h"
+
+namespace rt::test {
+
+inline std::string sharedModels() { return std::string(RT_SHARED_DIR) + "/models"; }
+
+// One row of the manifest's tables: triangles in the mesh data and placed in the scene.
+struct ManifestCounts {
+    std::size_t meshTriangles = 0;
+    std::size_t sceneTriangles = 0;
+};
+
+// The rows for files under `folder` ("gltf", "glb", "obj", "3ds"), keyed by relative path.
+inline std::map<std::string, ManifestCounts> manifestRows(const std::string& folder) {
+    std::ifstream in(sharedModels() + "/MANIFEST.md");
+    std::map<std::string, ManifestCounts> rows;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("| `" + folder + "/", 0) != 0) continue;
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        for (std::string cell; std::getline(ss, cell, '|');) cells.push_back(cell);
+        // Only the ground-truth tables have counts in columns 4 and 5 ("16 (+19 lines, 7 pts)").
+        const auto startsWithDigit = [](const std::string& c) {
+            const std::size_t at = c.find_first_not_of(' ');
+            return at != std::string::npos && std::isdigit(static_cast<unsigned char>(c[at]));
+        };
+        if (cells.size() < 6 || !startsWithDigit(cells[4]) || !startsWithDigit(cells[5])) continue;
+        const std::string file = cells[1].substr(cells[1].find('`') + 1, cells[1].rfind('`') - cells[1].find('`') - 1);
+        rows.emplace(file, ManifestCounts{std::stoul(cells[4]), std::stoul(cells[5])});
+    }
+    return rows;
+}
+
+inline std::size_t modelTriangles(const Scene& scene) {
+    std::size_t n = 0;
+    for (const Model& m : scene.models) n += m.triangleCount();
+    return n;
+}
+
+inline std::size_t sceneTriangles(const Scene& scene) {
+    std::size_t n = 0;
+    for (const Instance& i : scene.instances) n += scene.models[i.model].triangleCount();
+    return n;
+}
+
+// Imports every manifest file under `folders` and checks that the triangles kept plus the
+// degenerate ones dropped (zero area in float) give Assimp's counts, for the mesh data and
+// for the scene with every instance; `more` checks anything else. Returns the file count.
+template <class Check>
+std::size_t expectManifestTriangleCounts(std::initializer_list<const char*> folders, Check more) {
+    std::size_t files = 0;
+    for (const std::string folder : folders) {
+        for (const auto& [file, counts] : manifestRows(folder)) {
+            SCOPED_TRACE(file);
+            const ImportResult r = importScene(sharedModels() + "/" + file);
+            EXPECT_EQ(modelTriangles(r.scene) + r.report.droppedDegenerate, counts.meshTriangles);
+            EXPECT_EQ(sceneTriangles(r.scene) + r.report.droppedDegenerateInScene, counts.sceneTriangles);
+            more(r);
+            ++files;
+        }
+    }
+    return files;
+}
+
+inline std::string base64(const std::vector<std::uint8_t>& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const std::uint32_t n = (std::uint32_t(bytes[i]) << 16) | (i + 1 < bytes.size() ? bytes[i + 1] << 8 : 0) |
+                                (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+        out += table[(n >> 18) & 63];
+        out += table[(n >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(n >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? table[n & 63] : '=';
+    }
+    return out;
+}
+
+// A glTF with one mesh (accessor 0: POSITION, accessor 1: UNSIGNED_SHORT indices) placed by
+// the nodes given. Tests edit the JSON text to break one thing at a time.
+struct GltfFixture {
+    std::vector<float> positions{0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::vector<std::uint16_t> indices{0, 1, 2};
+    int mode = 4;
+    std::string nodes = R"([{"mesh": 0}])";
+    std::string extra;  // more top-level members, each starting with a comma
+
+    std::string json() const {
+        const auto* p = reinterpret_cast<const std::uint8_t*>(positions.data());
+        std::vector<std::uint8_t> bytes(p, p + positions.size() * sizeof(float));
+        const std::size_t indexOffset = bytes.size();
+        const auto* q = reinterpret_cast<const std::uint8_t*>(indices.data());
+        bytes.insert(bytes.end(), q, q + indices.size() * sizeof(std::uint16_t));
+        const std::string vertexCount = std::to_string(positions.size() / 3);
+        std::ostringstream j;
+        j << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" << nodes
+          << R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": )" << mode << "}]}]"
+          << R"(, "buffers": [{"byteLength": )" << bytes.size() << R"(, "uri": "data:application/octet-stream;base64,)"
+          << base64(bytes) << R"("}], "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" << indexOffset
+          << R"(}, {"buffer": 0, "byteOffset": )" << indexOffset << R"(, "byteLength": )" << indices.size() * 2
+          << R"(}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" << vertexCount
+          << R"(, "type": "VEC3"}, {"bufferView": 1, "componentType": 5123, "count": )" << indices.size()
+          << R"(, "type": "SCALAR"}])" << extra << "}";
+        return j.str();
+    }
+};
+
+// A fresh folder for one test's files, removed with everything in it at the end.
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = std::filesystem::temp_directory_path() /
+                ("rt-import-test-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name());
+        std::filesystem::create_directories(path_);
+    }
+    ~TempDir() { std::filesystem::remove_all(path_); }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    // Writes `text` to a file of that name here and returns its path.
+    std::string write(const std::string& name, const std::string& text) const {
+        std::ofstream(path_ / name, std::ios::binary) << text;
+        return (path_ / name).string();
+    }
+    std::string path(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    std::filesystem::path path_;
+};
+
+// `text` with the first `from` replaced by `to`; a test fails if `from` is not there.
+inline std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) {
+        ADD_FAILURE() << "fixture text has no \"" << from << "\"";
+        return text;
+    }
+    return text.replace(at, from.size(), to);
+}
+
+}  // namespace rt::test

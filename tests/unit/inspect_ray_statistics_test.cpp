@@ -1,0 +1,145 @@
+// The rays rt-inspect --rays counts: camera, shadow and reflection rays, and the work of each.
+#include <omp.h>
+
+#include "accel/naive.h"
+#include "core/error.h"
+#include "inspect/ray_statistics.h"
+#include "inspect_test_scenes.h"
+#include "render/camera_rays.h"
+#include "test_util.h"
+
+using namespace rt;
+
+namespace {
+
+// Pixels whose camera ray hits anything, counted directly.
+std::uint64_t cameraHits(const Scene& scene, const Accelerator& accel, const RayOptions& o) {
+    const CameraRays camera(scene.camera, o.width, o.height);
+    std::uint64_t hits = 0;
+    RayCounters unused;
+    for (int y = 0; y < o.height; ++y) {
+        for (int x = 0; x < o.width; ++x) {
+            Hit hit;
+            hits += accel.intersect(camera.at(x + Real(0.5), y + Real(0.5)), kInfinity, hit, unused);
+        }
+    }
+    return hits;
+}
+
+}  // namespace
+
+TEST(RayStatistics, CameraRaysOnly) {
+    Scene scene = sceneLookingDownZ();
+    scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
+    scene.looseObjects.addSphere({{1, 0, 9}, 1}, 0);
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    RayOptions options;
+    options.width = 20;
+    options.height = 10;
+    const RayStatistics s = traceRayStatistics(scene, naive, options);
+    EXPECT_EQ(s.camera.rays, 200u);
+    EXPECT_EQ(s.camera.intersectionTests, 400u);  // the naive list tests both spheres
+    EXPECT_EQ(s.shadow.rays, 0u);
+    EXPECT_EQ(s.reflection.rays, 0u);
+    EXPECT_EQ(testsPerRay(s.total()), 2.0);
+}
+
+TEST(RayStatistics, OneShadowRayPerHitAndLightInFront) {
+    Scene scene = sceneLookingDownZ();
+    scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
+    scene.lights.push_back({{0, 0, 0}});     // at the camera: in front of every visible point
+    scene.lights.push_back({{0, 0, 100}});  // behind the sphere: in front of no visible point
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    RayOptions options;
+    options.width = 32;
+    options.height = 24;
+    options.shadows = true;
+    const RayStatistics s = traceRayStatistics(scene, naive, options);
+    const std::uint64_t hits = cameraHits(scene, naive, options);
+    ASSERT_GT(hits, 0u);
+    ASSERT_LT(hits, 32u * 24u);
+    EXPECT_EQ(s.shadow.rays, hits);
+    EXPECT_EQ(s.shadow.intersectionTests, hits);  // nothing occludes: one test each
+}
+
+TEST(RayStatistics, ReflectionsBounceUpToTheDepth) {
+    // Two mirrors facing each other, the camera between them: every camera ray bounces
+    // back and forth until the depth limit.
+    Scene scene = sceneLookingDownZ();
+    scene.camera.fovDegrees = 10;
+    Material mirror;
+    mirror.reflection = 0.8f;
+    scene.materials = {mirror};
+    const Real s = 1000;
+    for (const Real z : {Real(5), Real(-5)}) {
+        scene.looseObjects.addTriangle({{-s, -s, z}, {s, -s, z}, {0, s, z}}, 0);
+    }
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    RayOptions options;
+    options.width = 8;
+    options.height = 6;
+    for (const int depth : {0, 1, 3}) {
+        options.reflectionDepth = depth;
+        const RayStatistics st = traceRayStatistics(scene, naive, options);
+        EXPECT_EQ(st.camera.rays, 48u);
+        EXPECT_EQ(st.reflection.rays, 48u * depth) << "depth " << depth;
+        EXPECT_EQ(st.total().intersectionTests, 2 * st.total().rays);
+    }
+}
+
+TEST(RayStatistics, MatteSurfacesDoNotReflect) {
+    Scene scene = sceneLookingDownZ();
+    scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    RayOptions options;
+    options.width = 8;
+    options.height = 6;
+    options.reflectionDepth = 5;
+    EXPECT_EQ(traceRayStatistics(scene, naive, options).reflection.rays, 0u);
+}
+
+TEST(RayStatistics, SameCountsWithOneOrTwoThreads) {
+    Scene scene = sceneLookingDownZ();
+    Material mirror;
+    mirror.reflection = 0.5f;
+    scene.materials = {mirror};
+    for (int i = 0; i < 5; ++i) scene.looseObjects.addSphere({{Real(i) - 2, 0, 6}, Real(0.6)}, 0);
+    scene.lights.push_back({{3, 3, 0}});
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    RayOptions options;
+    options.width = 40;
+    options.height = 30;
+    options.shadows = true;
+    options.reflectionDepth = 3;
+    omp_set_num_threads(1);
+    const RayStatistics one = traceRayStatistics(scene, naive, options);
+    omp_set_num_threads(2);
+    const RayStatistics two = traceRayStatistics(scene, naive, options);
+    EXPECT_EQ(one.total().rays, two.total().rays);
+    EXPECT_EQ(one.total().intersectionTests, two.total().intersectionTests);
+    EXPECT_EQ(one.reflection.rays, two.reflection.rays);
+    EXPECT_GT(one.reflection.rays, 0u);
+}
+
+TEST(RayStatistics, CameraRayCostPerPixel) {
+    Scene scene = sceneLookingDownZ();
+    for (int i = 0; i < 3; ++i) scene.looseObjects.addSphere({{0, 0, Real(5 + 3 * i)}, 1}, 0);
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    const std::vector<float> cost = cameraRayCost(scene, naive, 10, 8);
+    ASSERT_EQ(cost.size(), 80u);
+    for (const float c : cost) EXPECT_EQ(c, 3.0f);  // the naive list: every primitive, no traversal
+}
+
+TEST(RayStatistics, BadCameraIsAnInputError) {
+    Scene scene = sceneLookingDownZ();
+    scene.camera.destination = scene.camera.origin;
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    EXPECT_THROW(traceRayStatistics(scene, naive, {}), InputError);
+}

@@ -1,0 +1,46 @@
+// Small scenes built in code for the renderer's tests (unit, golden image and determinism),
+// so that they need neither the XML loader nor files.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace rt::test {
+
+inline std::uint32_t addMaterial(Scene& s, Material m) {
+    s.materials.push_back(std::move(m));
+    return std::uint32_t(s.materials.size() - 1);
+}
+
+// A quad as two triangles, corners in order around its edge.
+inline void addQuad(Scene& s, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, std::uint32_t material) {
+    s.looseObjects.addTriangle({a, b, c}, material);
+    s.looseObjects.addTriangle({a, c, d}, material);
+}
+
+// Three spheres (diffuse with a highlight, mirror, glossy) on a floor, two lights with a
+// size for soft shadows: exercises every part of the shading.
+inline Scene spheresOnFloor() {
+    Scene s;
+    s.background = {0.2f, 0.3f, 0.5f};
+    s.camera.origin = {0, 2.5, -7};
+    s.camera.destination = {0, 0.8, 0};
+    s.camera.fovDegrees = 55;
+    const auto floor = addMaterial(s, {.name = "floor", .color = {0.8f, 0.8f, 0.75f}, .ambient = 0.1f,
+                                       .diffuse = 0.8f, .reflection = 0.15f});
+    const auto red = addMaterial(s, {.name = "red", .color = {0.9f, 0.15f, 0.1f}, .ambient = 0.1f, .diffuse = 0.7f,
+                                     .specular = 0.5f, .shininess = 40});
+    const auto mirror = addMaterial(s, {.name = "mirror", .color = {1, 1, 1}, .ambient = 0.02f, .diffuse = 0.1f,
+                                        .specular = 0.6f, .shininess = 80, .reflection = 0.85f});
+    const auto glossy = addMaterial(s, {.name = "glossy", .color = {0.3f, 0.5f, 0.9f}, .ambient = 0.1f,
+                                        .diffuse = 0.5f, .reflection = 0.5f, .spread = 0.15f});
+    addQuad(s, {-6, 0, -6}, {-6, 0, 6}, {6, 0, 6}, {6, 0, -6}, floor);
+    s.looseObjects.addSphere({{-1.8, 0.8, 0.5}, 0.8}, red);
+    s.looseObjects.addSphere({{0.2, 1.1, 1.2}, 1.1}, mirror);
+    s.looseObjects.addSphere({{2.0, 0.6, -0.3}, 0.6}, glossy);
+    s.lights.push_back({{-4, 6, -4}, {0.7f, 0.7f, 0.65f}, 0.8});
+    s.lights.push_back({{5, 4, -2}, {0.3f, 0.3f, 0.35f}, 0.4});
+    s.flatten();
+    return s;
+}
+
+}  // namespace rt::test

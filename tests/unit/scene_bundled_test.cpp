@@ -1,0 +1,51 @@
+// The scenes shipped in scenes/ load, with the geometry their files describe.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "scene/input_file.h"
+#include "scene/raw_model.h"
+#include "scene/xml_loader.h"
+
+using namespace rt;
+
+namespace {
+
+Scene bundled(const std::string& name) { return loadSceneXml(RT_SOURCE_DIR "/scenes/" + name); }
+
+}  // namespace
+
+TEST(SceneBundled, Spheres) {
+    const Scene scene = bundled("spheres.xml");
+    EXPECT_EQ(scene.primitives.triangleCount(), 2u);  // the floor quad
+    EXPECT_EQ(scene.primitives.sphereCount(), 6u);
+    EXPECT_EQ(scene.materials.size(), 5u);            // four named and the default
+    EXPECT_EQ(scene.lights.size(), 2u);
+    EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(SceneBundled, Transforms) {
+    const Scene scene = bundled("transforms.xml");
+    EXPECT_EQ(scene.models.size(), 2u);
+    EXPECT_EQ(scene.instances.size(), 8u);
+    EXPECT_EQ(scene.primitives.triangleCount(), 2u + 6 * 8);  // floor and six octahedra
+    EXPECT_EQ(scene.primitives.sphereCount(), 2u * 6);       // two atoms
+    EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(SceneBundled, Inline) {
+    const Scene scene = bundled("inline.xml");
+    EXPECT_EQ(scene.models.at(0).triangleCount(), 8u);
+    EXPECT_EQ(scene.primitives.triangleCount(), 2u + 1 + 2 * 8);
+    EXPECT_NEAR(scene.camera.focalPixels(800), 630, 1e-3);  // f in pixels, zoom in percent
+    EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(SceneBundled, RawModelsAreWhatTheWriterWrites) {
+    for (const char* name : {"octahedron.raw", "atom.raw"}) {
+        const std::string path = RT_SOURCE_DIR "/scenes/models/" + std::string(name);
+        std::ostringstream written;
+        writeRaw(written, readRawFile(path));
+        EXPECT_EQ(written.str(), readInputFile(path)) << name;
+    }
+}

@@ -1,0 +1,442 @@
+#include "scene/xml_loader.h"
+
+#include <iostream>
+#include <sstream>
+
+#include "scene_test_files.h"
+#include "test_util.h"
+
+using namespace rt;
+
+namespace {
+
+// The example scene printed in thesis 3.4.2, as written, with a 3ds model from the shared
+// corpus in place of scenes/spaceship.3ds.
+const std::string kThesisExample = R"(<?xml version="1.0" ?>
+<scene>
+  <background r="0.1" g="0.1" b="0.6" />
+
+  <camera fov="50" zoom="100">
+    <origin x="4" y="-4.5" z="-18" />
+    <destination x="1" y="-0.5" z="5" />
+  </camera>
+
+  <materials>
+    <material name="blue" r="0.7" g="0.7" b="1.0"
+      diffuse="0.4" reflection="0.4" />
+    <material name="red_steel" r="1" g="0" b="0"
+      diffuse="0.6" specular="0.3" />
+  </materials>
+
+  <models>
+    <model name="spaceship" file="SPACESHIP" type="3ds" />
+  </models>
+
+  <objects>
+    <sphere x="0" y="-1" z="12" r="1.2" material="blue" />
+    <scale factor="0.025">
+      <rotate ry="1">
+        <translate x="-3" z="4.5">
+          <model name="spaceship" material="red_steel" />
+        </translate>
+      </rotate>
+    </scale>
+  </objects>
+
+  <lights>
+    <light x="-1" y="0" z="0" r="0.8" g="0.8" b="0.8" size="0.1" />
+  </lights>
+</scene>
+)";
+
+const std::string kFels = RT_SHARED_DIR "/models/3ds/fels/fels.3ds";
+
+std::string replaced(std::string text, const std::string& what, const std::string& with) {
+    text.replace(text.find(what), what.size(), with);
+    return text;
+}
+
+// A scene with a camera around the given <scene> content.
+std::string sceneWith(const std::string& body) {
+    return "<scene>\n<camera><origin/><destination z=\"1\"/></camera>\n" + body + "</scene>\n";
+}
+
+Scene load(const std::string& body, const std::string& baseDir = ".") {
+    return loadSceneXmlFromString(sceneWith(body), "s.xml", baseDir);
+}
+
+std::string errorOf(const std::string& xml) {
+    return inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", "."); });
+}
+
+}  // namespace
+
+TEST(XmlLoader, ThesisExampleLoadsAsWritten) {
+    TempDir dir;
+    const std::string path = dir.write("ships.xml", replaced(kThesisExample, "SPACESHIP", kFels));
+    const Scene scene = loadSceneXml(path);
+
+    EXPECT_EQ(scene.background, Color(0.1f, 0.1f, 0.6f));
+    ASSERT_TRUE(scene.camera.fovDegrees);
+    EXPECT_EQ(*scene.camera.fovDegrees, 50);
+    EXPECT_FALSE(scene.camera.focalDistance);
+    EXPECT_EQ(scene.camera.zoom, 100);
+    EXPECT_EQ(scene.camera.origin, Vec3(4, -4.5, -18));
+    EXPECT_EQ(scene.camera.destination, Vec3(1, -0.5, 5));
+    EXPECT_EQ(scene.camera.up, Vec3(0, 1, 0));
+
+    ASSERT_EQ(scene.materials.size(), 2u);
+    const Material& blue = scene.materials[0];
+    EXPECT_EQ(blue.name, "blue");
+    EXPECT_EQ(blue.color, Color(0.7f, 0.7f, 1.0f));
+    EXPECT_EQ(blue.diffuse, 0.4f);
+    EXPECT_EQ(blue.reflection, 0.4f);
+    EXPECT_EQ(blue.specular, Material{}.specular);  // not given: the default
+    EXPECT_EQ(scene.materials[1].name, "red_steel");
+    EXPECT_EQ(scene.materials[1].specular, 0.3f);
+
+    ASSERT_EQ(scene.models.size(), 1u);
+    EXPECT_EQ(scene.models[0].name, "spaceship");
+    EXPECT_EQ(scene.models[0].format, Model::Format::Max3ds);
+    EXPECT_EQ(scene.models[0].triangleCount(), 768u);  // MANIFEST.md: fels.3ds has 768 triangles
+
+    ASSERT_EQ(scene.looseObjects.sphereCount(), 1u);
+    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(0, -1, 12));
+    EXPECT_EQ(scene.looseObjects.sphere(0).radius, Real(1.2));
+    EXPECT_EQ(scene.looseObjects.material(0), 0u);
+
+    // "first scaled by 0.025, then rotated about y by pi, and finally translated by -3 on x and 4.5 on z"
+    ASSERT_EQ(scene.instances.size(), 1u);
+    EXPECT_EQ(scene.instances[0].material, 1u);
+    const Transform& xf = scene.instances[0].transform;
+    expectNear(xf.point({40, 0, 0}), {-3 - 1, 0, 4.5});
+    expectNear(xf.point({0, 40, 80}), {-3, 1, 4.5 - 2});
+
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].position, Vec3(-1, 0, 0));
+    EXPECT_EQ(scene.lights[0].color, Color(0.8f, 0.8f, 0.8f));
+    EXPECT_EQ(scene.lights[0].size, Real(0.1));
+
+    EXPECT_EQ(scene.primitives.sphereCount(), 1u);
+    EXPECT_EQ(scene.primitives.triangleCount() + scene.droppedDegenerate, 768u);
+}
+
+TEST(XmlLoader, ModelPathsResolveAgainstTheSceneFolder) {
+    TempDir dir;
+    std::filesystem::create_directory(dir.path("models"));
+    writeRawFile(dir.path("models/tri.raw"), rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0}));
+    const std::string path = dir.write(
+        "scene.xml", sceneWith("<models><model name=\"t\" file=\"models/tri.raw\"/></models>"
+                               "<objects><model name=\"t\"/></objects>"));
+    const Scene scene = loadSceneXml(path);
+    EXPECT_EQ(scene.models[0].file, "models/tri.raw");
+    EXPECT_EQ(scene.models[0].format, Model::Format::Raw);  // from the extension
+    EXPECT_EQ(scene.primitives.triangleCount(), 1u);
+}
+
+TEST(XmlLoader, NestedTransformsApplyOuterFirst) {
+    // Outer <translate>, inner <scale>: the point is translated, then scaled.
+    const Scene scene = load(R"(<objects><translate x="1"><scale factor="2">
+        <sphere x="0" y="0" z="0" r="1"/>
+        </scale></translate></objects>)");
+    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(2, 0, 0));
+    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 2);
+    // The other way round, the translation is not scaled.
+    const Scene inner = load(R"(<objects><scale factor="2"><translate x="1">
+        <sphere x="0" y="0" z="0" r="1"/></translate></scale></objects>)");
+    EXPECT_EQ(inner.looseObjects.sphere(0).center, Vec3(1, 0, 0));
+}
+
+TEST(XmlLoader, RotateAppliesXThenYThenZ) {
+    // X first takes +Y to +Z, then Y takes +Z to +X; the other order would give +Z.
+    const Scene scene = load(R"(<objects><rotate x="90" y="90"><sphere y="1" r="1"/></rotate></objects>)");
+    expectNear(scene.looseObjects.sphere(0).center, {1, 0, 0});
+    const Scene z = load(R"(<objects><rotate z="90"><sphere x="1" r="1"/></rotate></objects>)");
+    expectNear(z.looseObjects.sphere(0).center, {0, 1, 0});  // right-handed
+}
+
+TEST(XmlLoader, RotateInMultiplesOfPiMatchesDegrees) {
+    const Scene scene = load(R"(<objects>
+        <rotate rx="0.5" ry="-0.25" rz="1.5"><sphere x="1" y="2" z="3" r="1"/></rotate>
+        <rotate x="90" y="-45" z="270"><sphere x="1" y="2" z="3" r="1"/></rotate></objects>)");
+    expectNear(scene.looseObjects.sphere(0).center, scene.looseObjects.sphere(1).center);
+}
+
+TEST(XmlLoader, ScaleByFactorOrPerAxis) {
+    const Scene scene = load(R"(<objects>
+        <scale x="2" y="3"><sphere x="1" y="1" z="1" r="1"/></scale>
+        <scale factor="-0.5"><sphere x="1" y="1" z="1" r="1"/></scale></objects>)");
+    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(2, 3, 1));
+    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 3);  // the largest stretch
+    EXPECT_EQ(scene.looseObjects.sphere(1).center, Vec3(-0.5, -0.5, -0.5));
+    EXPECT_EQ(scene.looseObjects.sphere(1).radius, 0.5);
+}
+
+TEST(XmlLoader, TranslateAndTheThesisAliasTransform) {
+    const Scene scene = load(R"(<objects><translate x="1" y="2" z="3"><transform y="-2">
+        <sphere r="1"/></transform></translate></objects>)");
+    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(1, 0, 3));
+}
+
+TEST(XmlLoader, NumbersTooSmallForRealRoundToZero) {
+    const Scene scene = load(R"(<objects><sphere x="1e-400" y="-1e-500" r="+2.5e0"/></objects>)");
+    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(0, 0, 0));
+    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 2.5);
+}
+
+TEST(XmlLoader, MatrixIsRowMajorThreeByFour) {
+    const Scene scene = load(R"(<objects><matrix m="0 -1 0 10  1 0 0 20  0 0 2 30">
+        <sphere x="1" y="2" z="3" r="1"/></matrix></objects>)");
+    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(10 - 2, 20 + 1, 30 + 6));
+    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 2);
+}
+
+TEST(XmlLoader, TrianglesAndQuads) {
+    const Scene scene = load(R"(<materials><material name="m"/></materials><objects>
+        <triangle material="m"><vertex x="0" y="0" z="0"/><vertex x="1"/><vertex y="1"/></triangle>
+        <quad><vertex/><vertex x="2"/><vertex x="2" y="2"/><vertex y="2"/></quad></objects>)");
+    ASSERT_EQ(scene.looseObjects.triangleCount(), 3u);
+    EXPECT_EQ(scene.looseObjects.triangle(0).p1, Vec3(1, 0, 0));
+    EXPECT_EQ(scene.looseObjects.triangle(0).p2, Vec3(0, 1, 0));
+    // The quad is split along the diagonal from its first to its third corner.
+    EXPECT_EQ(scene.looseObjects.triangle(1).p2, Vec3(2, 2, 0));
+    EXPECT_EQ(scene.looseObjects.triangle(2).p1, Vec3(2, 2, 0));
+    EXPECT_EQ(scene.looseObjects.triangle(2).p2, Vec3(0, 2, 0));
+    EXPECT_NEAR(scene.looseObjects.triangle(1).area() + scene.looseObjects.triangle(2).area(), 4, kTol);
+    EXPECT_EQ(scene.looseObjects.material(0), 0u);
+    EXPECT_EQ(scene.materials[scene.looseObjects.material(1)].name, "default");
+}
+
+TEST(XmlLoader, ObjectsWithoutMaterialUseTheDefault) {
+    const Scene added = load(R"(<objects><sphere r="1"/><sphere r="2"/></objects>)");
+    ASSERT_EQ(added.materials.size(), 1u);  // added once, with the Material defaults
+    EXPECT_EQ(added.materials[0].name, "default");
+    EXPECT_EQ(added.materials[0].diffuse, Material{}.diffuse);
+    const Scene own = load(R"(<materials><material name="x"/><material name="default" r="0.5"/></materials>
+        <objects><sphere r="1"/></objects>)");
+    ASSERT_EQ(own.materials.size(), 2u);  // the scene's own "default" is used
+    EXPECT_EQ(own.looseObjects.material(0), 1u);
+    EXPECT_EQ(load("").materials.size(), 0u);  // nothing added when nothing needs it
+}
+
+TEST(XmlLoader, EveryMaterialAttribute) {
+    const Scene scene = load(R"(<materials><material name="all" r="0.25" g="0.5" b="2" ambient="0.2"
+        diffuse="0.3" specular="0.4" shininess="50" reflection="0.6" spread="0.05"/></materials>)");
+    const Material& m = scene.materials.at(0);
+    EXPECT_EQ(m.color, Color(0.25f, 0.5f, 2));
+    EXPECT_EQ(m.ambient, 0.2f);
+    EXPECT_EQ(m.diffuse, 0.3f);
+    EXPECT_EQ(m.specular, 0.4f);
+    EXPECT_EQ(m.shininess, 50);
+    EXPECT_EQ(m.reflection, 0.6f);
+    EXPECT_EQ(m.spread, 0.05f);
+    const Material defaults = load(R"(<materials><material name="d"/></materials>)").materials.at(0);
+    EXPECT_EQ(defaults.color, Color(1, 1, 1));
+    EXPECT_EQ(defaults.ambient, Material{}.ambient);
+    EXPECT_EQ(defaults.shininess, Material{}.shininess);
+}
+
+TEST(XmlLoader, CameraFocalDistanceZoomAndUp) {
+    const Scene f = loadSceneXmlFromString(R"(<scene><camera f="800" zoom="50"><origin x="1"/>
+        <destination x="1" z="-3"/><up z="1" x="1"/></camera></scene>)", "s.xml", ".");
+    EXPECT_EQ(*f.camera.focalDistance, 800);
+    EXPECT_FALSE(f.camera.fovDegrees);
+    EXPECT_EQ(f.camera.up, Vec3(1, 0, 1));
+    EXPECT_EQ(f.camera.focalPixels(640), 400);
+    // Neither fov nor f: the distance from origin to destination (thesis 3.4.2).
+    const Scene d = loadSceneXmlFromString(R"(<scene><camera><origin x="1"/><destination x="1" z="-3"/>
+        </camera></scene>)", "s.xml", ".");
+    EXPECT_EQ(d.camera.focalPixels(640), 3);
+    EXPECT_EQ(d.camera.zoom, 100);
+    // fov is the horizontal angle: f = w / (2 tan(fov/2)).
+    const Scene fov = loadSceneXmlFromString(R"(<scene><camera fov="90"><origin/><destination z="1"/>
+        </camera></scene>)", "s.xml", ".");
+    EXPECT_NEAR(fov.camera.focalPixels(640), 320, 1e-3);
+}
+
+TEST(XmlLoader, BackgroundAndLights) {
+    const Scene scene = load(R"(<background g="0.5"/><lights><light x="1" y="2" z="3"/>
+        <light r="0.5" g="0.25" b="0" size="2"/></lights>)");
+    EXPECT_EQ(scene.background, Color(0, 0.5f, 0));
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[0].position, Vec3(1, 2, 3));
+    EXPECT_EQ(scene.lights[0].color, Color(1, 1, 1));
+    EXPECT_EQ(scene.lights[0].size, 0);
+    EXPECT_EQ(scene.lights[1].color, Color(0.5f, 0.25f, 0));
+    EXPECT_EQ(scene.lights[1].size, 2);
+    EXPECT_EQ(load("").background, Color(0, 0, 0));  // thesis: black when not given
+}
+
+TEST(XmlLoader, ModelInstancesShareOneModel) {
+    TempDir dir;
+    writeRawFile(dir.path("tri.raw"), rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0}));
+    const Scene scene = load(R"(<models><model name="t" file="tri.raw" type="raw"/></models>
+        <materials><material name="m"/></materials>
+        <objects><model name="t"/><translate x="5"><model name="t" material="m"/></translate></objects>)",
+                             dir.path(""));
+    ASSERT_EQ(scene.models.size(), 1u);
+    ASSERT_EQ(scene.instances.size(), 2u);
+    EXPECT_EQ(scene.instances[0].material, 1u);  // "default", added after "m"
+    EXPECT_EQ(scene.instances[1].material, 0u);
+    ASSERT_EQ(scene.primitives.triangleCount(), 2u);
+    EXPECT_EQ(scene.primitives.triangle(1).p1, Vec3(6, 0, 0));
+}
+
+TEST(XmlLoader, InlineBase64Model) {
+    // "raw3d" 'S', count 1, then the sphere (1, 2, 3) radius 0.5 as little-endian floats.
+    const Scene scene = load(R"(<models><model name="s" type="raw" encoding="base64">
+        cmF3M2RTAQAAAAAAgD8AAABA
+        AABAQAAAAD8=
+        </model></models><objects><model name="s"/></objects>)");
+    ASSERT_EQ(scene.primitives.sphereCount(), 1u);
+    EXPECT_EQ(scene.primitives.sphere(0).center, Vec3(1, 2, 3));
+    EXPECT_EQ(scene.primitives.sphere(0).radius, 0.5);
+    EXPECT_EQ(scene.models[0].file, "");
+}
+
+TEST(XmlLoader, DegeneratePrimitivesAreDroppedAndCounted) {
+    // RAW model: one good triangle and one with all three corners on a line.
+    const Scene scene = load(R"(<models><model name="s" encoding="base64">
+        cmF3M2RUAgAAAAAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/AAAAAAAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAEAAAAAAAAAAAA==
+        </model></models><objects>
+        <model name="s"/>
+        <sphere r="0"/><sphere r="-1"/><sphere r="1"/>
+        <triangle><vertex/><vertex x="1"/><vertex x="2"/></triangle></objects>)");
+    EXPECT_EQ(scene.looseObjects.sphereCount(), 1u);
+    EXPECT_EQ(scene.primitives.size(), 2u);
+    EXPECT_EQ(scene.droppedDegenerate, 4u);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(scene.warnings[0], "dropped 4 degenerate primitives (zero-area triangles, spheres with radius <= 0)");
+    EXPECT_TRUE(load("").warnings.empty());
+}
+
+TEST(XmlLoader, ThreeDsModelsBakeNodeTransforms) {
+    const Scene scene = load("<models><model name=\"j\" file=\"" RT_SHARED_DIR
+                             "/models/3ds/jeep1/jeep1.3ds\"/></models>");
+    EXPECT_EQ(scene.models.at(0).format, Model::Format::Max3ds);  // from the extension
+    EXPECT_EQ(scene.models.at(0).triangleCount(), 2032u);          // MANIFEST.md
+}
+
+namespace {
+
+struct BadScene {
+    const char* what;
+    std::string xml;
+    std::string error;  // the whole message
+};
+
+// Line 1 <scene>, line 2 the camera, the case's content from line 3.
+const BadScene kBadScenes[] = {
+    {"malformed XML", sceneWith("<objects>\n<sphere r=\"1\">\n</objects>\n"),
+     "s.xml:5: malformed XML: Start-end tags mismatch"},
+    {"unknown attribute", sceneWith("<materials>\n<material name=\"m\" colour=\"1\"/></materials>"),
+     "s.xml:4: unknown attribute 'colour' on <material>"},
+    {"unknown element", sceneWith("\n<object/>"), "s.xml:4: unknown element <object> in <scene>"},
+    {"unknown object", sceneWith("<objects>\n<rotate>\n<cube/></rotate></objects>"),
+     "s.xml:5: unknown element <cube> in <rotate>"},
+    {"text", sceneWith("<objects>\nhello<sphere r=\"1\"/></objects>"), "s.xml:4: unexpected text in <objects>"},
+    {"missing attribute", sceneWith("<objects>\n\n<sphere x=\"1\"/></objects>"),
+     "s.xml:5: <sphere> needs attribute 'r'"},
+    {"not a number", sceneWith("<objects><sphere\n r=\"1cm\"/></objects>"),
+     "s.xml:3: <sphere> attribute 'r': '1cm' is not a number"},
+    {"empty number", sceneWith("<background r=\"\"/>"), "s.xml:3: <background> attribute 'r': '' is not a number"},
+    {"NaN", sceneWith("<lights>\n<light x=\"nan\"/></lights>"),
+     "s.xml:4: <light> attribute 'x': 'nan' is not a finite number"},
+    {"infinity", sceneWith("<objects>\n<translate y=\"-inf\"/></objects>"),
+     "s.xml:4: <translate> attribute 'y': '-inf' is not a finite number"},
+    {"overflow", sceneWith("<objects>\n<translate y=\"1e999\"/></objects>"),
+     "s.xml:4: <translate> attribute 'y': '1e999' is not a finite number"},
+    {"missing material", sceneWith("<objects>\n<sphere r=\"1\" material=\"gold\"/></objects>"),
+     "s.xml:4: unknown material 'gold'"},
+    {"duplicate material",
+     sceneWith("<materials>\n<material name=\"m\"/>\n<material name=\"m\"/></materials>"),
+     "s.xml:5: duplicate material 'm' (first defined on line 4)"},
+    {"missing model", sceneWith("<objects>\n<model name=\"ship\"/></objects>"), "s.xml:4: unknown model 'ship'"},
+    {"duplicate model",
+     sceneWith("<models><model name=\"s\" encoding=\"base64\">cmF3M2RUAAAAAA==</model>\n"
+               "<model name=\"s\" encoding=\"base64\">cmF3M2RUAAAAAA==</model></models>"),
+     "s.xml:4: duplicate model 's' (first defined on line 3)"},
+    {"missing model file", sceneWith("<models>\n<model name=\"s\" file=\"no/such.raw\"/></models>"),
+     "s.xml:4: model 's': ./no/such.raw: cannot open: No such file or directory"},
+    {"bad inline RAW", sceneWith("<models>\n<model name=\"s\" encoding=\"base64\">cmF3M2RUAQAAAA==</model></models>"),
+     "s.xml:4: model 's': inline RAW data: byte 10: truncated RAW data: 36 bytes of data for 1 triangle, "
+     "the file has 0"},
+    {"bad base64", sceneWith("<models>\n<model name=\"s\" encoding=\"base64\">cmF3M2R*</model></models>"),
+     "s.xml:4: model 's': bad base64 at character 7"},
+    {"unknown model type", sceneWith("<models>\n<model name=\"s\" file=\"x.obj\"/></models>"),
+     "s.xml:4: <model> needs type=\"raw\" or type=\"3ds\" (the file name does not tell)"},
+    {"no camera", "<scene>\n</scene>", "s.xml:1: <scene> needs a <camera>"},
+    {"second camera", sceneWith("<camera/>"), "s.xml:3: a second <camera> in <scene>"},
+    {"camera without destination", "<scene><camera>\n<origin/></camera></scene>",
+     "s.xml:1: <camera> needs <origin> and <destination>"},
+    {"camera looking nowhere", "<scene><camera><origin/><destination/></camera></scene>",
+     "s.xml:1: camera origin and destination coincide"},
+    {"camera up along the view", "<scene><camera><origin/><destination z=\"1\"/><up z=\"2\"/></camera></scene>",
+     "s.xml:1: camera up vector is zero or parallel to the view direction"},
+    {"second up", "<scene><camera><origin/><destination z=\"1\"/><up/>\n<up/></camera></scene>",
+     "s.xml:2: a second <up> in <camera>"},
+    {"fov and f", "<scene><camera fov=\"40\" f=\"2\"><origin/><destination z=\"1\"/></camera></scene>",
+     "s.xml:1: <camera> takes fov or f, not both"},
+    {"fov out of range", "<scene><camera fov=\"180\"><origin/><destination z=\"1\"/></camera></scene>",
+     "s.xml:1: <camera> fov must be between 0 and 180 degrees"},
+    {"triangle with two vertices", sceneWith("<objects>\n<triangle><vertex/><vertex/></triangle></objects>"),
+     "s.xml:4: <triangle> needs 3 <vertex> elements, not 2"},
+    {"zero scale", sceneWith("<objects>\n<scale y=\"0\"/></objects>"), "s.xml:4: <scale> factors must not be zero"},
+    {"singular matrix", sceneWith("<objects>\n<matrix m=\"1 0 0 0 0 1 0 0 0 0 0 0\"/></objects>"),
+     "s.xml:4: <matrix> is singular"},
+    {"short matrix", sceneWith("<objects>\n<matrix m=\"1 0 0 0 0 1 0 0 0 0 1\"/></objects>"),
+     "s.xml:4: <matrix> attribute 'm' needs exactly 12 numbers"},
+    {"both rotation forms", sceneWith("<objects>\n<rotate y=\"90\" ry=\"0.5\"/></objects>"),
+     "s.xml:4: <rotate> takes y or ry, not both"},
+    {"negative colour", sceneWith("<lights>\n<light g=\"-1\"/></lights>"),
+     "s.xml:4: <light> attribute 'g' must not be negative"},
+    {"wrong root", "<?xml version=\"1.0\"?>\n<scenery/>", "s.xml:2: the root element must be <scene>"},
+    {"empty file", "", "s.xml:1: malformed XML: No document element found"},
+};
+
+void PrintTo(const BadScene& bad, std::ostream* os) { *os << bad.what; }
+
+class XmlLoaderBadInput : public ::testing::TestWithParam<BadScene> {};
+
+}  // namespace
+
+TEST_P(XmlLoaderBadInput, GivesOneErrorWithFileAndLine) {
+    EXPECT_EQ(errorOf(GetParam().xml), GetParam().error) << GetParam().what;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, XmlLoaderBadInput, ::testing::ValuesIn(kBadScenes),
+                         [](const ::testing::TestParamInfo<BadScene>& param) {
+                             std::string name = param.param.what;
+                             for (char& c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+
+TEST(XmlLoader, BadModelFilesGiveTheSceneLine) {
+    TempDir dir;
+    dir.write("short.raw", std::string("raw3dS\x02\0\0\0", 10) + std::string(20, '\0'));
+    const std::string path = dir.write("s.xml", sceneWith("<models>\n<model name=\"m\" file=\"short.raw\"/></models>"));
+    EXPECT_EQ(inputErrorOf([&] { loadSceneXml(path); }),
+              path + ":4: model 'm': " + dir.path("short.raw") +
+                  ": byte 30: truncated RAW data: 32 bytes of data for 2 spheres, the file has 20");
+    for (const char* bad : {"derived-3ds/fels_truncated_4096.3ds", "derived-3ds/test1_bad_main_chunk_length.3ds",
+                            "derived-3ds/random_bytes_named.3ds", "assimp-invalid/empty.3ds"}) {
+        const std::string model = std::string(RT_SHARED_DIR "/models/bad/") + bad;
+        const std::string error =
+            errorOf(sceneWith("<models><model name=\"m\" type=\"3ds\" file=\"" + model + "\"/></models>"));
+        EXPECT_EQ(error.rfind("s.xml:3: model 'm': " + model + ": cannot read 3ds model: ", 0), 0u) << error;
+    }
+}
+
+TEST(XmlLoader, DashReadsStandardInput) {
+    std::istringstream in(sceneWith("<objects>\n<sphere r=\"1\"/>\n<sphere r=\"x\"/></objects>"));
+    std::streambuf* old = std::cin.rdbuf(in.rdbuf());
+    const std::string error = inputErrorOf([] { loadSceneXml("-"); });
+    std::cin.rdbuf(old);
+    EXPECT_EQ(error, "<stdin>:5: <sphere> attribute 'r': 'x' is not a number");
+}
+
+TEST(XmlLoader, MissingSceneFile) {
+    EXPECT_EQ(inputErrorOf([] { loadSceneXml("/nonexistent/scene.xml"); }),
+              "/nonexistent/scene.xml: cannot open: No such file or directory");
+}

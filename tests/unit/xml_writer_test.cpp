@@ -1,0 +1,183 @@
+#include "scene/xml_writer.h"
+
+#include <cstring>
+#include <iostream>
+#include <sstream>
+
+#include "scene/input_file.h"
+#include "scene/xml_loader.h"
+#include "scene_test_files.h"
+#include "test_util.h"
+
+using namespace rt;
+
+namespace {
+
+// Numbers chosen to catch lossy printing: thirds, tiny and huge values, a negative zero.
+const std::string kScene = R"(<scene>
+  <background r="0.1" g="0.2" b="0.30000001"/>
+  <camera fov="47.123456789" zoom="150"><origin x="0.1" y="-4.5" z="-18"/><destination x="1" y="-0.5" z="5"/>
+    <up x="0.2" y="1"/></camera>
+  <materials>
+    <material name="blue" r="0.7" g="0.7" b="1" diffuse="0.4" reflection="0.4" spread="0.01"/>
+    <material name="red steel &amp; more" r="1" g="0" b="0" diffuse="0.6" specular="0.3" shininess="77.7"/>
+  </materials>
+  <models>
+    <model name="ship/one" file="FELS" type="3ds"/>
+    <model name="balls" encoding="base64">cmF3M2RTAQAAAAAAgD8AAABAAABAQAAAAD8=</model>
+  </models>
+  <objects>
+    <sphere x="0.333333333333333314829616256247" y="-0" z="1e-300" r="1.2" material="blue"/>
+    <rotate x="33.3" y="-71" z="12.5"><scale x="0.025" y="0.03" z="-0.02"><translate x="-3" z="4.5">
+      <model name="ship/one" material="red steel &amp; more"/>
+      <triangle><vertex x="0.1" y="0.2" z="0.3"/><vertex x="1e10"/><vertex y="-7.77"/></triangle>
+      <quad material="blue"><vertex/><vertex x="1"/><vertex x="1" y="1"/><vertex y="1"/></quad>
+    </translate></scale></rotate>
+    <model name="balls"/>
+    <translate x="5"><model name="balls" material="blue"/></translate>
+  </objects>
+  <lights><light x="-1" y="0.1" z="1e-3" r="0.8" g="0.7" b="0.6" size="0.1"/><light/></lights>
+</scene>
+)";
+
+Scene loadTestScene(const TempDir& dir) {
+    std::string xml = kScene;
+    xml.replace(xml.find("FELS"), 4, RT_SHARED_DIR "/models/3ds/fels/fels.3ds");
+    return loadSceneXml(dir.write("in/scene.xml", xml));
+}
+
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+void expectSamePrimitives(const Primitives& a, const Primitives& b) {
+    EXPECT_TRUE(sameBits(a.triangles(), b.triangles()));
+    EXPECT_TRUE(sameBits(a.spheres(), b.spheres()));
+    ASSERT_EQ(a.size(), b.size());
+    for (std::uint32_t id = 0; id < a.size(); ++id) EXPECT_EQ(a.material(id), b.material(id)) << id;
+}
+
+void expectSameScene(const Scene& a, const Scene& b) {
+    EXPECT_EQ(a.background, b.background);
+    EXPECT_EQ(a.camera.origin, b.camera.origin);
+    EXPECT_EQ(a.camera.destination, b.camera.destination);
+    EXPECT_EQ(a.camera.up, b.camera.up);
+    EXPECT_EQ(a.camera.fovDegrees, b.camera.fovDegrees);
+    EXPECT_EQ(a.camera.focalDistance, b.camera.focalDistance);
+    EXPECT_EQ(a.camera.zoom, b.camera.zoom);
+    ASSERT_EQ(a.materials.size(), b.materials.size());
+    for (std::size_t i = 0; i < a.materials.size(); ++i) {
+        const Material &x = a.materials[i], &y = b.materials[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.color, y.color);
+        EXPECT_EQ(x.ambient, y.ambient);
+        EXPECT_EQ(x.diffuse, y.diffuse);
+        EXPECT_EQ(x.specular, y.specular);
+        EXPECT_EQ(x.shininess, y.shininess);
+        EXPECT_EQ(x.reflection, y.reflection);
+        EXPECT_EQ(x.spread, y.spread);
+    }
+    ASSERT_EQ(a.models.size(), b.models.size());
+    for (std::size_t i = 0; i < a.models.size(); ++i) {
+        EXPECT_EQ(a.models[i].name, b.models[i].name);
+        EXPECT_TRUE(sameBits(a.models[i].triangleVertices, b.models[i].triangleVertices));
+        EXPECT_TRUE(sameBits(a.models[i].sphereData, b.models[i].sphereData));
+    }
+    ASSERT_EQ(a.instances.size(), b.instances.size());
+    for (std::size_t i = 0; i < a.instances.size(); ++i) {
+        EXPECT_EQ(a.instances[i].model, b.instances[i].model);
+        EXPECT_EQ(a.instances[i].material, b.instances[i].material);
+        EXPECT_TRUE(a.instances[i].transform == b.instances[i].transform);
+    }
+    ASSERT_EQ(a.lights.size(), b.lights.size());
+    for (std::size_t i = 0; i < a.lights.size(); ++i) {
+        EXPECT_EQ(a.lights[i].position, b.lights[i].position);
+        EXPECT_EQ(a.lights[i].color, b.lights[i].color);
+        EXPECT_EQ(a.lights[i].size, b.lights[i].size);
+    }
+    expectSamePrimitives(a.looseObjects, b.looseObjects);
+    expectSamePrimitives(a.primitives, b.primitives);
+}
+
+// What saveSceneXml(scene, "-") writes to standard output.
+std::string savedToStdout(const Scene& scene) {
+    std::ostringstream captured;
+    std::streambuf* old = std::cout.rdbuf(captured.rdbuf());
+    try {
+        saveSceneXml(scene, "-");
+    } catch (...) {
+        std::cout.rdbuf(old);
+        throw;
+    }
+    std::cout.rdbuf(old);
+    return captured.str();
+}
+
+}  // namespace
+
+TEST(XmlWriter, LoadSaveLoadGivesTheSameScene) {
+    TempDir dir;
+    const Scene first = loadTestScene(dir);
+    ASSERT_EQ(first.instances.size(), 3u);
+    ASSERT_TRUE(std::signbit(first.looseObjects.sphere(first.looseObjects.triangleCount()).center.y));
+
+    saveSceneXml(first, dir.path("out/scene.xml"));
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir.path("out/scene/ship_one.raw")));
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir.path("out/scene/balls.raw")));
+    const Scene second = loadSceneXml(dir.path("out/scene.xml"));
+    expectSameScene(first, second);
+    EXPECT_EQ(second.models[0].file, "scene/ship_one.raw");
+    EXPECT_EQ(second.models[0].format, Model::Format::Raw);  // the 3ds model is now RAW
+
+    // Saving the reloaded scene gives the same files again.
+    saveSceneXml(second, dir.path("again/scene.xml"));
+    EXPECT_EQ(readInputFile(dir.path("again/scene.xml")), readInputFile(dir.path("out/scene.xml")));
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path("out/scene")), {}), 2);  // no temporaries
+}
+
+TEST(XmlWriter, StandardOutputHoldsEveryModelInline) {
+    TempDir dir;
+    const Scene first = loadTestScene(dir);
+    const std::string xml = savedToStdout(first);
+    EXPECT_EQ(xml.find("file="), std::string::npos);
+    EXPECT_NE(xml.find("encoding=\"base64\""), std::string::npos);
+    expectSameScene(first, loadSceneXmlFromString(xml, "<stdin>", dir.path("nowhere")));
+}
+
+TEST(XmlWriter, InstancesWithoutTransformHaveNoMatrix) {
+    Scene scene;
+    scene.models.push_back(rawModel({}, {0, 0, 0, 1}));
+    scene.models[0].name = "m";
+    scene.materials.push_back(Material{});
+    scene.instances.push_back({0, 0, Transform()});
+    scene.instances.push_back({0, 0, Transform::translate({1, 2, 3})});
+    scene.flatten();
+    const std::string xml = savedToStdout(scene);
+    EXPECT_NE(xml.find("<matrix m=\"1 0 0 1 0 1 0 2 0 0 1 3\">"), std::string::npos) << xml;
+    EXPECT_EQ(xml.find("<matrix"), xml.rfind("<matrix"));  // only one
+}
+
+TEST(XmlWriter, NamesAreMadeUniqueAndSafe) {
+    TempDir dir;
+    Scene scene;
+    for (const char* name : {"a/b c", "A/B C", "", "..", "a/b c"}) {
+        scene.models.push_back(rawModel({}, {0, 0, 0, 1}));
+        scene.models.back().name = name;
+        scene.instances.push_back({std::uint32_t(scene.models.size() - 1), 0, Transform()});
+    }
+    scene.materials.resize(2);  // both unnamed
+    scene.flatten();
+    saveSceneXml(scene, dir.path("s.xml"));
+    for (const char* file : {"a_b_c.raw", "A_B_C-2.raw", "model.raw", "_..raw", "a_b_c-3.raw"})
+        EXPECT_TRUE(std::filesystem::is_regular_file(dir.path("s/") + file)) << file;
+    const Scene back = loadSceneXml(dir.path("s.xml"));
+    EXPECT_EQ(back.models[4].name, "a/b c-2");
+    EXPECT_EQ(back.materials[1].name, "material-2");
+    expectSamePrimitives(scene.primitives, back.primitives);
+}
+
+TEST(XmlWriter, ModelFolderFollowsTheXmlName) {
+    EXPECT_EQ(modelFolderFor("out/scene.xml"), "out/scene");
+    EXPECT_EQ(modelFolderFor("scene"), "scene.models");
+}

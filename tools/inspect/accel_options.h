@@ -1,0 +1,15 @@
+// The tree parameters on the command line, with the names and ranges rt-render uses, so that
+// a user can tune a tree with rt-inspect and render with the same flags. Defaults and
+// meanings are those of rt::AccelSettings (libtrace/accel/settings.h).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "accel/settings.h"
+
+namespace rt::tool {
+
+// Adds the --bsp-* and --kd-* options; they write into `settings` when the command line is parsed.
+void addAccelOptions(CLI::App& app, AccelSettings& settings);
+
+}  // namespace rt::tool

@@ -1,0 +1,146 @@
+#include "inspection.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "accel/build.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "image/heatmap_png.h"
+#include "inspect/leaf_boxes_obj.h"
+#include "inspect/tree_dump.h"
+#include "inspect/tree_report.h"
+#include "scene/xml_loader.h"
+#include "tool.h"
+
+namespace rt::tool {
+
+namespace {
+
+struct InspectedTree {
+    std::unique_ptr<Accelerator> accel;
+    TreeReport report;
+};
+
+// With several trees each gets its own file: "heat.png" becomes "heat-kd.png".
+std::string pathFor(const std::string& path, const std::string& treeName, bool severalTrees) {
+    if (!severalTrees) return path;
+    const std::filesystem::path p(path);
+    return (p.parent_path() / (p.stem().string() + "-" + treeName + p.extension().string())).string();
+}
+
+void checkOptions(const InspectOptions& o) {
+    const bool several = o.trees.size() > 1;
+    if (several && (o.dumpPath == "-" && !o.dumpFormat.empty()))
+        throw InputError("--dump with several trees needs a file (-f FILE); each tree gets its own");
+    if (several && o.leavesPath == "-") throw InputError("--dump-leaves - (standard output) needs a single tree");
+    if (o.heatmapPath == "-") throw InputError("--heatmap needs a file name; a PNG is not written to standard output");
+}
+
+// Whether something other than the report goes to standard output.
+bool dumpsToStdout(const InspectOptions& o) {
+    return o.leavesPath == "-" || (!o.dumpFormat.empty() && o.dumpPath == "-");
+}
+
+void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
+    const std::string name = accelKindName(tree.report.settings.kind);
+    const bool several = o.trees.size() > 1;
+    if (!o.leavesPath.empty()) {
+        writeFileAtomically(pathFor(o.leavesPath, name, several),
+                            [&](std::ostream& out) { writeLeafBoxesObj(out, *tree.accel, o.cut); });
+    }
+    if (!o.dumpFormat.empty()) {
+        TreeCut cut = o.cut;
+        cut.nonEmptyOnly = false;  // the structure dump shows every node
+        writeFileAtomically(pathFor(o.dumpPath, name, several), [&](std::ostream& out) {
+            if (o.dumpFormat == "dot")
+                writeTreeDot(out, *tree.accel, cut);
+            else
+                writeTreeJson(out, *tree.accel, cut);
+        });
+    }
+}
+
+// One heat map per tree; with several trees they share one scale so that they compare.
+void writeHeatmaps(const InspectOptions& o, const Scene& scene, const std::vector<InspectedTree>& trees) {
+    const int w = o.rayOptions.width, h = o.rayOptions.height;
+    std::vector<std::vector<float>> costs;
+    HeatmapOptions shared = o.heatmap;
+    float maximum = 1;
+    for (const InspectedTree& t : trees) {
+        costs.push_back(cameraRayCost(scene, *t.accel, w, h));
+        maximum = std::max(maximum, heatMaximum(costs.back(), o.heatmap));
+    }
+    if (!shared.maximum) shared.maximum = maximum;
+    for (std::size_t i = 0; i < trees.size(); ++i) {
+        const TreeReport& report = trees[i].report;
+        shared.caption = report.stats.name + ": steps + tests per camera ray";  // the font draws capitals
+        const std::string path = pathFor(o.heatmapPath, accelKindName(report.settings.kind), trees.size() > 1);
+        writeHeatmapPng(path, renderHeatmap(costs[i], w, h, shared));
+    }
+}
+
+void printReport(const InspectOptions& o, const SceneSummary& summary, const std::vector<InspectedTree>& trees) {
+    std::vector<TreeReport> reports;
+    for (const InspectedTree& t : trees) reports.push_back(t.report);
+    if (o.json) {
+        writeReportJson(std::cout, summary, o.rays ? std::optional(o.rayOptions) : std::nullopt, reports);
+        return;
+    }
+    std::cout << "scene " << summary.file << ": " << summary.triangles << " triangles, " << summary.spheres
+              << " spheres, " << summary.lights << " lights\n";
+    if (o.rays) {
+        std::cout << "rays: " << o.rayOptions.width << "x" << o.rayOptions.height << ", shadows "
+                  << (o.rayOptions.shadows ? "on" : "off") << ", reflection depth " << o.rayOptions.reflectionDepth
+                  << "\n";
+    }
+    std::cout << '\n';
+    printTreeTable(std::cout, reports);
+    for (const TreeReport& r : reports) {
+        if (!r.depths) continue;
+        std::cout << "\ndepth histogram: " << r.stats.name << '\n';
+        printDepthHistogram(std::cout, *r.depths);
+    }
+    const auto find = [&](AccelKind kind) -> const TreeReport* {
+        for (const TreeReport& r : reports)
+            if (r.settings.kind == kind) return &r;
+        return nullptr;
+    };
+    const TreeReport* bsp = find(AccelKind::Bsp);
+    const TreeReport* kd = find(AccelKind::Kd);
+    if (o.rays && bsp && kd) {
+        std::cout << '\n';
+        printThesisTable43(std::cout, std::filesystem::path(summary.file).stem().string(), *bsp, *kd);
+    }
+}
+
+}  // namespace
+
+int runInspection(const InspectOptions& o) {
+    checkOptions(o);
+    const Scene scene = loadSceneXml(o.scenePath);
+    for (const std::string& w : scene.warnings) std::cerr << "rt-inspect: warning: " << w << '\n';
+    const SceneSummary summary{o.scenePath == "-" ? "<stdin>" : o.scenePath, scene.primitives.triangleCount(),
+                               scene.primitives.sphereCount(), std::uint32_t(scene.lights.size())};
+
+    std::vector<InspectedTree> trees;
+    for (const AccelKind kind : o.trees) {
+        InspectedTree t;
+        t.report.settings = o.accel;
+        t.report.settings.kind = kind;
+        t.accel = buildAccelerator(scene.primitives, t.report.settings);
+        t.report.stats = t.accel->stats();
+        t.report.scenePrimitives = scene.primitives.size();
+        if (o.rays) t.report.rays = traceRayStatistics(scene, *t.accel, o.rayOptions);
+        if (o.depthHistogram) t.report.depths = depthHistogram(*t.accel);
+        writeDumps(o, t);
+        trees.push_back(std::move(t));
+    }
+    if (!o.heatmapPath.empty()) writeHeatmaps(o, scene, trees);
+    if (!dumpsToStdout(o)) printReport(o, summary, trees);
+    return kExitOk;
+}
+
+}  // namespace rt::tool

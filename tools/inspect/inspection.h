@@ -1,0 +1,36 @@
+// What one run of rt-inspect does: load the scene, build the trees asked for, and write
+// the statistics, dumps and heat maps the options name. The pieces live in libtrace/inspect.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accel/settings.h"
+#include "inspect/heatmap.h"
+#include "inspect/ray_statistics.h"
+#include "inspect/tree_cut.h"
+
+namespace rt::tool {
+
+struct InspectOptions {
+    std::string scenePath;             // "-" reads standard input
+    std::vector<AccelKind> trees;      // in the order they are reported
+    AccelSettings accel;
+    bool json = false;
+    bool rays = false;
+    RayOptions rayOptions;             // also the heat map's resolution
+    bool depthHistogram = false;
+    std::string leavesPath;            // --dump-leaves
+    std::string dumpFormat;            // "dot" or "json"; empty: no dump
+    std::string dumpPath = "-";
+    TreeCut cut;                       // --max-depth and --leaves
+    std::string heatmapPath;
+    HeatmapOptions heatmap;
+};
+
+// Returns the exit code. Throws rt::InputError for bad input, other exceptions for failures.
+int runInspection(const InspectOptions& options);
+
+}  // namespace rt::tool
