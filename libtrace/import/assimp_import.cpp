@@ -30,9 +30,14 @@ Transform toTransform(const aiMatrix4x4& m) {
 Vec3 toVec3(const aiVector3D& v) { return {Real(v.x), Real(v.y), Real(v.z)}; }
 
 // An importer without Assimp's glTF readers, which abort on some broken files.
+// UnregisterLoader hands the reader back to the caller, who deletes it.
 void removeGltfImporters(Assimp::Importer& importer) {
-    for (const char* ext : {"gltf", "glb"})
-        while (Assimp::BaseImporter* reader = importer.GetImporter(ext)) importer.UnregisterLoader(reader);
+    for (const char* ext : {"gltf", "glb"}) {
+        while (Assimp::BaseImporter* reader = importer.GetImporter(ext)) {
+            importer.UnregisterLoader(reader);
+            delete reader;
+        }
+    }
 }
 
 // The name of the importer that reads the file. Without an extension Assimp knows, Assimp

@@ -68,4 +68,8 @@ for key in primaryRays:cameraRays shadowRays reflectionRays rays intersectionTes
     ours=$(json_number "${key##*:}" "$WORK/stdout")
     [ -n "$ours" ] && [ "$ours" = "$theirs" ] || fail "${key##*:}: rt-inspect counts $ours, rt-render $theirs"
 done
+# Model files go through rt-convert's importers, converted in memory; broken ones are bad input.
+expect_exit 0 "$RT_INSPECT" --tree kd --json "$RT_SHARED_DIR/models/obj/spd-teapot/teapot_s2.obj"
+[ "$(json_number triangles "$WORK/stdout")" = 248 ] || fail "the SPD teapot has 248 triangles (MANIFEST.md)"
+expect_exit 2 "$RT_INSPECT" "$RT_SHARED_DIR/models/bad/gltf-IndexOutOfRange/IndexOutOfRange.gltf"
 echo "inspect_stats: ok"
