@@ -57,6 +57,12 @@ std::size_t Scene::flatten() {
     return dropped;
 }
 
+void Scene::dropDescription() {
+    std::vector<Model>().swap(models);
+    std::vector<Instance>().swap(instances);
+    looseObjects = Primitives();
+}
+
 std::optional<std::uint32_t> Scene::findMaterial(const std::string& name) const {
     for (std::uint32_t i = 0; i < materials.size(); ++i)
         if (materials[i].name == name) return i;

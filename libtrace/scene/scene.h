@@ -85,6 +85,9 @@ struct Scene {
     // Rebuilds `primitives` from the loose objects and the instances. Degenerate
     // primitives (zero area, radius <= 0, non-finite) are dropped; returns how many.
     std::size_t flatten();
+    // Frees the models and instances once `primitives` is built, for tools that only trace
+    // rays: a model's own copy of its geometry would otherwise add 36 bytes per triangle.
+    void dropDescription();
     std::optional<std::uint32_t> findMaterial(const std::string& name) const;
     std::optional<std::uint32_t> findModel(const std::string& name) const;
 };

@@ -3,7 +3,8 @@
 # file's camera and point light, Duck with the file's camera and the generated light. The
 # tolerance is the golden-image test's (tests/image/render_golden_test.cpp): every channel
 # within 2e-3 except at most 1% of the pixels (float geometry moves an edge across a pixel
-# centre). The scene piped through -o - renders exactly as the scene written to files.
+# centre). The scene piped through -o - renders exactly as the scene written to files, and
+# rt-render reading the model file itself (converted in memory) renders the same picture.
 # Regenerate: RT_UPDATE_GOLDEN=1 ctest -R cli.convert_render, then look at the pictures.
 source "$(dirname "$0")/common.bash"
 MODELS="$RT_SHARED_DIR/models"
@@ -17,6 +18,9 @@ for case in issue261:gltf/PointLightCamera-issue261/issue-261.gltf duck:gltf/Duc
     "$RT_CONVERT" "$model" -o - 2>/dev/null | render - "$WORK/$name-piped.exr" || fail "$name: rt-render - failed"
     idiff -fail 0 -warn 0 "$WORK/$name-files.exr" "$WORK/$name-piped.exr" >"$WORK/idiff.txt" ||
         fail "$name: piped and written scenes render differently: $(cat "$WORK/idiff.txt")"
+    render "$model" "$WORK/$name-direct.exr" || fail "$name: rt-render failed on the model file itself"
+    idiff -fail 0 -warn 0 "$WORK/$name-files.exr" "$WORK/$name-direct.exr" \
+        >"$WORK/idiff.txt" || fail "$name: the model file renders differently: $(cat "$WORK/idiff.txt")"
     reference="$GOLDEN/convert_$name.exr"
     if [ -n "${RT_UPDATE_GOLDEN:-}" ]; then
         cp "$WORK/$name-files.exr" "$reference"

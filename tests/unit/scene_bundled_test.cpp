@@ -49,3 +49,17 @@ TEST(SceneBundled, RawModelsAreWhatTheWriterWrites) {
         EXPECT_EQ(written.str(), readInputFile(path)) << name;
     }
 }
+
+TEST(Scene, DropDescriptionKeepsThePrimitives) {
+    rt::Scene scene;
+    rt::Model model;
+    model.triangleVertices = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    scene.models.push_back(model);
+    scene.instances.push_back({0, 0, rt::Transform::translate({0, 0, 5})});
+    scene.flatten();
+    scene.dropDescription();
+    EXPECT_TRUE(scene.models.empty());
+    EXPECT_TRUE(scene.instances.empty());
+    ASSERT_EQ(scene.primitives.size(), 1u);
+    EXPECT_EQ(scene.primitives.triangle(0).p0.z, 5);
+}

@@ -12,8 +12,7 @@
 #include "inspect/leaf_boxes_obj.h"
 #include "inspect/tree_dump.h"
 #include "inspect/tree_report.h"
-#include "import/import.h"
-#include "scene/xml_loader.h"
+#include "import/load_scene.h"
 #include "tool.h"
 
 namespace rt::tool {
@@ -117,23 +116,12 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
     }
 }
 
-// The thesis's XML (or standard input); any other file goes through rt-convert's importers
-// (glTF via tinygltf, the rest via Assimp), converted in memory.
-Scene loadInspectedScene(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (path == "-" || extension == ".xml") return loadSceneXml(path);
-    ImportResult imported = importScene(path);
-    for (const std::string& note : imported.report.notes) std::cerr << "rt-inspect: " << note << '\n';
-    imported.scene.flatten();
-    return std::move(imported.scene);
-}
-
 }  // namespace
 
 int runInspection(const InspectOptions& o) {
     checkOptions(o);
-    const Scene scene = loadInspectedScene(o.scenePath);
+    Scene scene = loadScene(o.scenePath);
+    scene.dropDescription();
     for (const std::string& w : scene.warnings) std::cerr << "rt-inspect: warning: " << w << '\n';
     const SceneSummary summary{o.scenePath == "-" ? "<stdin>" : o.scenePath, scene.primitives.triangleCount(),
                                scene.primitives.sphereCount(), std::uint32_t(scene.lights.size())};

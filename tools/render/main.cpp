@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "render_command.h"
+#include "accel_options.h"
 #include "tool.h"
 
 namespace {
@@ -44,28 +45,6 @@ void addQualityOptions(CLI::App& app, RenderOptions& o) {
         ->check(CLI::Range(1, 1 << 20))->capture_default_str()->group(group);
 }
 
-void addTreeOptions(CLI::App& app, rt::AccelSettings& a, std::string& kdSplit) {
-    const char* group = "Tree options";
-    app.add_option("--bsp-max-depth", a.bsp.maxDepth, "BSP: maximum depth")->check(CLI::Range(1, 64))
-        ->capture_default_str()->group(group);
-    app.add_option("--bsp-min-prims", a.bsp.minPrimitives, "BSP: a node with this many primitives or fewer is a leaf")
-        ->check(CLI::Range(1, 1 << 20))->capture_default_str()->group(group);
-    app.add_flag("--bsp-round-robin", a.bsp.roundRobin, "BSP: split axes X, Y, Z in turn, not the longest")
-        ->group(group);
-    app.add_option("--kd-traversal-cost", a.kd.traversalCost, "KD: SAH traversal cost")
-        ->check(CLI::PositiveNumber)->capture_default_str()->group(group);
-    app.add_option("--kd-intersection-cost", a.kd.intersectionCost, "KD: SAH intersection cost")
-        ->check(CLI::PositiveNumber)->capture_default_str()->group(group);
-    app.add_option("--kd-empty-bonus", a.kd.emptyBonus, "KD: cost factor for cutting off empty space (1 = none)")
-        ->check(CLI::Range(0.0, 1.0))->capture_default_str()->group(group);
-    app.add_option("--kd-max-depth", a.kd.maxDepth, "KD: maximum depth (default 8 + 1.3 log2 N)")
-        ->check(CLI::Range(1, 64))->group(group);
-    app.add_option("--kd-split", kdSplit, "KD: split search sweep, sort or sample")
-        ->check(CLI::IsMember({"sweep", "sort", "sample"}))->capture_default_str()->group(group);
-    app.add_option("--kd-samples", a.kd.samples, "KD: candidate planes per axis for --kd-split sample")
-        ->check(CLI::Range(1, 1024))->capture_default_str()->group(group);
-}
-
 void addImageOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Colour and file options";
     app.add_option("--color-config", o.color.configPath, "OpenColorIO config (default: $OCIO, then rt's own)")
@@ -100,11 +79,10 @@ int main(int argc, char** argv) {
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-render"));
     RenderOptions options;
     std::string accelName = "naive";
-    std::string kdSplit = rt::kdSplitMethodName(options.accel.kd.splitMethod);
-    app.add_option("scene", options.scenePath, "Scene file (XML); - reads standard input")->required();
+    app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")->required();
     addRenderingOptions(app, options, accelName);
     addQualityOptions(app, options);
-    addTreeOptions(app, options.accel, kdSplit);
+    rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);
     addOtherOptions(app, options);
     try {
@@ -113,6 +91,5 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? rt::tool::kExitOk : rt::tool::kExitBadInput;
     }
     options.accel.kind = *rt::parseAccelKind(accelName);
-    options.accel.kd.splitMethod = *rt::parseKdSplitMethod(kdSplit);
     return rt::tool::run("rt-render", [&] { return rt::render_tool::runRender(options); });
 }

@@ -9,9 +9,10 @@
 #include "accel/build.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "import/load_scene.h"
 #include "progress_bar.h"
 #include "render/renderer.h"
-#include "scene/xml_loader.h"
+#include "import/load_scene.h"
 #include "stats_report.h"
 #include "version.h"
 
@@ -69,7 +70,8 @@ int runRender(RenderOptions o) {
     const ImageOutputSettings output = outputSettings(o);
     if (output.format != ImageFormat::Null) ColorPipeline check(output.color);  // bad colour names fail before rendering
 
-    const Scene scene = loadSceneXml(o.scenePath);
+    Scene scene = loadScene(o.scenePath);
+    scene.dropDescription();
     RenderStats stats;
     const auto buildStart = std::chrono::steady_clock::now();
     const std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, o.accel);

@@ -1,4 +1,4 @@
-// The tree parameters on the command line, with the names and ranges rt-render uses, so that
+// The tree parameters on the command line, shared by rt-render and rt-inspect so that
 // a user can tune a tree with rt-inspect and render with the same flags. Defaults and
 // meanings are those of rt::AccelSettings (libtrace/accel/settings.h).
 #pragma once

@@ -3,7 +3,7 @@
 namespace rt::tool {
 
 void addAccelOptions(CLI::App& app, AccelSettings& settings) {
-    const char* group = "Tree parameters (as rt-render)";
+    const char* group = "Tree options";
     BspSettings& bsp = settings.bsp;
     KdSettings& kd = settings.kd;
     app.add_option("--bsp-max-depth", bsp.maxDepth, "BSP: maximum depth")
