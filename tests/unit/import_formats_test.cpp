@@ -1,0 +1,273 @@
+// Import of the Assimp formats shared/models has no files for (PLY, STL, Collada, NFF, OFF):
+// tiny files written here, so that each checks where the file puts its vertices, how many
+// triangles it has, and for Collada that a mesh placed by two nodes stays one model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "import/import.h"
+#include "import_test_util.h"
+#include "test_util.h"
+
+namespace rt {
+namespace {
+
+using test::TempDir;
+
+// Twice the area of every triangle of every model, summed: the winding and the way a
+// polygon was split do not change it, the vertices do.
+double doubleArea(const Scene& scene) {
+    double sum = 0;
+    for (const Model& m : scene.models) {
+        const std::vector<float>& v = m.triangleVertices;
+        for (std::size_t t = 0; t + 9 <= v.size(); t += 9) {
+            const Vec3 a(v[t], v[t + 1], v[t + 2]), b(v[t + 3], v[t + 4], v[t + 5]), c(v[t + 6], v[t + 7], v[t + 8]);
+            sum += double(length(cross(b - a, c - a)));
+        }
+    }
+    return sum;
+}
+
+// Every triangle corner of every model is one of `points`: nothing moved, nothing invented.
+void expectCornersAmong(const Scene& scene, const std::vector<Vec3>& points) {
+    for (const Model& m : scene.models) {
+        for (std::size_t i = 0; i + 3 <= m.triangleVertices.size(); i += 3) {
+            const Vec3 p(m.triangleVertices[i], m.triangleVertices[i + 1], m.triangleVertices[i + 2]);
+            const bool found = std::any_of(points.begin(), points.end(),
+                                           [&](const Vec3& q) { return length(p - q) < Real(1e-6); });
+            EXPECT_TRUE(found) << "corner (" << p.x << ", " << p.y << ", " << p.z << ") is not a vertex of the file";
+        }
+    }
+}
+
+// The message of the rt::InputError importing `path` throws; empty (and a failure) if it throws none.
+std::string inputErrorOf(const std::string& path) {
+    try {
+        importScene(path);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << path << " imported without an error";
+    return "";
+}
+
+// The unit square z = 0 split by Triangulate, and a triangle above it at z = 1.
+const char* const kPlyQuadAndTriangle = R"(ply
+format ascii 1.0
+element vertex 7
+property float x
+property float y
+property float z
+element face 2
+property list uchar int vertex_indices
+end_header
+0 0 0
+2 0 0
+2 1 0
+0 1 0
+0 0 1
+1 0 1
+0 3 1
+4 0 1 2 3
+3 4 5 6
+)";
+
+TEST(ImportFormats, AsciiPlyQuadAndTriangle) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write("quad.ply", kPlyQuadAndTriangle));
+    EXPECT_EQ(test::modelTriangles(r.scene), 3u);  // the quad as two triangles
+    EXPECT_NEAR(doubleArea(r.scene), 2 * 2 + 3, 1e-5);
+    expectCornersAmong(r.scene, {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 3, 1}});
+}
+
+TEST(ImportFormats, PlyFaceIndexOutOfRangeIsAnInputError) {
+    TempDir dir;
+    const std::string bad = dir.write("bad.ply", test::replaceOnce(kPlyQuadAndTriangle, "3 4 5 6", "3 4 5 7"));
+    EXPECT_NE(inputErrorOf(bad).find("out of range"), std::string::npos);  // Assimp's validation finds it
+}
+
+TEST(ImportFormats, AsciiStlTwoFacets) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write("two.stl", R"(solid two
+facet normal 0 0 1
+  outer loop
+    vertex 0 0 0
+    vertex 1 0 0
+    vertex 0 1 0
+  endloop
+endfacet
+facet normal 1 0 0
+  outer loop
+    vertex 5 0 0
+    vertex 5 2 0
+    vertex 5 0 2
+  endloop
+endfacet
+endsolid two
+)"));
+    EXPECT_EQ(test::modelTriangles(r.scene), 2u);
+    EXPECT_NEAR(doubleArea(r.scene), 1 + 4, 1e-5);
+    expectCornersAmong(r.scene, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {5, 2, 0}, {5, 0, 2}});
+}
+
+// Binary STL: an 80-byte header, a little-endian uint32 facet count, then per facet a normal,
+// three vertices (12 floats) and a 16-bit attribute word, 50 bytes.
+std::string binaryStl(const std::string& header, const std::vector<std::vector<float>>& facets) {
+    std::string out = header;
+    out.resize(80, ' ');
+    const std::uint32_t count = std::uint32_t(facets.size());
+    const auto put = [&out](const void* p, std::size_t n) { out.append(static_cast<const char*>(p), n); };
+    put(&count, 4);  // the test machines are little-endian, as the format
+    for (const std::vector<float>& f : facets) {
+        const float normal[3] = {0, 0, 1};
+        put(normal, sizeof normal);
+        put(f.data(), 9 * sizeof(float));
+        const std::uint16_t attribute = 0;
+        put(&attribute, 2);
+    }
+    return out;
+}
+
+const std::vector<std::vector<float>> kStlFacets{{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 3, 2, 0, 3, 0, 2, 3}};
+
+// Many exporters start the binary header with "solid", which should announce ASCII; Assimp
+// reads the file as binary when its size is exactly what the facet count says.
+const char* const kStlHeaders[] = {"binary facets", "solid written by a careless exporter"};
+
+TEST(ImportFormats, BinaryStl) {
+    TempDir dir;
+    for (const char* header : kStlHeaders) {
+        SCOPED_TRACE(header);
+        const ImportResult r = importScene(dir.write("two.stl", binaryStl(header, kStlFacets)));
+        EXPECT_EQ(test::modelTriangles(r.scene), 2u);
+        EXPECT_NEAR(doubleArea(r.scene), 1 + 4, 1e-5);
+        expectCornersAmong(r.scene, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 3}, {2, 0, 3}, {0, 2, 3}});
+    }
+}
+
+// The count promises two facets; the file ends 20 bytes into the second. Assimp then does not
+// take it for binary; under a "solid" header it parses the bytes as ASCII and finds no vertex.
+TEST(ImportFormats, TruncatedBinaryStlIsAnInputError) {
+    TempDir dir;
+    for (const char* header : kStlHeaders) {
+        SCOPED_TRACE(header);
+        const std::string whole = binaryStl(header, kStlFacets);
+        EXPECT_FALSE(inputErrorOf(dir.write("cut.stl", whole.substr(0, whole.size() - 30))).empty());
+    }
+}
+
+// One geometry (a unit right triangle) placed by two nodes, each with a translate, and bound
+// to a material whose Phong diffuse is orange.
+const char* const kColladaTwoPlacements = R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
+  <library_effects>
+    <effect id="orange-fx"><profile_COMMON><technique sid="common"><phong>
+      <diffuse><color>1 0.5 0.25 1</color></diffuse>
+    </phong></technique></profile_COMMON></effect>
+  </library_effects>
+  <library_materials>
+    <material id="orange" name="orange"><instance_effect url="#orange-fx"/></material>
+  </library_materials>
+  <library_geometries>
+    <geometry id="tri" name="tri"><mesh>
+      <source id="tri-pos">
+        <float_array id="tri-pos-array" count="9">0 0 0 1 0 0 0 1 0</float_array>
+        <technique_common><accessor source="#tri-pos-array" count="3" stride="3">
+          <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+        </accessor></technique_common>
+      </source>
+      <vertices id="tri-vtx"><input semantic="POSITION" source="#tri-pos"/></vertices>
+      <triangles material="paint" count="1">
+        <input semantic="VERTEX" source="#tri-vtx" offset="0"/>
+        <p>0 1 2</p>
+      </triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes>
+    <visual_scene id="scene">
+      <node id="left" name="left"><translate>-3 0 0</translate>
+        <instance_geometry url="#tri"><bind_material><technique_common>
+          <instance_material symbol="paint" target="#orange"/>
+        </technique_common></bind_material></instance_geometry>
+      </node>
+      <node id="right" name="right"><translate>4 2 1</translate>
+        <instance_geometry url="#tri"><bind_material><technique_common>
+          <instance_material symbol="paint" target="#orange"/>
+        </technique_common></bind_material></instance_geometry>
+      </node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+
+TEST(ImportFormats, ColladaMeshPlacedTwiceIsOneModelWithTwoInstances) {
+    TempDir dir;
+    ImportResult r = importScene(dir.write("two.dae", kColladaTwoPlacements));
+    ASSERT_EQ(r.scene.models.size(), 1u);
+    EXPECT_EQ(r.scene.models[0].triangleCount(), 1u);
+    expectCornersAmong(r.scene, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    ASSERT_EQ(r.scene.instances.size(), 2u);
+    std::vector<Vec3> origins;
+    for (const Instance& i : r.scene.instances) {
+        EXPECT_EQ(i.model, 0u);
+        origins.push_back(i.transform.point(Vec3(0, 0, 0)));
+        const Material& m = r.scene.materials.at(i.material);
+        EXPECT_FLOAT_EQ(m.color.r, 1);
+        EXPECT_FLOAT_EQ(m.color.g, 0.5f);
+        EXPECT_FLOAT_EQ(m.color.b, 0.25f);
+    }
+    std::sort(origins.begin(), origins.end(), [](const Vec3& a, const Vec3& b) { return a.x < b.x; });
+    expectNear(origins[0], {-3, 0, 0});
+    expectNear(origins[1], {4, 2, 1});
+    r.scene.flatten();
+    EXPECT_EQ(r.scene.primitives.triangleCount(), 2u);
+}
+
+// An NFF polygon ("p", vertex count, then one vertex per line) after a fill colour
+// ("f" red green blue Kd Ks shine transmittance index of refraction).
+TEST(ImportFormats, NffPolygon) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write("quad.nff", R"(f 0.2 0.4 0.6 1 0 0 0 1
+p 4
+0 0 0
+3 0 0
+3 2 0
+0 2 0
+)"));
+    EXPECT_EQ(test::modelTriangles(r.scene), 2u);
+    EXPECT_NEAR(doubleArea(r.scene), 2 * 6, 1e-5);
+    ASSERT_EQ(r.scene.materials.size(), 1u);
+    EXPECT_FLOAT_EQ(r.scene.materials[0].color.r, 0.2f);
+    EXPECT_FLOAT_EQ(r.scene.materials[0].color.g, 0.4f);
+    EXPECT_FLOAT_EQ(r.scene.materials[0].color.b, 0.6f);
+    expectCornersAmong(r.scene, {{0, 0, 0}, {3, 0, 0}, {3, 2, 0}, {0, 2, 0}});
+}
+
+// OFF: the counts (vertices, faces, edges), the vertices, then faces as a count and indices.
+TEST(ImportFormats, OffQuadAndTriangle) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write("shape.off", R"(OFF
+6 2 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 2
+2 0 2
+4 0 1 2 3
+3 0 4 5
+)"));
+    EXPECT_EQ(test::modelTriangles(r.scene), 3u);
+    EXPECT_NEAR(doubleArea(r.scene), 2 * 1 + 4, 1e-5);
+    expectCornersAmong(r.scene, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 2}});
+}
+
+}  // namespace
+}  // namespace rt
