@@ -26,13 +26,14 @@ bool carriesEvents(KdSplitMethod method, std::size_t primitives) {
     return method == KdSplitMethod::Sweep && primitives >= kSweepMinimum;
 }
 
-// Runs f(axis) for the three axes, as OpenMP tasks in a node big enough for the build's
-// tasks (tree_builder.h): the top levels hold fewer nodes than there are threads, and a
-// node's sweep and event split are independent per axis. Measured at 1M triangles, the
-// root alone took 16% of the wall time on one thread (docs/benchmarks.md).
+// Runs f(axis) for the three axes, as OpenMP tasks if `parallel`. Used at the root, whose
+// sweep and event split over millions of events (out of the caches at 1M triangles) would
+// otherwise keep the other threads waiting for the first subtree task. Below the root every
+// thread has a subtree of its own; axis tasks there made the 1M build 75% slower in wall
+// time (same CPU time: threads idle at the task waits).
 template <typename PerAxis>
-void forEachAxis(std::size_t primitives, const PerAxis& f) {
-    if (primitives < kTaskPrimitives) {
+void forEachAxis(bool parallel, const PerAxis& f) {
+    if (!parallel) {
         for (int axis = 0; axis < 3; ++axis) f(axis);
         return;
     }
@@ -86,7 +87,7 @@ private:
         // Each axis keeps its own best plane; taking them in axis order with strict < (as
         // SahModel::offer does) gives the plane one sweep over all three axes would.
         std::array<SahSplit, 3> bestOf;
-        forEachAxis(node.primitives.size(), [&](int axis) {
+        forEachAxis(node.depth == 0, [&](int axis) {
             sweepSortedEvents(node.events[axis], axis, node.primitives.size(), sah, bestOf[axis]);
         });
         SahSplit best;
@@ -136,7 +137,7 @@ private:
             addClipped(above, node.primitives[i]);
         }
         if (carriesEvents(settings_.splitMethod, n)) {
-            forEachAxis(n, [&](int a) {
+            forEachAxis(node.depth == 0, [&](int a) {
                 std::vector<SplitEvent>& belowEvents = below.events[a];
                 std::vector<SplitEvent>& aboveEvents = above.events[a];
                 belowEvents.reserve(2 * below.primitives.size());
