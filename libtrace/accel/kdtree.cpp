@@ -115,9 +115,10 @@ private:
             child->primitives.reserve(n);
             child->boxes.reserve(n);
         }
-        std::vector<std::uint32_t> index(2 * n, kNone);  // each primitive's index in the child below, above
-        std::uint32_t* belowIndex = index.data();
-        std::uint32_t* aboveIndex = index.data() + n;
+        // Each primitive's place in its one child, (index << 1) | isAbove, or kNone if it
+        // straddles. One array, looked up once per event in the events' (random) primitive
+        // order: at the top levels it does not fit in the caches.
+        std::vector<std::uint32_t> place(n, kNone);
         std::vector<std::uint32_t> straddling;
         for (std::uint32_t i = 0; i < n; ++i) {
             const FloatBox& box = node.boxes[i];
@@ -126,9 +127,9 @@ private:
             if (b && a) {
                 straddling.push_back(i);
             } else if (b) {
-                belowIndex[i] = add(below, node.primitives[i], box);
+                place[i] = add(below, node.primitives[i], box) << 1;
             } else {
-                aboveIndex[i] = add(above, node.primitives[i], box);
+                place[i] = add(above, node.primitives[i], box) << 1 | 1;
             }
         }
         const std::size_t belowKept = below.primitives.size(), aboveKept = above.primitives.size();
@@ -143,9 +144,9 @@ private:
                 belowEvents.reserve(2 * below.primitives.size());
                 aboveEvents.reserve(2 * above.primitives.size());
                 for (const SplitEvent& e : node.events[a]) {
-                    const std::uint32_t i = e.primitive();
-                    if (belowIndex[i] != kNone) belowEvents.emplace_back(e.pos, belowIndex[i], e.type());
-                    else if (aboveIndex[i] != kNone) aboveEvents.emplace_back(e.pos, aboveIndex[i], e.type());
+                    const std::uint32_t p = place[e.primitive()];
+                    if (p == kNone) continue;
+                    (p & 1 ? aboveEvents : belowEvents).emplace_back(e.pos, p >> 1, e.type());
                 }
                 mergeClippedEvents(below, belowKept, a);
                 mergeClippedEvents(above, aboveKept, a);
