@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <utility>
 
 namespace rt {
 
@@ -14,6 +15,15 @@ void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vect
     }
 }
 
+void addEventsByType(const std::vector<FloatBox>& boxes, int axis, std::vector<SplitEvent>& events) {
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        if (!boxes[i].planar(axis)) events.emplace_back(boxes[i].hi[axis], i, SplitEvent::End);
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        if (boxes[i].planar(axis)) events.emplace_back(boxes[i].lo[axis], i, SplitEvent::Planar);
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        if (!boxes[i].planar(axis)) events.emplace_back(boxes[i].lo[axis], i, SplitEvent::Start);
+}
+
 namespace {
 
 // A float's bits as an unsigned key in the float's order (negative values flipped
@@ -23,13 +33,14 @@ std::uint32_t orderedKey(float pos) {
     return bits & 0x80000000u ? ~bits : bits | 0x80000000u;
 }
 
-// One stable counting-sort pass of `events` by `digit` (values below `buckets`).
+bool typeBefore(const SplitEvent& a, const SplitEvent& b) { return a.type() < b.type(); }
+
+// One stable counting-sort pass of `events` by `digit`, given the digit's histogram.
 template <typename Digit>
-void countingPass(std::vector<SplitEvent>& events, std::vector<SplitEvent>& buffer, std::size_t buckets,
+void countingPass(std::vector<SplitEvent>& events, std::vector<SplitEvent>& buffer, std::vector<std::size_t> start,
                   const Digit& digit) {
-    std::vector<std::size_t> start(buckets + 1, 0);
-    for (const SplitEvent& e : events) ++start[digit(e) + 1];
-    for (std::size_t b = 1; b <= buckets; ++b) start[b] += start[b - 1];
+    std::size_t sum = 0;
+    for (std::size_t& s : start) sum += std::exchange(s, sum);
     for (const SplitEvent& e : events) buffer[start[digit(e)]++] = e;
     events.swap(buffer);
 }
@@ -38,12 +49,28 @@ void countingPass(std::vector<SplitEvent>& events, std::vector<SplitEvent>& buff
 
 // The type first, then the position in three passes of 11 bits: each pass is stable, so
 // the last (the position's top bits) decides first and the type last, as operator< does.
+// The root's millions of events do not fit in the caches, so every pass over them counts:
+// the type pass is skipped when the events already come in type order (the root's do,
+// addEventsByType), and one read counts the digits of all three position passes.
 void radixSortEvents(std::vector<SplitEvent>& events) {
     std::vector<SplitEvent> buffer(events.size(), SplitEvent(0, 0, SplitEvent::End));
-    countingPass(events, buffer, 3, [](const SplitEvent& e) { return std::size_t(e.type()); });
-    for (int shift = 0; shift < 32; shift += 11) {
-        countingPass(events, buffer, 2048,
-                     [shift](const SplitEvent& e) { return std::size_t(orderedKey(e.pos) >> shift) & 2047u; });
+    if (!std::is_sorted(events.begin(), events.end(), typeBefore)) {
+        std::vector<std::size_t> types(3, 0);
+        for (const SplitEvent& e : events) ++types[e.type()];
+        countingPass(events, buffer, std::move(types), [](const SplitEvent& e) { return std::size_t(e.type()); });
+    }
+    constexpr int kBits = 11, kPasses = 3;
+    constexpr std::uint32_t kMask = (1u << kBits) - 1;
+    std::vector<std::size_t> histograms[kPasses];
+    for (std::vector<std::size_t>& h : histograms) h.assign(kMask + 1, 0);
+    for (const SplitEvent& e : events) {
+        const std::uint32_t key = orderedKey(e.pos);
+        for (int p = 0; p < kPasses; ++p) ++histograms[p][(key >> (p * kBits)) & kMask];
+    }
+    for (int p = 0; p < kPasses; ++p) {
+        const int shift = p * kBits;
+        countingPass(events, buffer, std::move(histograms[p]),
+                     [shift](const SplitEvent& e) { return std::size_t(orderedKey(e.pos) >> shift) & kMask; });
     }
 }
 
