@@ -92,7 +92,7 @@ float Tracer::visibility(const Vec3& p, const Vec3& n, const Light& light, bool 
     const Vec3 origin = p + n * epsilon_;
     const bool area = settings_.softShadows && light.size > 0;
     const int samples = area && !inBundle ? settings_.distributedSamples : 1;
-    const Vec3 axis = normalize(light.position - origin);
+    const Vec3 axis = area ? normalize(light.position - origin) : Vec3{};  // only area lights need it
     int visible = 0;
     for (int s = 0; s < samples; ++s) {
         const Vec3 target = area ? pointOnDisc(light.position, axis, light.size, rng) : light.position;
