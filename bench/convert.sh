@@ -3,7 +3,7 @@
 # bytes it writes (scene XML + RAW models); the goal is a peak under 3x what is written.
 #   bench/convert.sh [build-dir]        (default: build/release; models from $RT_SHARED_DIR or ../shared)
 # Peak memory is the maximum resident set size from /usr/bin/time -v. The process's own
-# start-up (code and shared libraries: Assimp, tinygltf, libstdc++) is measured apart with
+# start-up (code and shared libraries: Assimp, tinygltf, tinyobjloader, libstdc++) is measured apart with
 # `rt-convert --version` and reported, so that "work" = peak - start-up is what converting costs.
 set -euo pipefail
 cd "$(dirname "$0")/.."

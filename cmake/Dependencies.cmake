@@ -6,6 +6,7 @@ find_package(OpenMP REQUIRED)
 find_package(pugixml 1.13 CONFIG REQUIRED)
 find_package(assimp 5.2 CONFIG REQUIRED)
 find_package(TinyGLTF 2.7 CONFIG REQUIRED)
+find_package(tinyobjloader CONFIG REQUIRED)  # Debian 12: 2.0.0~rc10 (the callback API streams OBJ)
 find_package(CLI11 2.1 CONFIG REQUIRED)
 
 find_package(OpenImageIO 2.4 CONFIG REQUIRED)

@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
     cmake ninja-build g++ pkg-config ccache
-    libassimp-dev libtinygltf-dev libopenimageio-dev libopencolorio-dev libcli11-dev
+    libassimp-dev libtinygltf-dev libtinyobjloader-dev libopenimageio-dev libopencolorio-dev libcli11-dev
     libpugixml-dev libgtest-dev libbenchmark-dev
     openimageio-tools opencolorio-tools
 )

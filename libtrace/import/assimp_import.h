@@ -1,4 +1,4 @@
-// Every other format Assimp reads (OBJ with its .mtl, 3DS, PLY, STL, FBX, DAE, NFF, ...).
+// Every other format Assimp reads (3DS, PLY, STL, FBX, DAE, NFF, ...); glTF and OBJ have their own importers.
 #pragma once
 
 #include <string>

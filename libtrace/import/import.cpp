@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "import/assimp_import.h"
 #include "import/gltf_import.h"
+#include "import/obj_import.h"
 #include "import/scene_defaults.h"
 
 namespace rt {
@@ -51,8 +52,9 @@ ImportResult importScene(const std::string& path, const ImportOptions& options) 
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
     const Transform root = rootTransform(options);
-    ImportResult result =
-        isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, root) : importAssimp(path, options, root);
+    ImportResult result = isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, root)
+                          : lowerCaseExtension(path) == ".obj" ? importObj(path, options, root)
+                                                               : importAssimp(path, options, root);
     if (result.scene.instances.empty()) throw InputError(path + ": nothing to convert: the scene places no triangles");
     noteDrops(result.report);
     addMissingCameraAndLight(result, options.aspect);

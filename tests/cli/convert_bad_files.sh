@@ -7,6 +7,7 @@ BAD="$RT_SHARED_DIR/models/bad"
 
 valid_enough=(
     assimp-invalid/malformed2.obj
+    derived-obj/box_truncated.obj
     obj-tinyobjloader/missing_material_file.obj
     glb-BoxBadNormals/BoxBadNormals.glb
     gltf-IncorrectVertexArrays/Cube.gltf

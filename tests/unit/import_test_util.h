@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "import/import.h"
+#include "scene_test_files.h"
 
 namespace rt::test {
 
@@ -122,29 +123,7 @@ struct GltfFixture {
     }
 };
 
-// A fresh folder for one test's files, removed with everything in it at the end.
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = std::filesystem::temp_directory_path() /
-                ("rt-import-test-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name());
-        std::filesystem::create_directories(path_);
-    }
-    ~TempDir() { std::filesystem::remove_all(path_); }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    // Writes `text` to a file of that name here and returns its path.
-    std::string write(const std::string& name, const std::string& text) const {
-        std::ofstream(path_ / name, std::ios::binary) << text;
-        return (path_ / name).string();
-    }
-    std::string path(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    std::filesystem::path path_;
-};
+using ::TempDir;  // scene_test_files.h
 
 // `text` with the first `from` replaced by `to`; a test fails if `from` is not there.
 inline std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {

@@ -1,0 +1,255 @@
+#include "import/obj_import.h"
+
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <tuple>
+
+#include "core/error.h"
+#include "import/line_tracking_file.h"
+#include "import/mesh_data.h"
+#include "import/polygon.h"
+
+namespace rt {
+namespace {
+
+// Reads the .mtl files an OBJ names, relative to the OBJ's folder. A file that defines no
+// material counts as not loaded (tinyobjloader would otherwise index an empty array).
+class MtlReader : public tinyobj::MaterialReader {
+public:
+    explicit MtlReader(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* byName, std::string* warn, std::string* err) override {
+        std::ifstream in(folder_ / name);
+        if (!in) {
+            *warn += "material file \"" + name + "\" not found\n";
+            return false;
+        }
+        const std::size_t before = materials->size();
+        tinyobj::LoadMtl(byName, materials, &in, warn, err);
+        if (materials->size() > before) return true;
+        *warn += "material file \"" + name + "\" defines no material\n";
+        return false;
+    }
+
+private:
+    std::filesystem::path folder_;
+};
+
+float finiteOr(float v, float fallback) { return std::isfinite(v) ? v : fallback; }
+
+Color clampedColor(const tinyobj::real_t (&c)[3]) {
+    return {std::max(finiteOr(c[0], 0), 0.0f), std::max(finiteOr(c[1], 0), 0.0f), std::max(finiteOr(c[2], 0), 0.0f)};
+}
+
+// Kd as the colour, lum(Ks) as the specular coefficient, Ns as the Phong exponent; illum 3
+// ("reflection on, ray trace on") mirrors with lum(Ks) as well (docs/conversion.md).
+Material materialFromMtl(const tinyobj::material_t& mtl) {
+    Material m;
+    m.color = clampedColor(mtl.diffuse);
+    m.specular = std::clamp(luminance(clampedColor(mtl.specular)), 0.0f, 1.0f);
+    if (mtl.shininess > 0) m.shininess = std::clamp(finiteOr(mtl.shininess, m.shininess), 1.0f, 10000.0f);
+    if (mtl.illum == 3) m.reflection = m.specular;
+    return m;
+}
+
+// Characters a line of numbers may hold after its keyword. tinyobjloader reads anything it
+// cannot parse as 0 ("v nan nan nan" would become the origin), so other characters are refused.
+bool onlyNumbers(std::string_view line, std::string_view extra) {
+    const std::size_t keyword = line.find_first_not_of(" \t");
+    const std::size_t rest = line.find_first_of(" \t", keyword);
+    if (rest == std::string_view::npos) return true;
+    for (const char ch : line.substr(rest)) {
+        const bool ok = (ch >= '0' && ch <= '9') || ch == ' ' || ch == '\t' || ch == '\r' || ch == '-' || ch == '+' ||
+                        extra.find(ch) != std::string_view::npos;
+        if (!ok) return false;
+    }
+    return true;
+}
+
+class ObjSceneBuilder {
+public:
+    ObjSceneBuilder(const std::string& path, ImportResult& out) : path_(path), file_(path), out_(out) {}
+
+    void read() {
+        tinyobj::callback_t callbacks;
+        callbacks.vertex_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
+            static_cast<ObjSceneBuilder*>(self)->vertex(x, y, z);
+        };
+        callbacks.index_cb = [](void* self, tinyobj::index_t* corners, int count) {
+            static_cast<ObjSceneBuilder*>(self)->face(corners, count);
+        };
+        callbacks.usemtl_cb = [](void* self, const char* name, int material) {
+            static_cast<ObjSceneBuilder*>(self)->useMaterial(name, material);
+        };
+        callbacks.mtllib_cb = [](void* self, const tinyobj::material_t* materials, int count) {
+            static_cast<ObjSceneBuilder*>(self)->mtl_.assign(materials, materials + count);
+        };
+        callbacks.group_cb = [](void* self, const char** names, int count) {
+            static_cast<ObjSceneBuilder*>(self)->group(names, count);
+        };
+        callbacks.object_cb = [](void* self, const char* name) {
+            static_cast<ObjSceneBuilder*>(self)->object(name);
+        };
+        std::istream in(&file_);
+        MtlReader mtlReader(std::filesystem::path(path_).parent_path());
+        std::string warn, err;
+        tinyobj::LoadObjWithCallback(in, callbacks, this, &mtlReader, &warn, &err);
+        if (file_.tooLong()) fail("line longer than 1 MiB");
+        if (file_.readFailed()) fail("read error");
+        std::istringstream messages(warn + err);
+        for (std::string line; std::getline(messages, line);)
+            if (!line.empty()) out_.report.notes.push_back(line);
+    }
+
+    // The models, one per part, each placed once under `root`.
+    void build(const Transform& root) {
+        for (Part& part : parts_) {
+            Model model;
+            model.name = modelNames_.claim(part.name, "mesh");
+            model.triangleVertices.reserve(part.corners.size() * 3);
+            for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3)
+                if (!appendTriangle(model, positions_[part.corners[i]], positions_[part.corners[i + 1]],
+                                    positions_[part.corners[i + 2]]))
+                    ++out_.report.droppedDegenerate;
+            part.corners = {};  // free as we go: the models take their place
+            if (model.triangleCount() == 0) continue;
+            out_.scene.models.push_back(std::move(model));
+            out_.scene.instances.push_back({std::uint32_t(out_.scene.models.size() - 1), materialFor(part.material), root});
+        }
+        out_.report.droppedDegenerateInScene = out_.report.droppedDegenerate;
+        out_.report.meshes = out_.scene.models.size();
+        if (fannedConcave_)
+            out_.report.notes.push_back(std::to_string(fannedConcave_) +
+                                        " concave polygon(s) with more than " + std::to_string(kMaxEarClippedCorners) +
+                                        " corners, or not simple, triangulated as a fan");
+    }
+
+private:
+    // The faces of one object, group and material, as corner indices (3 per triangle).
+    // Deques grow without copying, so the peak stays near the data itself.
+    struct Part {
+        std::string name;
+        int material = -1;
+        std::deque<std::uint32_t> corners;
+    };
+
+    [[noreturn]] void fail(const std::string& message) const {
+        throw inputErrorAt(path_, int(file_.lineNumber()), message);
+    }
+
+    void vertex(float x, float y, float z) {
+        if (!onlyNumbers(file_.lineText(), ".eE") || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+            fail("vertex coordinates are not finite numbers: \"" + std::string(file_.lineText()) + "\"");
+        positions_.push_back({x, y, z});
+    }
+
+    // OBJ counts vertices from 1, or backwards from the last one defined (-1).
+    std::uint32_t vertexIndex(int index) const {
+        if (index == 0) fail("face refers to vertex 0, but OBJ counts vertices from 1 (or from -1 backwards)");
+        const long long resolved = index > 0 ? index - 1LL : (long long)positions_.size() + index;
+        if (resolved < 0 || resolved >= (long long)positions_.size())
+            fail("face refers to vertex " + std::to_string(index) + ", but " + std::to_string(positions_.size()) +
+                 " vertices are defined before it");
+        return std::uint32_t(resolved);
+    }
+
+    void face(const tinyobj::index_t* corners, int count) {
+        if (!onlyNumbers(file_.lineText(), "/"))
+            fail("face corners are not vertex numbers: \"" + std::string(file_.lineText()) + "\"");
+        polygon_.clear();
+        for (int i = 0; i < count; ++i) polygon_.push_back(vertexIndex(corners[i].vertex_index));
+        if (count == 1) ++out_.report.droppedPoints;
+        if (count == 2) ++out_.report.droppedLines;
+        if (count < 3) return;
+        cornerPositions_.clear();
+        for (const std::uint32_t v : polygon_) cornerPositions_.push_back(positions_[v]);
+        triangles_.clear();
+        if (!triangulatePolygon(cornerPositions_, triangles_)) ++fannedConcave_;
+        std::deque<std::uint32_t>& out = currentPart().corners;
+        for (const std::uint32_t corner : triangles_) out.push_back(polygon_[corner]);
+    }
+
+    void useMaterial(const char* name, int material) {
+        if (material < 0 && missingMaterials_.insert(name).second)
+            out_.report.notes.push_back("material \"" + std::string(name) + "\" is not defined: default used");
+        material_ = material;
+        current_ = nullptr;
+    }
+
+    void group(const char** names, int count) {
+        group_.clear();
+        for (int i = 0; i < count; ++i) {
+            if (i) group_ += '_';
+            group_ += names[i];
+        }
+        current_ = nullptr;
+    }
+
+    void object(const char* name) {
+        object_ = name;
+        group_.clear();
+        current_ = nullptr;
+    }
+
+    Part& currentPart() {
+        if (current_) return *current_;
+        auto [it, added] = partByKey_.try_emplace({object_, group_, material_}, nullptr);
+        if (added) {
+            const std::string& name = !group_.empty() ? group_ : object_;
+            it->second = &parts_.emplace_back(Part{name.empty() ? std::filesystem::path(path_).stem().string() : name,
+                                                   material_, {}});
+        }
+        return *(current_ = it->second);
+    }
+
+    std::uint32_t materialFor(int index) {
+        auto [it, added] = materialIndex_.try_emplace(index, 0);
+        if (!added) return it->second;
+        const bool known = index >= 0 && std::size_t(index) < mtl_.size();
+        Material m = known ? materialFromMtl(mtl_[std::size_t(index)]) : Material{};
+        m.name = materialNames_.claim(known ? mtl_[std::size_t(index)].name : "", "default");
+        out_.scene.materials.push_back(m);
+        return it->second = std::uint32_t(out_.scene.materials.size() - 1);
+    }
+
+    const std::string& path_;
+    LineTrackingFile file_;
+    ImportResult& out_;
+    std::deque<Point3f> positions_;
+    std::vector<tinyobj::material_t> mtl_;
+    std::string object_, group_;
+    int material_ = -1;
+    std::deque<Part> parts_;  // stable addresses for partByKey_
+    std::map<std::tuple<std::string, std::string, int>, Part*> partByKey_;
+    Part* current_ = nullptr;
+    std::map<int, std::uint32_t> materialIndex_;
+    std::set<std::string> missingMaterials_;  // each named once in the notes
+    NameTable modelNames_, materialNames_;
+    std::size_t fannedConcave_ = 0;
+    std::vector<std::uint32_t> polygon_, triangles_;  // scratch for face()
+    std::vector<Point3f> cornerPositions_;
+};
+
+}  // namespace
+
+ImportResult importObj(const std::string& path, const ImportOptions& options, const Transform& root) {
+    if (!options.camera.empty()) throw InputError(path + ": OBJ files hold no cameras, so --camera cannot pick one");
+    ImportResult result;
+    result.report.format = "Wavefront OBJ";
+    ObjSceneBuilder builder(path, result);
+    builder.read();
+    builder.build(root);
+    return result;
+}
+
+}  // namespace rt

@@ -1,0 +1,229 @@
+// OBJ import through tinyobjloader's streaming API (libtrace/import/obj_import.*): the shared
+// OBJ models against Assimp's figures in MANIFEST.md, materials, polygons, and every way a
+// file can be broken, each reported at its line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "import/import.h"
+#include "import/line_tracking_file.h"
+#include "import/polygon.h"
+#include "import_test_util.h"
+#include "test_util.h"
+
+namespace rt {
+namespace {
+
+using test::sharedModels;
+using test::TempDir;
+
+const char* const kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+// The message of the InputError that importing `text` as an OBJ throws ("" if none).
+std::string objError(const TempDir& dir, const std::string& text) {
+    const std::string path = dir.write("m.obj", text);
+    return inputErrorOf([&] { importScene(path); });
+}
+
+double triangleArea(const Triangle& t) { return length(cross(t.p1 - t.p0, t.p2 - t.p0)) / 2; }
+
+TEST(ImportObj, TriangleCountsMatchTheManifest) {
+    const std::size_t files = test::expectManifestTriangleCounts({"obj"}, [](const ImportResult& r) {
+        EXPECT_EQ(r.scene.models.size(), r.scene.instances.size());  // OBJ does not instance
+        EXPECT_EQ(r.report.format, "Wavefront OBJ");
+    });
+    EXPECT_EQ(files, 12u);
+}
+
+// spider.obj: Assimp's FindDegenerates leaves 1312 of 1368 triangles, as the dropping here does.
+TEST(ImportObj, DegenerateTrianglesAreTheOnesAssimpFinds) {
+    const ImportResult r = importScene(sharedModels() + "/obj/spider/spider.obj");
+    EXPECT_EQ(test::modelTriangles(r.scene), 1312u);
+    EXPECT_EQ(r.report.droppedDegenerate, 56u);
+}
+
+// CornellBox-Original.mtl: the right wall is Kd 0.14 0.45 0.091 (green) with Ns 10 and no Ks.
+TEST(ImportObj, MaterialsKeepTheirDiffuseColourAndNames) {
+    const ImportResult r = importScene(sharedModels() + "/obj/CornellBox-Original/CornellBox-Original.obj");
+    const std::optional<std::uint32_t> green = r.scene.findMaterial("rightWall");
+    ASSERT_TRUE(green) << "materials keep their .mtl names";
+    const Material& m = r.scene.materials[*green];
+    EXPECT_NEAR(m.color.r, 0.14f, 1e-6);
+    EXPECT_NEAR(m.color.g, 0.45f, 1e-6);
+    EXPECT_NEAR(m.color.b, 0.091f, 1e-6);
+    EXPECT_FLOAT_EQ(m.specular, 0);
+    EXPECT_FLOAT_EQ(m.shininess, 10);
+}
+
+// Ks becomes the specular coefficient; illum 3 (ray-traced reflection) makes it a mirror too.
+TEST(ImportObj, SpecularAndReflectionComeFromKsAndIllum) {
+    TempDir dir;
+    dir.write("m.mtl", "newmtl shiny\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 80\nillum 3\nnewmtl matte\nKd 0 0 1\nillum 2\n");
+    const ImportResult r = importScene(dir.write(
+        "m.obj", std::string("mtllib m.mtl\n") + kSquare + "usemtl shiny\nf 1 2 3\nusemtl matte\nf 1 3 4\n"));
+    ASSERT_EQ(r.scene.instances.size(), 2u);
+    const Material& shiny = r.scene.materials[r.scene.instances[0].material];
+    const Material& matte = r.scene.materials[r.scene.instances[1].material];
+    EXPECT_EQ(shiny.name, "shiny");
+    EXPECT_FLOAT_EQ(shiny.specular, 0.5f);
+    EXPECT_FLOAT_EQ(shiny.shininess, 80);
+    EXPECT_FLOAT_EQ(shiny.reflection, 0.5f);
+    EXPECT_EQ(matte.name, "matte");
+    EXPECT_FLOAT_EQ(matte.color.b, 1);
+    EXPECT_FLOAT_EQ(matte.reflection, 0);
+}
+
+// One model per run of object, group and material; going back to a pair adds to its model.
+TEST(ImportObj, ModelsFollowObjectsGroupsAndMaterials) {
+    TempDir dir;
+    dir.write("m.mtl", "newmtl a\nKd 1 1 1\nnewmtl b\nKd 0 0 0\n");
+    const ImportResult r = importScene(dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare +
+                                                              "g left\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n"
+                                                              "g right\nf 1 2 4\ng left\nusemtl a\nf 2 3 4\n"));
+    ASSERT_EQ(r.scene.models.size(), 3u);
+    EXPECT_EQ(r.scene.models[0].name, "left");
+    EXPECT_EQ(r.scene.models[0].triangleCount(), 2u);  // both "left" faces with material a
+    EXPECT_EQ(r.scene.models[1].name, "left_2");
+    EXPECT_EQ(r.scene.models[2].name, "right");
+    EXPECT_EQ(r.scene.materials.size(), 2u);
+}
+
+// Negative indices count back from the last vertex defined; quads and pentagons give n - 2.
+TEST(ImportObj, RelativeIndicesAndPolygons) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write("m.obj", std::string(kSquare) + "f -4 -3 -2 -1\nv 0.5 2 0\nf 1 2 3 5 4\n"));
+    ImportResult copy = r;
+    copy.scene.flatten();
+    ASSERT_EQ(copy.scene.primitives.triangleCount(), 5u);
+    double area = 0;
+    for (std::size_t i = 0; i < 5; ++i) area += triangleArea(copy.scene.primitives.triangle(i));
+    EXPECT_NEAR(area, 1 + 1.5, 1e-6);  // the unit square, then the square with a roof
+}
+
+// An L-shaped hexagon whose fan from corner 0 would leave the polygon.
+TEST(ImportObj, ConcavePolygonsAreEarClipped) {
+    const std::vector<std::array<float, 3>> l = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+    std::vector<std::array<float, 3>> rotated = l;  // the reflex corner first: a fan from it fails
+    std::rotate(rotated.begin(), rotated.begin() + 4, rotated.end());
+    std::vector<std::uint32_t> tris;
+    EXPECT_TRUE(triangulatePolygon(rotated, tris));
+    ASSERT_EQ(tris.size(), 12u);
+    double area = 0;
+    for (std::size_t t = 0; t < tris.size(); t += 3) {
+        const auto& a = rotated[tris[t]];
+        const auto& b = rotated[tris[t + 1]];
+        const auto& c = rotated[tris[t + 2]];
+        const double signedArea = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+        EXPECT_GT(signedArea, 0) << "every triangle keeps the polygon's orientation";
+        area += signedArea;
+        const double cx = (a[0] + b[0] + c[0]) / 3, cy = (a[1] + b[1] + c[1]) / 3;
+        EXPECT_FALSE(cx > 1 && cy > 1) << "a triangle lies in the notch";
+    }
+    EXPECT_NEAR(area, 3, 1e-9);
+}
+
+TEST(ImportObj, TooManyCornersForEarClippingFallBackToAFan) {
+    std::vector<std::array<float, 3>> star;
+    for (std::size_t i = 0; i < 2 * kMaxEarClippedCorners; ++i) {
+        const double angle = 2 * kPi * double(i) / double(2 * kMaxEarClippedCorners);
+        const float radius = i % 2 ? 1.0f : 2.0f;
+        star.push_back({radius * float(std::cos(angle)), radius * float(std::sin(angle)), 0});
+    }
+    std::vector<std::uint32_t> tris;
+    EXPECT_FALSE(triangulatePolygon(star, tris));
+    EXPECT_EQ(tris.size(), 3 * (star.size() - 2));
+}
+
+TEST(ImportObj, ZUpModelsAreTurnedToYUp) {
+    const std::string path = sharedModels() + "/obj/box/box.obj";
+    ImportResult plain = importScene(path);
+    ImportOptions o;
+    o.upAxis = UpAxis::Z;
+    ImportResult turned = importScene(path, o);
+    plain.scene.flatten();
+    turned.scene.flatten();
+    ASSERT_EQ(plain.scene.primitives.triangleCount(), turned.scene.primitives.triangleCount());
+    const Triangle a = plain.scene.primitives.triangle(0), b = turned.scene.primitives.triangle(0);
+    expectNear(b.p0, {a.p0.x, a.p0.z, -a.p0.y}, Real(1e-5));  // (x, y, z) -> (x, z, -y)
+}
+
+TEST(ImportObj, BrokenFilesAreInputErrorsAtTheirLine) {
+    TempDir dir;
+    const std::string m = dir.path("m.obj");
+    EXPECT_EQ(objError(dir, "v 0 0 0\nv nan 0 0\n"), m + ":2: vertex coordinates are not finite numbers: \"v nan 0 0\"");
+    EXPECT_EQ(objError(dir, "# big\nv 1e39 0 0\n"), m + ":2: vertex coordinates are not finite numbers: \"v 1e39 0 0\"");
+    EXPECT_EQ(objError(dir, std::string(kSquare) + "\n\nf 1 2 x\n"),
+              m + ":7: face corners are not vertex numbers: \"f 1 2 x\"");
+    EXPECT_EQ(objError(dir, std::string(kSquare) + "f 0 1 2\n"),
+              m + ":5: face refers to vertex 0, but OBJ counts vertices from 1 (or from -1 backwards)");
+    EXPECT_EQ(objError(dir, std::string(kSquare) + "f 1 2 5\nv 0 0 1\n"),
+              m + ":5: face refers to vertex 5, but 4 vertices are defined before it");
+    EXPECT_EQ(objError(dir, "v 0 0 0\r\nv 1 0 0\r\nf 1 2 -3\r\n"),
+              m + ":3: face refers to vertex -3, but 2 vertices are defined before it");
+    EXPECT_EQ(objError(dir, "v 0 0 0\n# " + std::string(std::size_t(1) << 21, 'x') + "\n"),
+              m + ":2: line longer than 1 MiB");
+    EXPECT_EQ(objError(dir, ""), m + ": nothing to convert: the scene places no triangles");
+    EXPECT_EQ(objError(dir, "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nf 1 2\nf 3\n"),
+              m + ": nothing to convert: the scene places no triangles");
+    ImportOptions camera;
+    camera.camera = "0";
+    const std::string path = dir.write("ok.obj", std::string(kSquare) + "f 1 2 3\n");
+    EXPECT_THROW(importScene(path, camera), InputError);
+}
+
+TEST(ImportObj, LineNumbersHoldAcrossBufferRefills) {
+    TempDir dir;
+    std::string text;
+    for (int i = 0; i < 30000; ++i) text += "v " + std::to_string(i) + " 0.25 -1.5e-3\n";  // ~750 KB
+    text += "f 1 2 3\nf 1 2 30001\n";
+    EXPECT_EQ(objError(dir, text), dir.path("m.obj") + ":30002: face refers to vertex 30001, but 30000 vertices are defined before it");
+}
+
+TEST(ImportObj, LineTrackingFileShowsTheLineReadLast) {
+    TempDir dir;
+    const std::string path = dir.write("t.txt", "first\nsecond line\r\nthird");
+    LineTrackingFile file(path, 8);  // lines above 8 bytes are too long
+    std::istream in(&file);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(file.lineNumber(), 1u);
+    EXPECT_EQ(file.lineText(), "first");
+    std::getline(in, line);
+    EXPECT_TRUE(file.tooLong());
+    EXPECT_FALSE(file.readFailed());
+}
+
+TEST(ImportObj, MissingMaterialsFallBackToADefaultWithANote) {
+    TempDir dir;
+    dir.write("empty.mtl", "# no materials\n");
+    const ImportResult r = importScene(
+        dir.write("m.obj", std::string("mtllib absent.mtl empty.mtl\n") + kSquare + "usemtl red\nf 1 2 3\nusemtl red\nf 1 3 4\n"));
+    ASSERT_EQ(r.scene.materials.size(), 1u);
+    EXPECT_EQ(r.scene.materials[0].name, "default");
+    const auto& notes = r.report.notes;
+    EXPECT_EQ(std::count_if(notes.begin(), notes.end(),
+                            [](const std::string& n) { return n.find("\"red\" is not defined") != std::string::npos; }),
+              1)
+        << "each missing material is named once";
+    EXPECT_NE(std::find_if(notes.begin(), notes.end(),
+                           [](const std::string& n) { return n.find("absent.mtl") != std::string::npos; }),
+              notes.end());
+}
+
+// A triangle with a repeated vertex is dropped and counted; the rest converts.
+TEST(ImportObj, DegenerateFacesAreDroppedAndCounted) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write("d.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n"));
+    EXPECT_EQ(test::modelTriangles(r.scene), 1u);
+    EXPECT_EQ(r.report.droppedDegenerate, 1u);
+}
+
+TEST(ImportObj, NanVerticesOfTheSharedBadFileAreAnInputError) {
+    EXPECT_THROW(importScene(sharedModels() + "/bad/obj-tinyobjloader/test-nan.obj"), InputError);
+}
+
+}  // namespace
+}  // namespace rt
