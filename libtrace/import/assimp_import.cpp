@@ -153,18 +153,15 @@ private:
             fail("a mesh names material " + std::to_string(index) + ", which does not exist");
         if (materials_[index]) return *materials_[index];
         const aiMaterial& am = *ai_.mMaterials[index];
-        Material m;
-        aiColor3D c(1, 1, 1);
-        if (am.Get(AI_MATKEY_COLOR_DIFFUSE, c) == aiReturn_SUCCESS) m.color = clampedColor(c);
+        aiColor3D kd(1, 1, 1), ks(0, 0, 0);
         float strength = 1, shininess = 0, reflectivity = 0;
+        am.Get(AI_MATKEY_COLOR_DIFFUSE, kd);
+        am.Get(AI_MATKEY_COLOR_SPECULAR, ks);
         am.Get(AI_MATKEY_SHININESS_STRENGTH, strength);
-        aiColor3D ks(0, 0, 0);
-        if (am.Get(AI_MATKEY_COLOR_SPECULAR, ks) == aiReturn_SUCCESS)
-            m.specular = std::clamp(luminance(clampedColor(ks)) * finiteOr(strength, 1), 0.0f, 1.0f);
-        if (am.Get(AI_MATKEY_SHININESS, shininess) == aiReturn_SUCCESS && shininess > 0)
-            m.shininess = std::clamp(finiteOr(shininess, m.shininess), 1.0f, 10000.0f);
-        if (am.Get(AI_MATKEY_REFLECTIVITY, reflectivity) == aiReturn_SUCCESS)
-            m.reflection = std::clamp(finiteOr(reflectivity, 0), 0.0f, 1.0f);
+        am.Get(AI_MATKEY_SHININESS, shininess);
+        am.Get(AI_MATKEY_REFLECTIVITY, reflectivity);
+        Material m = classicPhong(toColor(kd), toColor(ks) * (std::isfinite(strength) ? strength : 1), shininess);
+        m.reflection = std::isfinite(reflectivity) ? std::clamp(reflectivity, 0.0f, 1.0f) : 0.0f;
         aiString name;
         am.Get(AI_MATKEY_NAME, name);
         m.name = materialNames_.claim(name.C_Str(), "material" + std::to_string(index));
@@ -172,10 +169,7 @@ private:
         return *(materials_[index] = std::uint32_t(out_.scene.materials.size() - 1));
     }
 
-    static float finiteOr(float v, float fallback) { return std::isfinite(v) ? v : fallback; }
-    static Color clampedColor(const aiColor3D& c) {
-        return {std::max(finiteOr(c.r, 0), 0.0f), std::max(finiteOr(c.g, 0), 0.0f), std::max(finiteOr(c.b, 0), 0.0f)};
-    }
+    static Color toColor(const aiColor3D& c) { return fileColor(c.r, c.g, c.b); }
 
     const Transform* placement(const aiString& name) const {
         const auto it = worldByName_.find(name.C_Str());
@@ -224,7 +218,7 @@ private:
                 out_.report.notes.push_back(what + (world ? " is ambient: dropped" : " is placed by no node: dropped"));
                 continue;
             }
-            Light light{world->point(toVec3(al.mPosition)), clampedColor(al.mColorDiffuse), 0};
+            Light light{world->point(toVec3(al.mPosition)), toColor(al.mColorDiffuse), 0};
             if (al.mType == aiLightSource_DIRECTIONAL) {
                 light.position = centre - normalize(world->vector(toVec3(al.mDirection))) * (100 * radius);
                 out_.report.notes.push_back(what + " (directional) approximated by a point light 100 scene radii away");

@@ -1,6 +1,8 @@
 #include "import/mesh_data.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 
 namespace rt {
 
@@ -14,6 +16,19 @@ bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Poin
     for (const Point3f* p : {&a, &b, &c})
         model.triangleVertices.insert(model.triangleVertices.end(), p->begin(), p->end());
     return true;
+}
+
+Color fileColor(float r, float g, float b) {
+    const auto channel = [](float v) { return std::isfinite(v) ? std::max(v, 0.0f) : 0.0f; };
+    return {channel(r), channel(g), channel(b)};
+}
+
+Material classicPhong(const Color& diffuse, const Color& specular, float shininess) {
+    Material m;
+    m.color = diffuse;
+    m.specular = std::clamp(luminance(specular), 0.0f, 1.0f);
+    if (shininess > 0 && std::isfinite(shininess)) m.shininess = std::clamp(shininess, 1.0f, 10000.0f);
+    return m;
 }
 
 Aabb modelBounds(const Model& model) {

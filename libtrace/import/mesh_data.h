@@ -1,6 +1,6 @@
-// Small pieces both importers use to fill a Model: float points as the RAW format stores
-// them, triangles appended only when they have an area, and the names of materials and
-// models, which the scene writer uses as identifiers and file names.
+// Small pieces the importers share: float points as the RAW format stores them, triangles
+// appended only when they have an area, the classic Phong materials of OBJ and Assimp, and
+// the names of materials and models, which the scene writer uses as identifiers and file names.
 #pragma once
 
 #include <array>
@@ -27,6 +27,14 @@ struct ConvertedMesh {
     std::optional<std::uint32_t> model;
     std::size_t dropped = 0;
 };
+
+// A colour read from a file: NaN, infinite and negative channels read as 0.
+Color fileColor(float r, float g, float b);
+
+// rt's material from the classic Phong parameters of OBJ/MTL and Assimp materials
+// (docs/conversion.md): colour = diffuse; specular = lum(specular), clamped to [0, 1];
+// shininess clamped to [1, 10000], or rt's default when it is not positive and finite.
+Material classicPhong(const Color& diffuse, const Color& specular, float shininess);
 
 // Bounds of a model's triangles in its own space (empty for an empty model).
 Aabb modelBounds(const Model& model);

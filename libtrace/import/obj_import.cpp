@@ -45,19 +45,11 @@ private:
     std::filesystem::path folder_;
 };
 
-float finiteOr(float v, float fallback) { return std::isfinite(v) ? v : fallback; }
-
-Color clampedColor(const tinyobj::real_t (&c)[3]) {
-    return {std::max(finiteOr(c[0], 0), 0.0f), std::max(finiteOr(c[1], 0), 0.0f), std::max(finiteOr(c[2], 0), 0.0f)};
-}
-
-// Kd as the colour, lum(Ks) as the specular coefficient, Ns as the Phong exponent; illum 3
-// ("reflection on, ray trace on") mirrors with lum(Ks) as well (docs/conversion.md).
+// Kd, Ks and Ns as classic Phong; illum 3 ("reflection on, ray trace on") mirrors with
+// lum(Ks) as well (docs/conversion.md).
 Material materialFromMtl(const tinyobj::material_t& mtl) {
-    Material m;
-    m.color = clampedColor(mtl.diffuse);
-    m.specular = std::clamp(luminance(clampedColor(mtl.specular)), 0.0f, 1.0f);
-    if (mtl.shininess > 0) m.shininess = std::clamp(finiteOr(mtl.shininess, m.shininess), 1.0f, 10000.0f);
+    const auto color = [](const tinyobj::real_t(&c)[3]) { return fileColor(c[0], c[1], c[2]); };
+    Material m = classicPhong(color(mtl.diffuse), color(mtl.specular), mtl.shininess);
     if (mtl.illum == 3) m.reflection = m.specular;
     return m;
 }
