@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <istream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -142,6 +143,7 @@ private:
     void vertex(float x, float y, float z) {
         if (!onlyNumbers(file_.lineText(), ".eE") || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
             fail("vertex coordinates are not finite numbers: \"" + std::string(file_.lineText()) + "\"");
+        if (positions_.size() == std::numeric_limits<std::uint32_t>::max()) fail("more than 2^32 - 1 vertices");
         positions_.push_back({x, y, z});
     }
 
