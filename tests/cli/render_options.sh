@@ -79,4 +79,11 @@ for accel in naive bsp kd; do
 done
 idiff -fail 0 -warn 0 "$WORK/naive.exr" "$WORK/bsp.exr" >/dev/null || fail "BSP and naive renders differ"
 idiff -fail 0 -warn 0 "$WORK/naive.exr" "$WORK/kd.exr" >/dev/null || fail "KD and naive renders differ"
+
+# Without -B, -K or --accel the KD tree is used: the -b line's node count (field 5) exceeds
+# the naive list's single node.
+expect_exit 0 "$RT_RENDER" "$scene" -x 16 -y 12 -o null -b
+[ "$(awk '{print $5}' "$WORK/stdout")" -gt 1 ] || fail "the default is not a tree: $(cat "$WORK/stdout")"
+expect_exit 0 "$RT_RENDER" "$scene" -x 16 -y 12 -o null -b --accel naive
+[ "$(awk '{print $5}' "$WORK/stdout")" = 1 ] || fail "--accel naive has nodes: $(cat "$WORK/stdout")"
 echo "render_options: ok"

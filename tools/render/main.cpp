@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     CLI::App app{"Renders a scene by ray tracing (thesis appendix B)."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-render"));
     RenderOptions options;
-    std::string accelName = "naive";
+    std::string accelName = "kd";  // the thesis's program used the naive list unless -B or -K
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")->required();
     addRenderingOptions(app, options, accelName);
     addQualityOptions(app, options);
