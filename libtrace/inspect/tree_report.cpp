@@ -121,7 +121,7 @@ void printThesisTable43(std::ostream& out, const std::string& sceneName, const T
     table.print(out);
 }
 
-void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RayOptions>& rayOptions,
+void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RenderSettings>& picture,
                      const std::vector<TreeReport>& trees) {
     JsonWriter json(out);
     json.beginObject();
@@ -132,13 +132,17 @@ void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::op
     json.member("spheres", scene.spheres);
     json.member("lights", scene.lights);
     json.endObject();
-    if (rayOptions) {
+    if (picture) {
         json.key("rays");
         json.beginObject();
-        json.member("width", rayOptions->width);
-        json.member("height", rayOptions->height);
-        json.member("shadows", rayOptions->shadows);
-        json.member("reflectionDepth", rayOptions->reflectionDepth);
+        json.member("width", picture->width);
+        json.member("height", picture->height);
+        json.member("shadows", picture->shadows);
+        json.member("reflectionDepth", picture->maxDepth);
+        json.member("pixelSamples", picture->pixelSamples);
+        json.member("softShadows", picture->softShadows);
+        json.member("glossyReflections", picture->glossyReflections);
+        json.member("distributedSamples", picture->distributedSamples);
         json.endObject();
     }
     json.key("trees");

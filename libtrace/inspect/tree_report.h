@@ -18,7 +18,7 @@ struct TreeReport {
     AccelSettings settings;  // the kind of tree and the parameters it was built with
     AccelStats stats;
     std::uint32_t scenePrimitives = 0;  // for bytes per primitive
-    std::optional<RayStatistics> rays;
+    std::optional<RenderCounters> rays;
     std::optional<std::vector<DepthLevel>> depths;
 };
 
@@ -36,8 +36,9 @@ void printTreeTable(std::ostream& out, const std::vector<TreeReport>& trees);
 // Both reports must have ray statistics.
 void printThesisTable43(std::ostream& out, const std::string& sceneName, const TreeReport& bsp, const TreeReport& kd);
 
-// {"scene": {...}, "rays": {width, height, shadows, reflectionDepth} (when traced), "trees": [...]}.
-void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RayOptions>& rayOptions,
+// {"scene": {...}, "rays": {width, height, shadows, reflectionDepth, pixelSamples, softShadows,
+// glossyReflections, distributedSamples} (when traced), "trees": [...]}.
+void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RenderSettings>& picture,
                      const std::vector<TreeReport>& trees);
 
 }  // namespace rt

@@ -20,8 +20,8 @@ void validate(const RenderSettings& s) {
     if (const PixelWindow w = s.window(); (long long)w.width() * w.height() > kMaxPixels)
         throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
                          " pixels at once needs more than 3 GB; render it in regions (--region)");
-    if (s.maxDepth < 1 || s.maxDepth > 10)
-        throw InputError("recursion depth " + std::to_string(s.maxDepth) + " is outside 1-10");
+    if (s.maxDepth < 0 || s.maxDepth > 10)
+        throw InputError("recursion depth " + std::to_string(s.maxDepth) + " is outside 0-10");
     if (s.pixelSamples < 1 || s.pixelSamples > kMaxSamples)
         throw InputError("samples per pixel must be 1-" + std::to_string(kMaxSamples));
     if (s.distributedSamples < 1 || s.distributedSamples > kMaxSamples)

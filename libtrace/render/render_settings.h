@@ -11,7 +11,7 @@ struct RenderSettings {
     int width = 800;   // -x
     int height = 600;  // -y
     std::optional<PixelWindow> region;  // --region: render only this window
-    int maxDepth = 5;      // -d: reflection rays that may follow one camera ray (1-10)
+    int maxDepth = 5;      // -d: reflection rays that may follow one camera ray (0-10)
     bool shadows = false;  // -s: a shadow ray to each light (the thesis's default is off)
     // -S: camera rays per pixel on a jittered grid (thesis 2.6.1); 1 shoots one ray through the centre.
     int pixelSamples = 1;

@@ -7,19 +7,25 @@
 
 namespace rt {
 
-// Rays the renderer shot, counted by each thread in its own copy and summed at the end.
+// The rays the renderer shot, by kind, each with the accelerator's work for it (traversal
+// steps, ray-primitive tests): what rt-render's statistics and rt-inspect --rays report.
+// Each thread counts in its own copy; the copies are summed at the end.
 struct RenderCounters {
-    std::uint64_t primaryRays = 0;
-    std::uint64_t shadowRays = 0;
-    std::uint64_t reflectionRays = 0;
-    RayCounters accel;  // traversal steps and ray-primitive tests of all those rays
+    RayCounters camera;      // the thesis's primary rays, -S per pixel
+    RayCounters shadow;      // towards each light in front of a hit (a bundle for a soft shadow)
+    RayCounters reflection;  // mirror and glossy rays, at any depth
 
-    std::uint64_t rays() const { return primaryRays + shadowRays + reflectionRays; }
+    RayCounters total() const {
+        RayCounters t = camera;
+        t += shadow;
+        t += reflection;
+        return t;
+    }
+    std::uint64_t rays() const { return camera.rays + shadow.rays + reflection.rays; }
     RenderCounters& operator+=(const RenderCounters& o) {
-        primaryRays += o.primaryRays;
-        shadowRays += o.shadowRays;
-        reflectionRays += o.reflectionRays;
-        accel += o.accel;
+        camera += o.camera;
+        shadow += o.shadow;
+        reflection += o.reflection;
         return *this;
     }
 };
@@ -34,8 +40,8 @@ struct RenderStats {
     RenderCounters counters;
 
     double testsPerRay() const {
-        const std::uint64_t n = counters.rays();
-        return n ? double(counters.accel.intersectionTests) / double(n) : 0.0;
+        const RayCounters all = counters.total();
+        return all.rays ? double(all.intersectionTests) / double(all.rays) : 0.0;
     }
     double raysPerSecond() const { return renderSeconds > 0 ? double(counters.rays()) / renderSeconds : 0.0; }
 };

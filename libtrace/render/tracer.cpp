@@ -53,7 +53,7 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters) const {
         SampleRng rng{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
         Real sx = Real(0.5), sy = Real(0.5);
         if (n > 1) jitteredGridSample(i, n, rng, sx, sy);
-        ++counters.primaryRays;
+        ++counters.camera.rays;
         sum += trace(camera_.at(Real(x) + sx, Real(y) + sy), 0, false, rng, counters);
     }
     return n == 1 ? sum : sum * (1.0f / float(n));
@@ -61,7 +61,8 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters) const {
 
 Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const {
     Hit hit;
-    if (!accel_.intersect(ray, kInfinity, hit, counters.accel)) return scene_.background;
+    RayCounters& work = depth == 0 ? counters.camera : counters.reflection;
+    if (!accel_.intersect(ray, kInfinity, hit, work)) return scene_.background;
     return shade(ray, hit, depth, inBundle, rng, counters);
 }
 
@@ -98,8 +99,8 @@ float Tracer::visibility(const Vec3& p, const Vec3& n, const Light& light, bool 
         const Vec3 target = area ? pointOnDisc(light.position, axis, light.size, rng) : light.position;
         const Vec3 d = target - origin;
         const Real distance = length(d);
-        ++counters.shadowRays;
-        if (!accel_.occluded({origin, d / distance}, distance, counters.accel)) ++visible;
+        ++counters.shadow.rays;
+        if (!accel_.occluded({origin, d / distance}, distance, counters.shadow)) ++visible;
     }
     return samples == 1 ? float(visible) : float(visible) / float(samples);
 }
@@ -109,7 +110,7 @@ Color Tracer::reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Ma
     const Vec3 origin = p + n * epsilon_;
     const Vec3 r = mirror(dir, n);
     if (!settings_.glossyReflections || !(m.spread > 0)) {
-        ++counters.reflectionRays;
+        ++counters.reflection.rays;
         return trace({origin, r}, depth + 1, inBundle, rng, counters);
     }
     // Glossy: directions around r, offset in the plane across r by a 2-D normal
@@ -123,7 +124,7 @@ Color Tracer::reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Ma
         rng.normalPair(g1, g2);
         Vec3 d = normalize(r + (t * g1 + b * g2) * Real(m.spread));
         if (dot(d, n) <= 0) d = mirror(d, n);  // below the surface: fold it back above
-        ++counters.reflectionRays;
+        ++counters.reflection.rays;
         sum += trace({origin, d}, depth + 1, true, rng, counters);
     }
     return samples == 1 ? sum : sum * (1.0f / float(samples));

@@ -58,16 +58,25 @@ expect_exit 0 "$RT_INSPECT" --tree bsp --json --bsp-max-depth 1 "$WORK/two_clust
 grep -q '"maxDepth": 1' "$WORK/stdout" || fail "settings not reported"
 expect_exit 0 "$RT_INSPECT" --tree kd --json --kd-split sample --kd-samples 8 "$WORK/two_clusters.xml"
 grep -q '"split": "sample"' "$WORK/stdout" || fail "--kd-split not reported"
-# The rays are rt-render's: the same counts as its --stats-json for the same flags.
-flags=(-s -d 3 -x 64 -y 48)
-expect_exit 0 "$RT_RENDER" "$RT_SOURCE_DIR/scenes/demo.xml" --accel kd "${flags[@]}" -q -o null --stats-json -
-cp "$WORK/stdout" "$WORK/render.json"
-expect_exit 0 "$RT_INSPECT" "$RT_SOURCE_DIR/scenes/demo.xml" --tree kd --rays "${flags[@]}" --json
-for key in primaryRays:cameraRays shadowRays reflectionRays rays intersectionTests traversalSteps; do
-    theirs=$(json_number "${key%%:*}" "$WORK/render.json")
-    ours=$(json_number "${key##*:}" "$WORK/stdout")
-    [ -n "$ours" ] && [ "$ours" = "$theirs" ] || fail "${key##*:}: rt-inspect counts $ours, rt-render $theirs"
-done
+# The rays are rt-render's: the same counts as its --stats-json for the same flags, also
+# with supersampling and distributed ray tracing.
+compare_with_render() {
+    expect_exit 0 "$RT_RENDER" "$RT_SOURCE_DIR/scenes/demo.xml" --accel kd "$@" -q -o null --stats-json -
+    cp "$WORK/stdout" "$WORK/render.json"
+    expect_exit 0 "$RT_INSPECT" "$RT_SOURCE_DIR/scenes/demo.xml" --tree kd --rays "$@" --json
+    for key in primaryRays:cameraRays shadowRays reflectionRays rays intersectionTests traversalSteps; do
+        theirs=$(json_number "${key%%:*}" "$WORK/render.json")
+        ours=$(json_number "${key##*:}" "$WORK/stdout")
+        [ -n "$ours" ] && [ "$ours" = "$theirs" ] || fail "$*: ${key##*:}: rt-inspect counts $ours, rt-render $theirs"
+    done
+}
+compare_with_render -s -d 3 -x 64 -y 48
+hard=$(json_number shadowRays "$WORK/stdout")
+compare_with_render -D s -r 4 -d 3 -x 64 -y 48
+# Every demo light has a size: each hard shadow ray becomes a bundle of 4.
+[ "$(json_number shadowRays "$WORK/stdout")" = $((4 * hard)) ] || fail "-D s -r 4: not 4 shadow rays for each of $hard"
+compare_with_render -D b -r 3 -S 4 -d 2 -x 32 -y 24
+[ "$(json_number cameraRays "$WORK/stdout")" = $((4 * 32 * 24)) ] || fail "-S 4: not 4 camera rays per pixel"
 # Model files go through rt-convert's importers, converted in memory; broken ones are bad input.
 expect_exit 0 "$RT_INSPECT" --tree kd --json "$RT_SHARED_DIR/models/obj/spd-teapot/teapot_s2.obj"
 [ "$(json_number triangles "$WORK/stdout")" = 248 ] || fail "the SPD teapot has 248 triangles (MANIFEST.md)"

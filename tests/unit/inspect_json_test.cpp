@@ -190,7 +190,7 @@ TEST(JsonWriter, RejectsMisuse) {
 TEST(ReportJson, OneSphereWithTheNaiveList) {
     const Scene scene = oneSphereScene();
     const NaiveAccelerator naive(scene.primitives);
-    RayOptions rays;
+    RenderSettings rays;
     rays.width = 16;
     rays.height = 12;
     rays.shadows = true;

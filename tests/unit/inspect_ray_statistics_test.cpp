@@ -13,7 +13,7 @@ using namespace rt;
 namespace {
 
 // Pixels whose camera ray hits anything, counted directly.
-std::uint64_t cameraHits(const Scene& scene, const Accelerator& accel, const RayOptions& o) {
+std::uint64_t cameraHits(const Scene& scene, const Accelerator& accel, const RenderSettings& o) {
     const CameraRays camera(scene.camera, o.width, o.height);
     std::uint64_t hits = 0;
     RayCounters unused;
@@ -34,10 +34,10 @@ TEST(RayStatistics, CameraRaysOnly) {
     scene.looseObjects.addSphere({{1, 0, 9}, 1}, 0);
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
-    RayOptions options;
+    RenderSettings options;
     options.width = 20;
     options.height = 10;
-    const RayStatistics s = traceRayStatistics(scene, naive, options);
+    const RenderCounters s = traceRayStatistics(scene, naive, options);
     EXPECT_EQ(s.camera.rays, 200u);
     EXPECT_EQ(s.camera.intersectionTests, 400u);  // the naive list tests both spheres
     EXPECT_EQ(s.shadow.rays, 0u);
@@ -52,11 +52,11 @@ TEST(RayStatistics, OneShadowRayPerHitAndLightInFront) {
     scene.lights.push_back({{0, 0, 100}});  // behind the sphere: in front of no visible point
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
-    RayOptions options;
+    RenderSettings options;
     options.width = 32;
     options.height = 24;
     options.shadows = true;
-    const RayStatistics s = traceRayStatistics(scene, naive, options);
+    const RenderCounters s = traceRayStatistics(scene, naive, options);
     const std::uint64_t hits = cameraHits(scene, naive, options);
     ASSERT_GT(hits, 0u);
     ASSERT_LT(hits, 32u * 24u);
@@ -78,12 +78,12 @@ TEST(RayStatistics, ReflectionsBounceUpToTheDepth) {
     }
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
-    RayOptions options;
+    RenderSettings options;
     options.width = 8;
     options.height = 6;
     for (const int depth : {0, 1, 3}) {
-        options.reflectionDepth = depth;
-        const RayStatistics st = traceRayStatistics(scene, naive, options);
+        options.maxDepth = depth;
+        const RenderCounters st = traceRayStatistics(scene, naive, options);
         EXPECT_EQ(st.camera.rays, 48u);
         EXPECT_EQ(st.reflection.rays, 48u * depth) << "depth " << depth;
         EXPECT_EQ(st.total().intersectionTests, 2 * st.total().rays);
@@ -95,10 +95,10 @@ TEST(RayStatistics, MatteSurfacesDoNotReflect) {
     scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
-    RayOptions options;
+    RenderSettings options;
     options.width = 8;
     options.height = 6;
-    options.reflectionDepth = 5;
+    options.maxDepth = 5;
     EXPECT_EQ(traceRayStatistics(scene, naive, options).reflection.rays, 0u);
 }
 
@@ -111,15 +111,15 @@ TEST(RayStatistics, SameCountsWithOneOrTwoThreads) {
     scene.lights.push_back({{3, 3, 0}});
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
-    RayOptions options;
+    RenderSettings options;
     options.width = 40;
     options.height = 30;
     options.shadows = true;
-    options.reflectionDepth = 3;
+    options.maxDepth = 3;
     omp_set_num_threads(1);
-    const RayStatistics one = traceRayStatistics(scene, naive, options);
+    const RenderCounters one = traceRayStatistics(scene, naive, options);
     omp_set_num_threads(2);
-    const RayStatistics two = traceRayStatistics(scene, naive, options);
+    const RenderCounters two = traceRayStatistics(scene, naive, options);
     EXPECT_EQ(one.total().rays, two.total().rays);
     EXPECT_EQ(one.total().intersectionTests, two.total().intersectionTests);
     EXPECT_EQ(one.reflection.rays, two.reflection.rays);

@@ -108,11 +108,11 @@ TEST_P(InspectTrees, RaysOfAPicture) {
     scene.lights.push_back({{0, 0, 0}});
     scene.flatten();
     const auto accel = build(scene);
-    RayOptions options;
+    RenderSettings options;
     options.width = 40;
     options.height = 30;
     options.shadows = true;
-    const RayStatistics rays = traceRayStatistics(scene, *accel, options);
+    const RenderCounters rays = traceRayStatistics(scene, *accel, options);
     EXPECT_EQ(rays.camera.rays, 1200u);
     EXPECT_GT(rays.shadow.rays, 0u);
     EXPECT_GT(rays.camera.traversalSteps, 0u);

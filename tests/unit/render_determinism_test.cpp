@@ -40,7 +40,7 @@ TEST(RenderDeterminism, OneAndTwoThreadsGiveTheSameBits) {
     for (std::size_t i = 0; i < a.pixels().size(); ++i)
         ASSERT_TRUE(sameBits(a.pixels()[i], b.pixels()[i])) << "pixel " << i;
     EXPECT_EQ(one.counters.rays(), two.counters.rays());
-    EXPECT_EQ(one.counters.accel.intersectionTests, two.counters.accel.intersectionTests);
+    EXPECT_EQ(one.counters.total().intersectionTests, two.counters.total().intersectionTests);
     EXPECT_EQ(two.threads, 2);
 }
 
@@ -80,7 +80,7 @@ TEST(RenderDeterminism, ProgressReportsEveryBlockOnce) {
     });
     EXPECT_EQ(reportedTotal, 3 * 2);  // ceil(70/32) x ceil(40/32) blocks
     EXPECT_EQ(calls, reportedTotal);
-    EXPECT_EQ(stats.counters.primaryRays, 70u * 40u);
+    EXPECT_EQ(stats.counters.camera.rays, 70u * 40u);
     EXPECT_EQ(stats.objects, s.primitives.size());
     EXPECT_EQ(stats.lights, 2u);
 }

@@ -41,8 +41,8 @@ TEST(Tracer, MissesShowTheBackground) {
     const Tracer tracer(s, accel, small(64, 64));
     RenderCounters c;
     EXPECT_EQ(tracer.pixel(0, 0, c), s.background);
-    EXPECT_EQ(c.primaryRays, 1u);
-    EXPECT_EQ(c.shadowRays, 0u);
+    EXPECT_EQ(c.camera.rays, 1u);
+    EXPECT_EQ(c.shadow.rays, 0u);
 }
 
 TEST(Tracer, CentreOfALitSphereIsAmbientPlusLambert) {
@@ -61,7 +61,7 @@ TEST(Tracer, CentreOfALitSphereIsAmbientPlusLambert) {
     EXPECT_NEAR(got.r, want.r, 2e-3);
     EXPECT_NEAR(got.g, want.g, 2e-3);
     EXPECT_NEAR(got.b, want.b, 2e-3);
-    EXPECT_EQ(c.shadowRays, 1u);
+    EXPECT_EQ(c.shadow.rays, 1u);
 }
 
 TEST(Tracer, ShadowsDarkenTheFloorUnderASphere) {
@@ -86,7 +86,7 @@ TEST(Tracer, ShadowsDarkenTheFloorUnderASphere) {
     EXPECT_GT(lit.r, 0.9f);
     EXPECT_NEAR(dark.r, 0.1f, 1e-6);  // ambient only: k_a times the one light
     EXPECT_EQ(shadowed.trace(down(4), 0, false, rng, c), unshadowed.trace(down(4), 0, false, rng, c));
-    EXPECT_EQ(c.shadowRays, 2u);
+    EXPECT_EQ(c.shadow.rays, 2u);
 }
 
 TEST(Tracer, SoftShadowsGiveAPenumbra) {
@@ -112,7 +112,7 @@ TEST(Tracer, SoftShadowsGiveAPenumbra) {
     const Color lit = Tracer(s, accel, settings).trace(down, 0, false, rng, c);
     EXPECT_GT(soft.r, 0.25f * lit.r);
     EXPECT_LT(soft.r, 0.75f * lit.r);
-    EXPECT_EQ(c.shadowRays, 1u + 256u);
+    EXPECT_EQ(c.shadow.rays, 1u + 256u);
     EXPECT_TRUE(hard.r == 0 || hard.r == lit.r);  // a point light is all or nothing
 }
 
@@ -134,8 +134,8 @@ TEST(Tracer, GlossyReflectionsSpreadAroundTheMirrorDirection) {
         tracer.pixel(x, 30, glossy);
         mirrors.pixel(x, 30, sharp);
     }
-    EXPECT_GT(glossy.reflectionRays, sharp.reflectionRays);
-    EXPECT_LE(sharp.reflectionRays, 64u * 2u);  // at most one reflection ray per bounce
+    EXPECT_GT(glossy.reflection.rays, sharp.reflection.rays);
+    EXPECT_LE(sharp.reflection.rays, 64u * 2u);  // at most one reflection ray per bounce
 }
 
 TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
@@ -155,9 +155,9 @@ TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
         settings.maxDepth = depth;
         RenderStats stats;
         render(s, accel, settings, stats);
-        EXPECT_EQ(stats.counters.primaryRays, 48u);
-        EXPECT_EQ(stats.counters.reflectionRays, 48u * std::uint64_t(depth)) << "depth " << depth;
-        EXPECT_EQ(stats.counters.accel.intersectionTests, 4u * stats.counters.rays());  // naive: 4 triangles per ray
+        EXPECT_EQ(stats.counters.camera.rays, 48u);
+        EXPECT_EQ(stats.counters.reflection.rays, 48u * std::uint64_t(depth)) << "depth " << depth;
+        EXPECT_EQ(stats.counters.total().intersectionTests, 4u * stats.counters.rays());  // naive: 4 triangles per ray
     }
 }
 
@@ -192,7 +192,7 @@ TEST(RenderSettings, OutOfRangeSettingsAreInputErrors) {
     };
     bad([](RenderSettings& s) { s.width = 0; });
     bad([](RenderSettings& s) { s.maxDepth = 11; });
-    bad([](RenderSettings& s) { s.maxDepth = 0; });
+    bad([](RenderSettings& s) { s.maxDepth = -1; });
     bad([](RenderSettings& s) { s.pixelSamples = 0; });
     bad([](RenderSettings& s) { s.width = s.height = 65536; });  // 48 GB of framebuffer
     bad([](RenderSettings& s) { s.region = PixelWindow{10, 10, 10, 20}; });

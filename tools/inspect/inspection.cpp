@@ -37,6 +37,7 @@ void checkOptions(const InspectOptions& o) {
         throw InputError("--dump with several trees needs a file (-f FILE); each tree gets its own");
     if (several && o.leavesPath == "-") throw InputError("--dump-leaves - (standard output) needs a single tree");
     if (o.heatmapPath == "-") throw InputError("--heatmap needs a file name; a PNG is not written to standard output");
+    validate(o.picture);  // bounds the pixels, so the heat map cannot ask for more memory than a render
 }
 
 // Whether something other than the report goes to standard output.
@@ -65,7 +66,7 @@ void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
 
 // One heat map per tree; with several trees they share one scale so that they compare.
 void writeHeatmaps(const InspectOptions& o, const Scene& scene, const std::vector<InspectedTree>& trees) {
-    const int w = o.rayOptions.width, h = o.rayOptions.height;
+    const int w = o.picture.width, h = o.picture.height;
     std::vector<std::vector<float>> costs;
     HeatmapOptions shared = o.heatmap;
     float maximum = 1;
@@ -86,15 +87,18 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
     std::vector<TreeReport> reports;
     for (const InspectedTree& t : trees) reports.push_back(t.report);
     if (o.json) {
-        writeReportJson(std::cout, summary, o.rays ? std::optional(o.rayOptions) : std::nullopt, reports);
+        writeReportJson(std::cout, summary, o.rays ? std::optional(o.picture) : std::nullopt, reports);
         return;
     }
     std::cout << "scene " << summary.file << ": " << summary.triangles << " triangles, " << summary.spheres
               << " spheres, " << summary.lights << " lights\n";
     if (o.rays) {
-        std::cout << "rays: " << o.rayOptions.width << "x" << o.rayOptions.height << ", shadows "
-                  << (o.rayOptions.shadows ? "on" : "off") << ", reflection depth " << o.rayOptions.reflectionDepth
-                  << "\n";
+        const RenderSettings& p = o.picture;
+        std::cout << "rays: " << p.width << "x" << p.height << ", " << p.pixelSamples << " per pixel, shadows "
+                  << (p.softShadows ? "soft" : p.shadows ? "on" : "off") << ", reflection depth " << p.maxDepth
+                  << (p.glossyReflections ? " (glossy)" : "");
+        if (p.softShadows || p.glossyReflections) std::cout << ", " << p.distributedSamples << " rays per bundle";
+        std::cout << "\n";
     }
     std::cout << '\n';
     printTreeTable(std::cout, reports);
@@ -134,7 +138,7 @@ int runInspection(const InspectOptions& o) {
         t.accel = buildAccelerator(scene.primitives, t.report.settings);
         t.report.stats = t.accel->stats();
         t.report.scenePrimitives = scene.primitives.size();
-        if (o.rays) t.report.rays = traceRayStatistics(scene, *t.accel, o.rayOptions);
+        if (o.rays) t.report.rays = traceRayStatistics(scene, *t.accel, o.picture);
         if (o.depthHistogram) t.report.depths = depthHistogram(*t.accel);
         writeDumps(o, t);
         trees.push_back(std::move(t));

@@ -20,7 +20,7 @@ struct InspectOptions {
     AccelSettings accel;
     bool json = false;
     bool rays = false;
-    RayOptions rayOptions;             // also the heat map's resolution
+    RenderSettings picture;            // whose rays --rays traces; its size is the heat map's
     bool depthHistogram = false;
     std::string leavesPath;            // --dump-leaves
     std::string dumpFormat;            // "dot" or "json"; empty: no dump

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "accel_options.h"
+#include "picture_options.h"
 #include "inspection.h"
 #include "tool.h"
 
@@ -29,15 +30,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"naive", "bsp", "kd", "all"}))->capture_default_str();
     app.add_flag("--json", o.json, "Print the statistics as one JSON document");
 
-    const char* rays = "Rays (as rt-render)";
-    app.add_flag("--rays", o.rays, "Trace the picture's rays and report the work per ray")->group(rays);
-    app.add_option("-x,--width", o.rayOptions.width, "Picture width in pixels (rays and heat map)")
-        ->check(CLI::Range(1, 16384))->capture_default_str()->group(rays);
-    app.add_option("-y,--height", o.rayOptions.height, "Picture height in pixels")
-        ->check(CLI::Range(1, 16384))->capture_default_str()->group(rays);
-    app.add_flag("-s,--shadows", o.rayOptions.shadows, "Also shadow rays, one per hit and light")->group(rays);
-    app.add_option("-d,--depth", o.rayOptions.reflectionDepth, "Mirror bounces after a camera ray, 0-10 (as rt-render)")
-        ->check(CLI::Range(0, 10))->capture_default_str()->group(rays);
+    app.add_flag("--rays", o.rays, "Render the picture (options as rt-render's) and report the work per ray");
+    rt::tool::addPictureOptions(app, o.picture);
 
     const char* dumps = "Looking inside";
     app.add_flag("--depth-histogram", o.depthHistogram, "Leaves and primitive references per depth")->group(dumps);

@@ -4,6 +4,7 @@
 
 #include "render_command.h"
 #include "accel_options.h"
+#include "picture_options.h"
 #include "tool.h"
 
 namespace {
@@ -15,13 +16,6 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
     app.add_option("-o,--output", o.outputType, "Output type: null png exr tga text (default: from -f, else null)")
         ->check(CLI::IsMember({"null", "png", "exr", "tga", "text"}))->group(group);
     app.add_option("-f,--file", o.outputPath, "Output file; - for standard output")->group(group);
-    app.add_option("-x,--width", o.render.width, "Image width in pixels")->check(CLI::Range(1, 65536))
-        ->capture_default_str()->group(group);
-    app.add_option("-y,--height", o.render.height, "Image height in pixels")->check(CLI::Range(1, 65536))
-        ->capture_default_str()->group(group);
-    app.add_option("-d,--depth", o.render.maxDepth, "Reflection depth: reflections that may follow a camera ray")
-        ->check(CLI::Range(1, 10))->capture_default_str()->group(group);
-    app.add_flag("-s,--shadows", o.render.shadows, "Shadows: a shadow ray to each light")->group(group);
     auto* bsp = app.add_flag_callback("-B,--bsp", [&] { accelName = "bsp"; }, "Use the BSP tree")->group(group);
     auto* kd = app.add_flag_callback("-K,--kd", [&] { accelName = "kd"; }, "Use the KD tree")->group(group);
     bsp->excludes(kd);
@@ -32,17 +26,6 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
         ->group(group);
     app.add_option("--threads", o.render.threads, "Threads (default: all cores)")->check(CLI::NonNegativeNumber)
         ->group(group);
-}
-
-void addQualityOptions(CLI::App& app, RenderOptions& o) {
-    const char* group = "Image quality options";
-    app.add_option("-S,--supersample", o.render.pixelSamples, "Stochastic supersampling: rays per pixel on a jittered grid")
-        ->check(CLI::Range(1, 1 << 20))->group(group);
-    app.add_option("-D,--distributed", o.distributed,
-                   "Distributed ray tracing: s soft shadows, d diffuse (glossy) reflections, b both")
-        ->check(CLI::IsMember({"s", "d", "b"}))->group(group);
-    app.add_option("-r,--distributed-samples", o.render.distributedSamples, "Rays per distributed bundle")
-        ->check(CLI::Range(1, 1 << 20))->capture_default_str()->group(group);
 }
 
 void addImageOptions(CLI::App& app, RenderOptions& o) {
@@ -80,8 +63,8 @@ int main(int argc, char** argv) {
     RenderOptions options;
     std::string accelName = "kd";  // the thesis's program used the naive list unless -B or -K
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")->required();
+    rt::tool::addPictureOptions(app, options.render);
     addRenderingOptions(app, options, accelName);
-    addQualityOptions(app, options);
     rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);
     addOtherOptions(app, options);

@@ -50,13 +50,6 @@ ImageOutputSettings outputSettings(const RenderOptions& o) {
     return s;
 }
 
-void applyDistributed(RenderOptions& o) {
-    if (!o.distributed) return;
-    o.render.softShadows = *o.distributed != "d";
-    if (o.render.softShadows) o.render.shadows = true;  // soft shadows are shadows: -D s implies -s
-    o.render.glossyReflections = *o.distributed != "s";
-}
-
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -64,7 +57,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 int runRender(RenderOptions o) {
-    applyDistributed(o);
     if (o.region) o.render.region = parseRegion(*o.region);
     validate(o.render);
     const ImageOutputSettings output = outputSettings(o);

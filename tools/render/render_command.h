@@ -19,9 +19,8 @@ struct RenderOptions {
     int pngBits = 8;                      // --png-bits 8|16
     ColorSettings color;
     RenderSettings render;
-    AccelSettings accel;                  // kind Naive unless -B, -K or --accel
+    AccelSettings accel;                  // kind Kd unless -B or --accel says otherwise
     std::optional<std::string> region;    // --region x0,y0,x1,y1 (x1, y1 exclusive)
-    std::optional<std::string> distributed;  // -D s|d|b
     bool quiet = false;                   // -q
     bool statsLine = false;               // -b
     bool preprocessOnly = false;          // -p

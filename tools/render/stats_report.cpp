@@ -53,10 +53,10 @@ std::string statsJson(const std::string& scene, const RenderSettings& settings, 
       << "  \"renderSeconds\": " << s.renderSeconds << ",\n"
       << "  \"threads\": " << s.threads << ",\n"
       << "  \"objects\": " << s.objects << ",\n  \"lights\": " << s.lights << ",\n"
-      << "  \"primaryRays\": " << c.primaryRays << ",\n  \"shadowRays\": " << c.shadowRays << ",\n"
-      << "  \"reflectionRays\": " << c.reflectionRays << ",\n  \"rays\": " << c.rays() << ",\n"
-      << "  \"intersectionTests\": " << c.accel.intersectionTests << ",\n"
-      << "  \"traversalSteps\": " << c.accel.traversalSteps << ",\n"
+      << "  \"primaryRays\": " << c.camera.rays << ",\n  \"shadowRays\": " << c.shadow.rays << ",\n"
+      << "  \"reflectionRays\": " << c.reflection.rays << ",\n  \"rays\": " << c.rays() << ",\n"
+      << "  \"intersectionTests\": " << c.total().intersectionTests << ",\n"
+      << "  \"traversalSteps\": " << c.total().traversalSteps << ",\n"
       << "  \"testsPerRay\": " << s.testsPerRay() << ",\n"
       << "  \"raysPerSecond\": " << s.raysPerSecond() << "\n}\n";
     return o.str();
@@ -71,8 +71,8 @@ std::string statsSummary(const RenderSettings& settings, const AccelStats& accel
     const RenderCounters& c = s.counters;
     const PixelWindow w = settings.window();
     text += format("rendered %dx%d pixels in %.3f s on %d threads: %llu primary, %llu shadow, %llu reflection rays\n",
-                   w.width(), w.height(), s.renderSeconds, s.threads, static_cast<unsigned long long>(c.primaryRays),
-                   static_cast<unsigned long long>(c.shadowRays), static_cast<unsigned long long>(c.reflectionRays));
+                   w.width(), w.height(), s.renderSeconds, s.threads, static_cast<unsigned long long>(c.camera.rays),
+                   static_cast<unsigned long long>(c.shadow.rays), static_cast<unsigned long long>(c.reflection.rays));
     text += format("%.2f M rays/s, %.2f intersection tests per ray\n", s.raysPerSecond() / 1e6, s.testsPerRay());
     return text;
 }

@@ -1,0 +1,31 @@
+#include "picture_options.h"
+
+namespace rt::tool {
+
+void addPictureOptions(CLI::App& app, RenderSettings& s) {
+    const char* rendering = "Rendering options";
+    app.add_option("-x,--width", s.width, "Image width in pixels")->check(CLI::Range(1, 65536))
+        ->capture_default_str()->group(rendering);
+    app.add_option("-y,--height", s.height, "Image height in pixels")->check(CLI::Range(1, 65536))
+        ->capture_default_str()->group(rendering);
+    app.add_option("-d,--depth", s.maxDepth, "Reflection depth: reflections that may follow a camera ray (0-10)")
+        ->check(CLI::Range(0, 10))->capture_default_str()->group(rendering);
+    app.add_flag("-s,--shadows", s.shadows, "Shadows: a shadow ray to each light")->group(rendering);
+
+    const char* quality = "Image quality options";
+    app.add_option("-S,--supersample", s.pixelSamples, "Stochastic supersampling: rays per pixel on a jittered grid")
+        ->check(CLI::Range(1, 1 << 20))->group(quality);
+    app.add_option_function<std::string>(
+           "-D,--distributed",
+           [&s](const std::string& kind) {
+               s.softShadows = kind != "d";
+               s.shadows = s.shadows || s.softShadows;
+               s.glossyReflections = kind != "s";
+           },
+           "Distributed ray tracing: s soft shadows, d diffuse (glossy) reflections, b both")
+        ->check(CLI::IsMember({"s", "d", "b"}))->group(quality);
+    app.add_option("-r,--distributed-samples", s.distributedSamples, "Rays per distributed bundle")
+        ->check(CLI::Range(1, 1 << 20))->capture_default_str()->group(quality);
+}
+
+}  // namespace rt::tool
