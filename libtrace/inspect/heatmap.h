@@ -1,5 +1,5 @@
 // The heat map of rt-inspect: the scene from its camera, each pixel coloured by the work
-// of its camera ray (traversal steps plus intersection tests), with a colour bar, its
+// of its rays (traversal steps plus intersection tests), with a colour bar, its
 // scale and a caption underneath. Where a tree is weak -- leaves with many primitives,
 // long walks through empty space -- shows up bright.
 #pragma once
@@ -30,7 +30,7 @@ std::vector<float> heatTicks(float maximum, HeatScale scale);
 // The value at the top of the bar for these costs: options.maximum or the largest cost, at least 1.
 float heatMaximum(const std::vector<float>& cost, const HeatmapOptions& options);
 
-// `cost` holds width x height values, row-major, row 0 at the top (see cameraRayCost).
+// `cost` holds width x height values, row-major, row 0 at the top (see pixelWork).
 // The result is `width` wide and taller than `height` by the colour bar's strip.
 RgbImage renderHeatmap(const std::vector<float>& cost, int width, int height, const HeatmapOptions& options);
 

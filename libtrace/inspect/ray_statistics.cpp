@@ -1,7 +1,7 @@
 #include "inspect/ray_statistics.h"
 
-#include "render/camera_rays.h"
 #include "render/renderer.h"
+#include "render/tracer.h"
 
 namespace rt {
 
@@ -14,19 +14,28 @@ RenderCounters traceRayStatistics(const Scene& scene, const Accelerator& accel, 
     return stats.counters;
 }
 
-std::vector<float> cameraRayCost(const Scene& scene, const Accelerator& accel, int width, int height) {
-    const CameraRays camera(scene.camera, width, height);
-    std::vector<float> cost(std::size_t(width) * std::size_t(height));
+std::vector<float> pixelWork(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+                             PixelRays rays) {
+    RenderSettings traced = settings;
+    traced.region.reset();
+    if (rays == PixelRays::Camera) {
+        traced.shadows = traced.softShadows = traced.glossyReflections = false;
+        traced.maxDepth = 0;
+    }
+    validate(traced);
+    const Tracer tracer(scene, accel, traced);
+    const int width = traced.width, height = traced.height;
+    std::vector<float> work(std::size_t(width) * std::size_t(height));
 #pragma omp parallel for schedule(dynamic, 4)
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            RayCounters counters;
-            Hit hit;
-            accel.intersect(camera.at(x + Real(0.5), y + Real(0.5)), kInfinity, hit, counters);
-            cost[std::size_t(y) * width + x] = float(counters.traversalSteps + counters.intersectionTests);
+            RenderCounters counters;
+            tracer.pixel(x, y, counters);
+            const RayCounters all = counters.total();
+            work[std::size_t(y) * std::size_t(width) + std::size_t(x)] = float(all.traversalSteps + all.intersectionTests);
         }
     }
-    return cost;
+    return work;
 }
 
 }  // namespace rt

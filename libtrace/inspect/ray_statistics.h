@@ -23,8 +23,15 @@ double testsPerRay(const RayCounters& c);
 // bad settings or an unusable camera.
 RenderCounters traceRayStatistics(const Scene& scene, const Accelerator& accel, const RenderSettings& settings);
 
-// The work of each pixel's camera ray alone, traversal steps plus intersection tests,
-// row-major with row 0 at the top of the image (what the heat map shows).
-std::vector<float> cameraRayCost(const Scene& scene, const Accelerator& accel, int width, int height);
+// Which rays a pixel's work counts: its camera rays alone, or every ray they spawn.
+enum class PixelRays { Camera, All };
+
+// The work of each pixel of the whole settings.width x settings.height picture (traversal
+// steps plus intersection tests, summed over its rays), row-major with row 0 at the top:
+// what the heat map shows. With PixelRays::Camera only the camera rays are traced (as
+// many per pixel as settings.pixelSamples); with All, every shadow and reflection ray the
+// settings ask for as well. Throws rt::InputError for bad settings or an unusable camera.
+std::vector<float> pixelWork(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+                             PixelRays rays);
 
 }  // namespace rt

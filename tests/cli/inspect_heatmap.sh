@@ -28,4 +28,14 @@ done
 expect_exit 0 "$RT_INSPECT" --tree all --heatmap "$WORK/pair.png" -x 64 -y 48 --heatmap-scale log "$WORK/dense_left.xml"
 [ -s "$WORK/pair-bsp.png" ] && [ -s "$WORK/pair-kd.png" ] || fail "--tree all should write pair-bsp.png and pair-kd.png"
 [ ! -e "$WORK/pair.png" ] || fail "pair.png should not exist"
+# --heatmap-rays all adds each pixel's shadow rays to its camera rays: on one fixed scale
+# (--heatmap-max), the picture is nowhere cooler and somewhere warmer.
+for rays in camera all; do
+    expect_exit 0 "$RT_INSPECT" --heatmap "$WORK/$rays.png" --heatmap-rays $rays --heatmap-max 400 -s \
+        -x 120 -y 90 "$WORK/dense_left.xml"
+done
+camera=$(green Avg "$WORK/camera.png" 0 0 120 90)
+all=$(green Avg "$WORK/all.png" 0 0 120 90)
+awk -v c="$camera" -v a="$all" 'BEGIN { exit !(a > c) }' || fail "all rays ($all) not warmer than camera rays ($camera)"
+expect_exit 2 "$RT_INSPECT" --heatmap "$WORK/x.png" --heatmap-rays some "$WORK/dense_left.xml"
 echo "inspect_heatmap: ok"

@@ -65,7 +65,10 @@ TEST(Heatmap, HottestWhereTheGeometryIsDensest) {
     const Scene scene = clusterAndLoneSphere();
     const BoxCullingList accel(scene.primitives);
     const int w = 80, h = 60;
-    const std::vector<float> cost = cameraRayCost(scene, accel, w, h);
+    RenderSettings picture;
+    picture.width = w;
+    picture.height = h;
+    const std::vector<float> cost = pixelWork(scene, accel, picture, PixelRays::Camera);
     const auto [x, y] = hottestPixel(cost, w);
     // The cluster spans x in [-4, -2.5] at z >= 10. Looking down +z with +y up in a
     // right-handed world, +x is to the left: the cluster is in the right third of the picture.

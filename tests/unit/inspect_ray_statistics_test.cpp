@@ -126,14 +126,50 @@ TEST(RayStatistics, SameCountsWithOneOrTwoThreads) {
     EXPECT_GT(one.reflection.rays, 0u);
 }
 
-TEST(RayStatistics, CameraRayCostPerPixel) {
+TEST(RayStatistics, CameraRayWorkPerPixel) {
     Scene scene = sceneLookingDownZ();
     for (int i = 0; i < 3; ++i) scene.looseObjects.addSphere({{0, 0, Real(5 + 3 * i)}, 1}, 0);
+    scene.lights.push_back({{0, 0, 0}});
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
-    const std::vector<float> cost = cameraRayCost(scene, naive, 10, 8);
+    RenderSettings picture;
+    picture.width = 10;
+    picture.height = 8;
+    picture.shadows = true;  // not counted: camera rays only
+    const std::vector<float> cost = pixelWork(scene, naive, picture, PixelRays::Camera);
     ASSERT_EQ(cost.size(), 80u);
     for (const float c : cost) EXPECT_EQ(c, 3.0f);  // the naive list: every primitive, no traversal
+    picture.pixelSamples = 4;
+    for (const float c : pixelWork(scene, naive, picture, PixelRays::Camera)) EXPECT_EQ(c, 12.0f);
+}
+
+// All rays: a pixel that sees a sphere lit from the camera adds a shadow ray's tests
+// (up to 3 with the naive list, fewer when it stops at the first occluder); the rest
+// of the picture stays at its camera ray's 3.
+TEST(RayStatistics, AllRaysWorkPerPixelAddsShadowRays) {
+    Scene scene = sceneLookingDownZ();
+    for (int i = 0; i < 3; ++i) scene.looseObjects.addSphere({{0, 0, Real(5 + 3 * i)}, 1}, 0);
+    scene.lights.push_back({{0, 0, 0}});
+    scene.flatten();
+    const NaiveAccelerator naive(scene.primitives);
+    RenderSettings picture;
+    picture.width = 40;
+    picture.height = 30;
+    picture.shadows = true;
+    const std::vector<float> camera = pixelWork(scene, naive, picture, PixelRays::Camera);
+    const std::vector<float> all = pixelWork(scene, naive, picture, PixelRays::All);
+    std::size_t lit = 0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        EXPECT_GE(all[i], camera[i]);
+        EXPECT_LE(all[i], camera[i] + 3.0f);
+        lit += all[i] > camera[i];
+    }
+    EXPECT_GT(lit, 0u);
+    EXPECT_LT(lit, all.size());
+    double sum = 0;
+    for (const float w : all) sum += w;
+    const RenderCounters counts = traceRayStatistics(scene, naive, picture);
+    EXPECT_EQ(sum, double(counts.total().intersectionTests + counts.total().traversalSteps));
 }
 
 TEST(RayStatistics, BadCameraIsAnInputError) {

@@ -95,7 +95,10 @@ TEST_P(InspectTrees, DenseClusterIsHottest) {
     scene.flatten();
     const auto accel = build(scene);
     const int w = 120, h = 90;
-    const std::vector<float> cost = cameraRayCost(scene, *accel, w, h);
+    RenderSettings picture;
+    picture.width = w;
+    picture.height = h;
+    const std::vector<float> cost = pixelWork(scene, *accel, picture, PixelRays::Camera);
     const auto hottest = std::max_element(cost.begin(), cost.end()) - cost.begin();
     EXPECT_LT(hottest % w, w / 2) << "hottest pixel at " << hottest % w << "," << hottest / w;
     const RgbImage image = renderHeatmap(cost, w, h, {});

@@ -71,13 +71,15 @@ void writeHeatmaps(const InspectOptions& o, const Scene& scene, const std::vecto
     HeatmapOptions shared = o.heatmap;
     float maximum = 1;
     for (const InspectedTree& t : trees) {
-        costs.push_back(cameraRayCost(scene, *t.accel, w, h));
+        costs.push_back(pixelWork(scene, *t.accel, o.picture, o.heatmapRays));
         maximum = std::max(maximum, heatMaximum(costs.back(), o.heatmap));
     }
     if (!shared.maximum) shared.maximum = maximum;
     for (std::size_t i = 0; i < trees.size(); ++i) {
         const TreeReport& report = trees[i].report;
-        shared.caption = report.stats.name + ": steps + tests per camera ray";  // the font draws capitals
+        shared.caption = report.stats.name +
+                         (o.heatmapRays == PixelRays::All ? ": steps + tests per pixel, all rays"
+                                                          : ": steps + tests per pixel, camera rays");  // drawn in capitals
         const std::string path = pathFor(o.heatmapPath, accelKindName(report.settings.kind), trees.size() > 1);
         writeHeatmapPng(path, renderHeatmap(costs[i], w, h, shared));
     }

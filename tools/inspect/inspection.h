@@ -27,6 +27,7 @@ struct InspectOptions {
     std::string dumpPath = "-";
     TreeCut cut;                       // --max-depth and --leaves
     std::string heatmapPath;
+    PixelRays heatmapRays = PixelRays::Camera;  // --heatmap-rays camera|all
     HeatmapOptions heatmap;
 };
 

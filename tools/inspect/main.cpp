@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     CLI::App app{"Shows how the KD and BSP trees of a scene look and perform."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-inspect"));
     rt::tool::InspectOptions o;
-    std::string tree = "kd", leaves = "all", scale = "linear";
+    std::string tree = "kd", leaves = "all", scale = "linear", heatmapRays = "camera";
     std::optional<std::uint32_t> maxDepth;
     std::optional<float> heatmapMax;
 
@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
         ->capture_default_str()->group(dumps);
     app.add_option("--max-depth", maxDepth, "Dump the tree only down to this depth")->group(dumps);
     app.add_option("--heatmap", o.heatmapPath, "Write a PNG heat map of the camera rays' work")->group(dumps);
+    app.add_option("--heatmap-rays", heatmapRays,
+                   "Work of each pixel's camera rays, or of all its rays (-s, -d, -D as for --rays)")
+        ->check(CLI::IsMember({"camera", "all"}))->capture_default_str()->group(dumps);
     app.add_option("--heatmap-scale", scale, "Colour scale: linear or log")
         ->check(CLI::IsMember({"linear", "log"}))->capture_default_str()->group(dumps);
     app.add_option("--heatmap-max", heatmapMax, "Work at the top of the colour bar [default: the largest]")
@@ -59,6 +62,7 @@ int main(int argc, char** argv) {
     o.cut.maxDepth = maxDepth;
     o.cut.nonEmptyOnly = leaves == "nonempty";
     o.heatmap.scale = scale == "log" ? rt::HeatScale::Log : rt::HeatScale::Linear;
+    o.heatmapRays = heatmapRays == "all" ? rt::PixelRays::All : rt::PixelRays::Camera;
     o.heatmap.maximum = heatmapMax;
     return rt::tool::run("rt-inspect", [&] { return rt::tool::runInspection(o); });
 }
