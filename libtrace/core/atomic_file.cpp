@@ -34,6 +34,12 @@ void renameOver(const std::string& from, const std::string& to) {
     }
 }
 
+// Removes a temporary folder and everything in it, ignoring errors (it may not exist).
+void removeQuietly(const std::filesystem::path& p) {
+    std::error_code ignored;
+    std::filesystem::remove_all(p, ignored);
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
@@ -66,6 +72,39 @@ void commitFileAtomically(const std::string& path, const std::function<bool(cons
         throw std::runtime_error(path + ": cannot write");
     }
     renameOver(temp, path);
+}
+
+void commitFolderAtomically(const std::string& folder, const std::function<bool(const std::string&)>& write) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const bool exists = fs::exists(folder, ec);
+    if (exists && !fs::is_directory(folder, ec))
+        throw std::runtime_error(folder + ": cannot write: it exists and is not a folder");
+    const fs::path temp = temporaryPathFor(folder), old = temporaryPathFor(folder);
+    if (!fs::create_directories(temp, ec))
+        throw std::runtime_error(folder + ": cannot write: " + (ec ? ec.message() : "the temporary folder exists"));
+    bool ok = false;
+    try {
+        ok = write(temp.string());
+    } catch (...) {
+        removeQuietly(temp);
+        throw;
+    }
+    if (!ok) {
+        removeQuietly(temp);
+        throw std::runtime_error(folder + ": cannot write");
+    }
+    // Two renames: the old folder out of the way, the new one in. Between them `folder`
+    // is briefly missing; a failure of the second puts the old one back.
+    if (exists) fs::rename(folder, old, ec);
+    if (!ec) fs::rename(temp, folder, ec);
+    if (ec) {
+        const std::string why = ec.message();
+        if (exists) fs::rename(old, folder, ec);
+        removeQuietly(temp);
+        throw std::runtime_error(folder + ": cannot write: " + why);
+    }
+    removeQuietly(old);
 }
 
 }  // namespace rt

@@ -19,4 +19,11 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 // then renames it over `path`. The temporary is removed if write throws or returns false.
 void commitFileAtomically(const std::string& path, const std::function<bool(const std::string&)>& write);
 
+// For an output that is a folder of files: calls write(tempFolder) with a new, empty
+// temporary folder beside `folder`, then puts it in the place of `folder`, whose old
+// contents are removed (nothing stale is left from an earlier output). If write throws or
+// returns false, the temporary folder is removed and `folder` is untouched. Throws
+// std::runtime_error if `folder` exists but is not a folder, or cannot be replaced.
+void commitFolderAtomically(const std::string& folder, const std::function<bool(const std::string&)>& write);
+
 }  // namespace rt

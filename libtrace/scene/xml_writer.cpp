@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <filesystem>
+#include <fstream>
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
@@ -203,21 +204,35 @@ std::string modelFolderFor(const std::string& xmlPath) {
 }
 
 void saveSceneXml(const Scene& scene, const std::string& path) {
-    std::vector<std::string> modelFiles(scene.models.size());
-    if (path != "-" && !scene.models.empty()) {
-        const std::filesystem::path folder = modelFolderFor(path);
-        std::filesystem::create_directories(folder);
-        std::vector<std::string> files = namesOf(scene.models);
-        for (std::string& name : files) name = fileNameFor(name);
-        files = uniqueNames(std::move(files), "model", true);
-        for (std::size_t i = 0; i < scene.models.size(); ++i) {
-            writeRawFile((folder / (files[i] + ".raw")).string(), scene.models[i]);
-            modelFiles[i] = (folder.filename() / (files[i] + ".raw")).generic_string();
-        }
+    const auto saveXml = [&](std::vector<std::string> modelFiles, std::ostream& out) {
+        pugi::xml_document doc;
+        SceneXmlWriter(scene, std::move(modelFiles)).build(doc);
+        doc.save(out, "  ");
+        out.flush();
+        return bool(out);
+    };
+    if (path == "-" || scene.models.empty()) {
+        writeFileAtomically(path, [&](std::ostream& out) { saveXml(std::vector<std::string>(scene.models.size()), out); });
+        return;
     }
-    pugi::xml_document doc;
-    SceneXmlWriter(scene, std::move(modelFiles)).build(doc);
-    writeFileAtomically(path, [&](std::ostream& out) { doc.save(out, "  "); });
+    // The RAW files go to a new folder and the XML to a temporary file; only when both are
+    // written does the folder replace the old one and the XML follow, so a failure leaves
+    // the previous scene as it was, and a successful save leaves no stale RAW file.
+    const std::filesystem::path folder = modelFolderFor(path);
+    std::vector<std::string> files = namesOf(scene.models);
+    for (std::string& name : files) name = fileNameFor(name);
+    files = uniqueNames(std::move(files), "model", true);
+    std::vector<std::string> modelFiles;
+    for (const std::string& file : files) modelFiles.push_back((folder.filename() / (file + ".raw")).generic_string());
+    commitFileAtomically(path, [&](const std::string& tempXml) {
+        commitFolderAtomically(folder.string(), [&](const std::string& tempFolder) {
+            for (std::size_t i = 0; i < scene.models.size(); ++i)
+                writeRawFile((std::filesystem::path(tempFolder) / (files[i] + ".raw")).string(), scene.models[i]);
+            std::ofstream out(tempXml, std::ios::binary | std::ios::trunc);
+            return out && saveXml(modelFiles, out);
+        });
+        return true;
+    });
 }
 
 }  // namespace rt

@@ -12,8 +12,10 @@ namespace rt {
 // saveSceneXml(scene, "out/scene.xml") writes each model as a RAW file in the folder
 // out/scene/ (named after the model, made safe as a file name) and then out/scene.xml,
 // which refers to them relatively. saveSceneXml(scene, "-") writes the XML to standard
-// output with every model inline (base64 RAW data). Every file is written atomically,
-// the XML last. Loose objects become <sphere> and <triangle>; each instance a <model>
+// output with every model inline (base64 RAW data). The save is atomic as a whole: the
+// RAW files go to a new folder and the XML to a temporary file, and only then does the
+// folder replace out/scene/ (old RAW files included) and the XML out/scene.xml, so a
+// failure leaves the previous scene as it was. Loose objects become <sphere> and <triangle>; each instance a <model>
 // inside a <matrix> (none for the identity). Material and model names are made unique
 // and non-empty if they are not. Throws std::runtime_error if a file cannot be written,
 // std::invalid_argument for a model holding both triangles and spheres (RAW holds one kind).

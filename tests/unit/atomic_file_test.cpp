@@ -66,3 +66,43 @@ TEST_F(AtomicFile, UnwritableFolderIsAnError) {
     EXPECT_THROW(writeFileAtomically((dir / "missing" / "a.txt").string(), [](std::ostream& os) { os << "x"; }),
                  std::runtime_error);
 }
+
+TEST_F(AtomicFile, FolderIsReplacedWhole) {
+    const auto folder = (dir / "models").string();
+    commitFolderAtomically(folder, [](const std::string& temp) {
+        std::ofstream(fs::path(temp) / "old.raw") << "old";
+        return true;
+    });
+    commitFolderAtomically(folder, [](const std::string& temp) {
+        std::ofstream(fs::path(temp) / "new.raw") << "new";
+        return true;
+    });
+    EXPECT_EQ(slurp(fs::path(folder) / "new.raw"), "new");
+    EXPECT_FALSE(fs::exists(fs::path(folder) / "old.raw")) << "nothing stale from the earlier output";
+    EXPECT_EQ(entries(), 1u) << "no temporary folder left";
+}
+
+TEST_F(AtomicFile, FailedFolderWriteLeavesTheOldFolder) {
+    const auto folder = (dir / "models").string();
+    commitFolderAtomically(folder, [](const std::string& temp) {
+        std::ofstream(fs::path(temp) / "a.raw") << "old";
+        return true;
+    });
+    EXPECT_THROW(commitFolderAtomically(folder,
+                                        [](const std::string& temp) -> bool {
+                                            std::ofstream(fs::path(temp) / "a.raw") << "half";
+                                            throw std::runtime_error("disk full");
+                                        }),
+                 std::runtime_error);
+    EXPECT_THROW(commitFolderAtomically(folder, [](const std::string&) { return false; }), std::runtime_error);
+    EXPECT_EQ(slurp(fs::path(folder) / "a.raw"), "old");
+    EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFile, AFileWhereTheFolderGoesIsAnError) {
+    const auto path = (dir / "models").string();
+    std::ofstream(path) << "mine";
+    EXPECT_THROW(commitFolderAtomically(path, [](const std::string&) { return true; }), std::runtime_error);
+    EXPECT_EQ(slurp(path), "mine");
+    EXPECT_EQ(entries(), 1u);
+}
