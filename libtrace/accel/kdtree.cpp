@@ -7,6 +7,7 @@
 
 #include "accel/kd_split.h"
 #include "accel/tree_builder.h"
+#include "core/parallel_errors.h"
 #include "geometry/clip.h"
 
 namespace rt {
@@ -37,11 +38,13 @@ void forEachAxis(bool parallel, const PerAxis& f) {
         for (int axis = 0; axis < 3; ++axis) f(axis);
         return;
     }
+    ParallelErrors errors;
     for (int axis = 0; axis < 3; ++axis) {
 #pragma omp task default(shared) firstprivate(axis)
-        f(axis);
+        errors.capture([&] { f(axis); });
     }
 #pragma omp taskwait
+    errors.rethrowIfAny();
 }
 
 struct KdNode {
@@ -213,13 +216,17 @@ KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
         root.boxes[id] = toFloatBox(prims.bounds(std::uint32_t(id)), root.voxel);
     }
     if (carriesEvents(settings.splitMethod, n)) {
+        ParallelErrors errors;
 #pragma omp parallel for schedule(static, 1)
         for (int axis = 0; axis < 3; ++axis) {
-            std::vector<SplitEvent>& events = root.events[axis];
-            events.reserve(2 * std::size_t(n));
-            addEventsByType(root.boxes, axis, events);  // spares radixSortEvents its type pass
-            radixSortEvents(events);
+            errors.capture([&] {
+                std::vector<SplitEvent>& events = root.events[axis];
+                events.reserve(2 * std::size_t(n));
+                addEventsByType(root.boxes, axis, events);  // spares radixSortEvents its type pass
+                radixSortEvents(events);
+            });
         }
+        errors.rethrowIfAny();
     }
     return root;
 }

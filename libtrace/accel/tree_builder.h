@@ -1,7 +1,8 @@
 // The recursion both tree builders share: split a node or make it a leaf, depth first,
 // into a FlatTree in pre-order. Large subtrees are built as OpenMP tasks into their own
 // FlatTrees and appended in a fixed order, so the tree is the same for any number of
-// threads (the task only changes who builds a subtree, not what is built).
+// threads (the task only changes who builds a subtree, not what is built). An exception
+// in any task (out of memory) abandons the build and is rethrown by buildFlatTree.
 #pragma once
 
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include "accel/split_tree.h"
 #include "core/aabb.h"
+#include "core/parallel_errors.h"
 
 namespace rt {
 
@@ -27,8 +29,11 @@ struct Partition {
 constexpr std::size_t kTaskPrimitives = 16384;
 
 // `split(node)` returns the partition of `node`, or nullopt for a leaf of node.primitives.
+// A subtree below kTaskPrimitives spawns no task (a child never holds more references than
+// its parent), so exceptions there unwind to the nearest task, which captures them in `errors`.
 template <typename BuildNode, typename SplitFunction>
-void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split) {
+void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split, ParallelErrors& errors) {
+    if (errors.failed()) return;  // another task failed: the tree is abandoned
     std::optional<Partition<BuildNode>> parts = split(node);
     if (!parts) {
         out.addLeaf(node.primitives);
@@ -39,16 +44,18 @@ void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split) {
     if (!parallel) {
         const std::size_t self = out.nodes.size();
         out.nodes.push_back(SplitNode::leaf(0, 0));  // placeholder until the above child's index is known
-        buildSubtree(std::move(parts->below), out, split);
+        buildSubtree(std::move(parts->below), out, split, errors);
         out.nodes[self] = SplitNode::inner(parts->axis, parts->split, std::uint32_t(out.nodes.size()));
-        buildSubtree(std::move(parts->above), out, split);
+        buildSubtree(std::move(parts->above), out, split, errors);
         return;
     }
+    // Nothing may unwind past the taskwait while the task still uses `below` and `parts`.
     FlatTree below, above;
 #pragma omp task default(shared)
-    buildSubtree(std::move(parts->below), below, split);
-    buildSubtree(std::move(parts->above), above, split);
+    errors.capture([&] { buildSubtree(std::move(parts->below), below, split, errors); });
+    errors.capture([&] { buildSubtree(std::move(parts->above), above, split, errors); });
 #pragma omp taskwait
+    if (errors.failed()) return;
     out.nodes.push_back(SplitNode::inner(parts->axis, parts->split,
                                          std::uint32_t(out.nodes.size() + 1 + below.nodes.size())));
     out.append(below);
@@ -58,9 +65,11 @@ void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split) {
 template <typename BuildNode, typename SplitFunction>
 FlatTree buildFlatTree(BuildNode root, const SplitFunction& split) {
     FlatTree tree;
+    ParallelErrors errors;
 #pragma omp parallel
 #pragma omp single
-    buildSubtree(std::move(root), tree, split);
+    errors.capture([&] { buildSubtree(std::move(root), tree, split, errors); });
+    errors.rethrowIfAny();
     return tree;
 }
 

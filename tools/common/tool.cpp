@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "core/error.h"
 #include "core/real.h"
@@ -27,6 +28,9 @@ int run(const std::string& toolName, const std::function<int()>& body) {
     } catch (const InputError& e) {
         printError(toolName, e.what());
         return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        printError(toolName, "out of memory: the scene, its tree or the image is too large for this machine");
+        return kExitFailure;
     } catch (const std::exception& e) {
         printError(toolName, e.what());
         return kExitFailure;
