@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <new>
 
 #include "core/error.h"
 
@@ -10,23 +11,37 @@ namespace rt {
 
 LineTrackingFile::LineTrackingFile(const std::string& path, std::size_t maxLineBytes)
     : file_(std::fopen(path.c_str(), "rb"), &std::fclose),
-      buffer_(std::min(maxLineBytes, std::size_t(64) << 10)),
+      buffer_(std::min(maxLineBytes + 2, std::size_t(64) << 10)),
       maxLineBytes_(maxLineBytes) {
     if (!file_) throw InputError(path + ": cannot open: " + std::strerror(errno));
     setg(buffer_.data(), buffer_.data(), buffer_.data());
 }
 
+namespace {
+
+// True if the character at p ends a line: "\n", or a "\r" that does not start "\r\n"
+// (old Mac files end lines with "\r" alone). A "\r" last before `end` is undecided, and
+// counted as no break: the buffer keeps it with the line until the next block says.
+bool endsLine(const char* p, const char* end) { return *p == '\n' || (*p == '\r' && p + 1 < end && p[1] != '\n'); }
+
+std::size_t lineBreaks(const char* from, const char* to, const char* end) {
+    std::size_t n = 0;
+    for (const char* p = from; p < to; ++p) n += endsLine(p, end);
+    return n;
+}
+
+}  // namespace
+
 std::size_t LineTrackingFile::lineStart() const {
     const char* begin = eback();
     // The last character read belongs to the line; a line break right at gptr()-1 ends it.
-    const char* end = gptr() > begin ? gptr() - 1 : begin;
-    const char* at = end;
-    while (at > begin && at[-1] != '\n') --at;
+    const char* at = gptr() > begin ? gptr() - 1 : begin;
+    while (at > begin && !endsLine(at - 1, egptr())) --at;
     return std::size_t(at - begin);
 }
 
 std::size_t LineTrackingFile::lineNumber() const {
-    return linesBefore_ + std::size_t(std::count(eback(), eback() + lineStart(), '\n')) + 1;
+    return linesBefore_ + lineBreaks(eback(), eback() + lineStart(), egptr()) + 1;
 }
 
 std::string_view LineTrackingFile::lineText() const {
@@ -42,16 +57,21 @@ LineTrackingFile::int_type LineTrackingFile::underflow() {
     char* begin = eback();
     char* end = egptr();
     char* keep = end;
-    while (keep > begin && keep[-1] != '\n') --keep;
-    linesBefore_ += std::size_t(std::count(begin, keep, '\n'));
+    while (keep > begin && !endsLine(keep - 1, end)) --keep;
+    linesBefore_ += lineBreaks(begin, keep, end);
     const std::size_t kept = std::size_t(end - keep);
     if (kept == buffer_.size()) {
-        if (kept >= maxLineBytes_) {
+        if (kept >= bufferLimit()) {
             tooLong_ = true;
             return traits_type::eof();
         }
         const std::size_t keepOffset = std::size_t(keep - begin);
-        buffer_.resize(std::min(2 * buffer_.size(), maxLineBytes_));
+        try {
+            buffer_.resize(std::min(2 * buffer_.size(), bufferLimit()));
+        } catch (const std::bad_alloc&) {  // std::istream would swallow it and end the file here
+            readFailed_ = true;
+            return traits_type::eof();
+        }
         keep = buffer_.data() + keepOffset;
     }
     std::memmove(buffer_.data(), keep, kept);

@@ -1,5 +1,5 @@
 // A read-only file as a std::streambuf that can say which line was read last and show its
-// text, so that a parser which only reports values through callbacks (tinyobjloader's
+// text (lines end with "\n", "\r\n" or, in old Mac files, "\r"), so that a parser which only reports values through callbacks (tinyobjloader's
 // streaming API) can still have its errors point at file:line.
 //
 // The file is read in 64 KiB blocks; when a block is used up, the unfinished line at its end
@@ -28,7 +28,7 @@ public:
     std::string_view lineText() const;
     // True once a line longer than maxLineBytes was met; reading stops there (end of file).
     bool tooLong() const { return tooLong_; }
-    // True once reading failed with an I/O error; reading stops there.
+    // True once reading failed (an I/O error, or no memory for a longer line); reading stops there.
     bool readFailed() const { return readFailed_; }
 
 protected:
@@ -36,6 +36,7 @@ protected:
 
 private:
     std::size_t lineStart() const;  // offset in buffer_ where the line read last begins
+    std::size_t bufferLimit() const { return maxLineBytes_ + 2; }  // the longest line and "\r\n"
 
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;
     std::vector<char> buffer_;

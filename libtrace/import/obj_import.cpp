@@ -17,26 +17,38 @@
 #include "core/error.h"
 #include "import/line_tracking_file.h"
 #include "import/mesh_data.h"
+#include "import/obj_syntax.h"
 #include "import/polygon.h"
 
 namespace rt {
 namespace {
 
-// Reads the .mtl files an OBJ names, relative to the OBJ's folder. A file that defines no
+// Reads the .mtl files an OBJ names, relative to the OBJ's folder: regular files of at
+// most kMaxMtlBytes only (not a device or a pipe that never ends). A file that defines no
 // material counts as not loaded (tinyobjloader would otherwise index an empty array).
 class MtlReader : public tinyobj::MaterialReader {
 public:
+    static constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t(64) << 20;
+
     explicit MtlReader(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* byName, std::string* warn, std::string* err) override {
-        std::ifstream in(folder_ / name);
-        if (!in) {
-            *warn += "material file \"" + name + "\" not found\n";
+        const std::filesystem::path path = folder_ / name;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxMtlBytes) {
+            *warn += "material file \"" + name + "\" not found, not a file, or larger than 64 MiB\n";
             return false;
         }
+        std::ifstream in(path);
         const std::size_t before = materials->size();
         tinyobj::LoadMtl(byName, materials, &in, warn, err);
+        // LoadMtl always appends the material it was filling; without a "newmtl" it has no name.
+        if (materials->size() > before && materials->back().name.empty()) {
+            const auto unnamed = byName->find("");
+            if (unnamed != byName->end() && std::size_t(unnamed->second) == materials->size() - 1) byName->erase(unnamed);
+            materials->pop_back();
+        }
         if (materials->size() > before) return true;
         *warn += "material file \"" + name + "\" defines no material\n";
         return false;
@@ -55,19 +67,6 @@ Material materialFromMtl(const tinyobj::material_t& mtl) {
     return m;
 }
 
-// Characters a line of numbers may hold after its keyword. tinyobjloader reads anything it
-// cannot parse as 0 ("v nan nan nan" would become the origin), so other characters are refused.
-bool onlyNumbers(std::string_view line, std::string_view extra) {
-    const std::size_t keyword = line.find_first_not_of(" \t");
-    const std::size_t rest = line.find_first_of(" \t", keyword);
-    if (rest == std::string_view::npos) return true;
-    for (const char ch : line.substr(rest)) {
-        const bool ok = (ch >= '0' && ch <= '9') || ch == ' ' || ch == '\t' || ch == '\r' || ch == '-' || ch == '+' ||
-                        extra.find(ch) != std::string_view::npos;
-        if (!ok) return false;
-    }
-    return true;
-}
 
 class ObjSceneBuilder {
 public:
@@ -75,8 +74,10 @@ public:
 
     void read() {
         tinyobj::callback_t callbacks;
-        callbacks.vertex_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
-            static_cast<ObjSceneBuilder*>(self)->vertex(x, y, z);
+        // The coordinates are read again from the line (obj_syntax.h): tinyobjloader reads
+        // what it cannot parse as 0.
+        callbacks.vertex_cb = [](void* self, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t) {
+            static_cast<ObjSceneBuilder*>(self)->vertex();
         };
         callbacks.index_cb = [](void* self, tinyobj::index_t* corners, int count) {
             static_cast<ObjSceneBuilder*>(self)->face(corners, count);
@@ -140,11 +141,17 @@ private:
         throw inputErrorAt(path_, int(file_.lineNumber()), message);
     }
 
-    void vertex(float x, float y, float z) {
-        if (!onlyNumbers(file_.lineText(), ".eE") || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-            fail("vertex coordinates are not finite numbers: \"" + std::string(file_.lineText()) + "\"");
+    // A line cut at the length limit must not be read as if it were whole.
+    void checkLineLength() const {
+        if (file_.tooLong()) fail("line longer than 1 MiB");
+    }
+
+    void vertex() {
+        checkLineLength();
+        const std::optional<Point3f> p = parseObjVertex(file_.lineText());
+        if (!p) fail("vertex coordinates are not three finite numbers: \"" + std::string(file_.lineText()) + "\"");
         if (positions_.size() == std::numeric_limits<std::uint32_t>::max()) fail("more than 2^32 - 1 vertices");
-        positions_.push_back({x, y, z});
+        positions_.push_back(*p);
     }
 
     // OBJ counts vertices from 1, or backwards from the last one defined (-1).
@@ -158,19 +165,34 @@ private:
     }
 
     void face(const tinyobj::index_t* corners, int count) {
-        if (!onlyNumbers(file_.lineText(), "/"))
-            fail("face corners are not vertex numbers: \"" + std::string(file_.lineText()) + "\"");
+        checkLineLength();
+        if (!isObjFace(file_.lineText()))
+            fail("face corners are not v, v/t, v//n or v/t/n with vertex numbers of at most 9 digits: \"" +
+                 std::string(file_.lineText()) + "\"");
         polygon_.clear();
         for (int i = 0; i < count; ++i) polygon_.push_back(vertexIndex(corners[i].vertex_index));
         if (count == 1) ++out_.report.droppedPoints;
         if (count == 2) ++out_.report.droppedLines;
         if (count < 3) return;
+        if (count > 3) dropRepeatedCorners();
+        // Each polygon accounts for n - 2 triangles, kept or dropped, as Assimp's counts do.
+        out_.report.droppedDegenerate += std::size_t(count) - std::max<std::size_t>(polygon_.size(), 2);
+        if (polygon_.size() < 3) return;
         cornerPositions_.clear();
         for (const std::uint32_t v : polygon_) cornerPositions_.push_back(positions_[v]);
         triangles_.clear();
         if (!triangulatePolygon(cornerPositions_, triangles_)) ++fannedConcave_;
         std::deque<std::uint32_t>& out = currentPart().corners;
         for (const std::uint32_t corner : triangles_) out.push_back(polygon_[corner]);
+    }
+
+    // A polygon that visits the same point twice in a row has a corner with no angle, which
+    // ear clipping cannot place; it is triangulated without the repeat, whose triangle (of
+    // no area) counts as a dropped degenerate one.
+    void dropRepeatedCorners() {
+        const auto same = [&](std::uint32_t a, std::uint32_t b) { return positions_[a] == positions_[b]; };
+        polygon_.erase(std::unique(polygon_.begin(), polygon_.end(), same), polygon_.end());
+        while (polygon_.size() > 1 && same(polygon_.front(), polygon_.back())) polygon_.pop_back();
     }
 
     void useMaterial(const char* name, int material) {
@@ -183,7 +205,7 @@ private:
     void group(const char** names, int count) {
         group_.clear();
         for (int i = 0; i < count; ++i) {
-            if (i) group_ += '_';
+            if (i) group_ += ' ';  // names hold no blanks; the model name turns it into '_'
             group_ += names[i];
         }
         current_ = nullptr;

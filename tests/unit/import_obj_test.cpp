@@ -153,10 +153,14 @@ TEST(ImportObj, ZUpModelsAreTurnedToYUp) {
 TEST(ImportObj, BrokenFilesAreInputErrorsAtTheirLine) {
     TempDir dir;
     const std::string m = dir.path("m.obj");
-    EXPECT_EQ(objError(dir, "v 0 0 0\nv nan 0 0\n"), m + ":2: vertex coordinates are not finite numbers: \"v nan 0 0\"");
-    EXPECT_EQ(objError(dir, "# big\nv 1e39 0 0\n"), m + ":2: vertex coordinates are not finite numbers: \"v 1e39 0 0\"");
-    EXPECT_EQ(objError(dir, std::string(kSquare) + "\n\nf 1 2 x\n"),
-              m + ":7: face corners are not vertex numbers: \"f 1 2 x\"");
+    const std::string badVertex = ": vertex coordinates are not three finite numbers: ";
+    EXPECT_EQ(objError(dir, "v 0 0 0\nv nan 0 0\n"), m + ":2" + badVertex + "\"v nan 0 0\"");
+    EXPECT_EQ(objError(dir, "# big\nv 1e39 0 0\n"), m + ":2" + badVertex + "\"v 1e39 0 0\"");  // beyond float
+    for (const char* v : {"v 1e 0 0", "v 1e99999999999 0 0", "v 1.5.5 0 0", "v 1 0", "v 1 2 3x", "v 0x1 0 0"})
+        EXPECT_EQ(objError(dir, std::string(v) + "\n"), m + ":1" + badVertex + "\"" + v + "\"");
+    const std::string badFace = ": face corners are not v, v/t, v//n or v/t/n with vertex numbers of at most 9 digits: ";
+    for (const char* f : {"f 1 2 x", "f 1-5 2 3", "f 4294967297 2 3", "f 1 2 3 # a comment", "f 1/2/ 2 3"})
+        EXPECT_EQ(objError(dir, std::string(kSquare) + "\n\n" + f + "\n"), m + ":7" + badFace + "\"" + f + "\"");
     EXPECT_EQ(objError(dir, std::string(kSquare) + "f 0 1 2\n"),
               m + ":5: face refers to vertex 0, but OBJ counts vertices from 1 (or from -1 backwards)");
     EXPECT_EQ(objError(dir, std::string(kSquare) + "f 1 2 5\nv 0 0 1\n"),
@@ -172,6 +176,59 @@ TEST(ImportObj, BrokenFilesAreInputErrorsAtTheirLine) {
     camera.camera = "0";
     const std::string path = dir.write("ok.obj", std::string(kSquare) + "f 1 2 3\n");
     EXPECT_THROW(importScene(path, camera), InputError);
+}
+
+// Comments after coordinates, vertex colours, a '+' sign, blanks of every kind.
+TEST(ImportObj, VertexLinesInTheFormsExportersWrite) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write(
+        "m.obj", "v 0 0 0 # origin\nv\t+1.0\t0\t0 1.0\nv 0 1 0 0.5 0.5 0.5\r\nf 1/1 2//2 3/3/3\n"));
+    ASSERT_EQ(test::modelTriangles(r.scene), 1u);
+    const std::vector<float>& v = r.scene.models[0].triangleVertices;
+    EXPECT_EQ(std::vector<float>(v.begin(), v.end()), std::vector<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}));
+}
+
+// Old Mac files end lines with a lone CR; errors still name the right line.
+TEST(ImportObj, CarriageReturnLineEndings) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write("m.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r"));
+    EXPECT_EQ(test::modelTriangles(r.scene), 1u);
+    EXPECT_EQ(objError(dir, "v 0 0 0\rv 1 0 0\r\rv x 1 0\r"),
+              dir.path("m.obj") + ":4: vertex coordinates are not three finite numbers: \"v x 1 0\"");
+}
+
+// A repeated corner is no corner: the concave pentagon f 1 2 2 3 4 is the quad 1 2 3 4,
+// ear-clipped inside, and the repeat's triangle counts as a dropped degenerate one.
+TEST(ImportObj, RepeatedCornersAreDropped) {
+    TempDir dir;
+    ImportResult r = importScene(dir.write("m.obj", "v 0 0 0\nv 2 1 0\nv 0 2 0\nv 1 1 0\nf 1 2 2 3 4\n"));
+    EXPECT_EQ(r.report.droppedDegenerate, 1u);
+    r.scene.flatten();
+    ASSERT_EQ(r.scene.primitives.triangleCount(), 2u);
+    double area = 0;
+    for (std::size_t i = 0; i < 2; ++i) area += triangleArea(r.scene.primitives.triangle(i));
+    EXPECT_NEAR(area, 1, 1e-6);  // the arrowhead's area, not more
+}
+
+TEST(ImportObj, GroupNamesStayApart) {
+    TempDir dir;
+    const ImportResult r =
+        importScene(dir.write("m.obj", std::string(kSquare) + "g a b\nf 1 2 3\ng a_b\nf 1 3 4\n"));
+    EXPECT_EQ(r.scene.models.size(), 2u);
+}
+
+// A line of exactly 1 MiB is allowed; one byte more is not, and is never read cut short.
+TEST(ImportObj, LineLengthLimit) {
+    TempDir dir;
+    const std::size_t mib = std::size_t(1) << 20;
+    std::string exact = "v 0 0 0 #";
+    exact += std::string(mib - exact.size(), 'x');
+    const std::string tail = "\r\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_EQ(objError(dir, exact + tail), "");
+    EXPECT_EQ(objError(dir, exact + "x" + tail), dir.path("m.obj") + ":1: line longer than 1 MiB");
+    std::string longFace = std::string(kSquare) + "f ";
+    while (longFace.size() < 2 * mib) longFace += "-1 ";
+    EXPECT_EQ(objError(dir, longFace + "\n"), dir.path("m.obj") + ":5: line longer than 1 MiB");
 }
 
 TEST(ImportObj, LineNumbersHoldAcrossBufferRefills) {
@@ -199,18 +256,22 @@ TEST(ImportObj, LineTrackingFileShowsTheLineReadLast) {
 TEST(ImportObj, MissingMaterialsFallBackToADefaultWithANote) {
     TempDir dir;
     dir.write("empty.mtl", "# no materials\n");
-    const ImportResult r = importScene(
-        dir.write("m.obj", std::string("mtllib absent.mtl empty.mtl\n") + kSquare + "usemtl red\nf 1 2 3\nusemtl red\nf 1 3 4\n"));
+    const ImportResult r = importScene(dir.write(
+        "m.obj", std::string("mtllib absent.mtl empty.mtl\nmtllib /dev/zero\n") + kSquare +
+                     "usemtl red\nf 1 2 3\nusemtl red\nf 1 3 4\nusemtl \nf 2 3 4\n"));
     ASSERT_EQ(r.scene.materials.size(), 1u);
     EXPECT_EQ(r.scene.materials[0].name, "default");
+    EXPECT_FLOAT_EQ(r.scene.materials[0].color.g, 1) << "rt's white default, not an unnamed black one";
     const auto& notes = r.report.notes;
     EXPECT_EQ(std::count_if(notes.begin(), notes.end(),
                             [](const std::string& n) { return n.find("\"red\" is not defined") != std::string::npos; }),
               1)
         << "each missing material is named once";
-    EXPECT_NE(std::find_if(notes.begin(), notes.end(),
-                           [](const std::string& n) { return n.find("absent.mtl") != std::string::npos; }),
-              notes.end());
+    for (const char* file : {"absent.mtl", "empty.mtl", "/dev/zero"})
+        EXPECT_NE(std::find_if(notes.begin(), notes.end(),
+                               [&](const std::string& n) { return n.find(file) != std::string::npos; }),
+                  notes.end())
+            << file;
 }
 
 // A triangle with a repeated vertex is dropped and counted; the rest converts.
