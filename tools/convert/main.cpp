@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "import/import.h"
+#include "scene/thesis_scenes.h"
 #include "scene/xml_writer.h"
 #include "summary.h"
 #include "tool.h"
@@ -16,6 +17,7 @@ namespace {
 
 struct Options {
     std::string input;
+    std::string generate;
     std::string output;
     bool json = false;
     rt::ImportOptions import;
@@ -37,13 +39,27 @@ void writeScene(const rt::Scene& scene, const std::string& output) {
     }
 }
 
+// --generate: a test scene of the thesis (scenes/thesis/README.md) in place of a model file.
+rt::ImportResult generateThesisScene(const std::string& name) {
+    rt::ImportResult result{rt::thesisScene(name), {}};
+    rt::ImportReport& r = result.report;
+    r.format = "thesis Table 4.1 scene";
+    r.meshes = result.scene.models.size();
+    r.camerasInFile = 1;
+    r.cameraUsed = name;
+    r.lightsInFile = result.scene.lights.size();
+    return result;
+}
+
 int convert(Options& o) {
+    if (o.input.empty() == o.generate.empty()) throw rt::InputError("give either a model file or --generate NAME");
     if (o.json && o.output == "-")
         throw rt::InputError("--json prints on standard output, where -o - writes the scene");
     o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
-    const rt::ImportResult result = rt::importScene(o.input, o.import);
+    const rt::ImportResult result =
+        o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
     if (!o.output.empty()) writeScene(result.scene, o.output);
-    const rt::convert::Summary summary{o.input, o.output, &result};
+    const rt::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
     rt::convert::printSummary(std::cerr, summary);
     if (o.json) rt::convert::printSummaryJson(std::cout, summary);
     return rt::tool::kExitOk;
@@ -57,7 +73,9 @@ int main(int argc, char** argv) {
         "Without -o nothing is written: the file is checked and summarised."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-convert"));
     Options o;
-    app.add_option("input", o.input, "Model file: .gltf, .glb, .obj, .3ds, .ply, .stl, .fbx, .dae, ...")->required();
+    app.add_option("input", o.input, "Model file: .gltf, .glb, .obj, .3ds, .ply, .stl, .fbx, .dae, ...");
+    app.add_option("--generate", o.generate,
+                   "Instead of a model file, a test scene of the thesis: balls, balls2, ships, tree or pyramid5");
     app.add_option("-o,--output", o.output,
                    "Scene file to write (RAW models go in a folder named after it), or - for standard output "
                    "with the geometry inline");
