@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <utility>
 
 #include "core/error.h"
 
@@ -348,16 +349,33 @@ Scene thesisPyramid5() {
     return finished(std::move(scene));
 }
 
+namespace {
+
+struct NamedScene {
+    std::string_view name;
+    Scene (*make)();
+};
+// In the order of thesis Table 4.1.
+constexpr std::array<NamedScene, 5> kThesisScenes{{{"balls", thesisBalls},
+                                                   {"balls2", thesisBalls2},
+                                                   {"ships", thesisShips},
+                                                   {"tree", thesisTree},
+                                                   {"pyramid5", thesisPyramid5}}};
+
+}  // namespace
+
 const std::vector<std::string_view>& thesisSceneNames() {
-    static const std::vector<std::string_view> names{"balls", "balls2", "ships", "tree", "pyramid5"};
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> list;
+        for (const NamedScene& scene : kThesisScenes) list.push_back(scene.name);
+        return list;
+    }();
     return names;
 }
 
 Scene thesisScene(std::string_view name) {
-    static const std::array<Scene (*)(), 5> make{thesisBalls, thesisBalls2, thesisShips, thesisTree, thesisPyramid5};
-    const auto& names = thesisSceneNames();
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return make[i]();
+    for (const NamedScene& scene : kThesisScenes)
+        if (scene.name == name) return scene.make();
     throw InputError("unknown thesis scene '" + std::string(name) +
                      "' (there are balls, balls2, ships, tree and pyramid5)");
 }
