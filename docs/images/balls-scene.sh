@@ -4,8 +4,8 @@
 # the heat maps in the README (docs/rt-inspect.md):
 #   docs/images/balls-scene.sh >balls.xml
 #   rt-inspect --tree all --heatmap docs/images/heatmap.png balls.xml   # heatmap-bsp.png, heatmap-kd.png
-# The same as `rt-convert --generate balls -o -`, with rt-convert taken from $RT_CONVERT, the
-# PATH or this checkout's release build.
+# The same as `rt-convert --generate balls -o -` (its summary goes to standard error), with
+# rt-convert taken from $RT_CONVERT, the PATH or this checkout's release build.
 set -euo pipefail
 convert=${RT_CONVERT:-$(command -v rt-convert || echo "$(dirname "$0")/../../build/release/tools/convert/rt-convert")}
-exec "$convert" --generate balls -o - 2>/dev/null
+exec "$convert" --generate balls -o -

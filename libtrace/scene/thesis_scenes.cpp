@@ -376,8 +376,9 @@ const std::vector<std::string_view>& thesisSceneNames() {
 Scene thesisScene(std::string_view name) {
     for (const NamedScene& scene : kThesisScenes)
         if (scene.name == name) return scene.make();
-    throw InputError("unknown thesis scene '" + std::string(name) +
-                     "' (there are balls, balls2, ships, tree and pyramid5)");
+    std::string known;
+    for (const NamedScene& scene : kThesisScenes) known += (known.empty() ? "" : ", ") + std::string(scene.name);
+    throw InputError("unknown thesis scene '" + std::string(name) + "' (there are " + known + ")");
 }
 
 }  // namespace rt
