@@ -69,7 +69,11 @@ void writeOiioAtomically(const std::string& path, ImageFormat format, const OIIO
                          const std::vector<float>& rgb) {
     if (path != "-") {
         commitFileAtomically(path, [&](const std::string& temp) {
-            writeOiio(temp, format, spec, rgb, nullptr);
+            try {
+                writeOiio(temp, format, spec, rgb, nullptr);
+            } catch (const std::runtime_error& e) {  // OIIO names the temporary; the user gave `path`
+                throw std::runtime_error(path + ": cannot write: " + e.what());
+            }
             return true;
         });
         return;

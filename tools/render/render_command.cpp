@@ -46,7 +46,7 @@ ImageOutputSettings outputSettings(const RenderOptions& o) {
 // Two outputs on standard output would be concatenated into one unusable stream.
 void checkOneStandardOutput(const RenderOptions& o, const ImageOutputSettings& output) {
     std::vector<std::string> users;
-    if (output.format != ImageFormat::Null && output.path == "-") users.push_back("the image (-f -)");
+    if (output.format != ImageFormat::Null && output.path == "-") users.push_back("the image");
     if (o.statsLine) users.push_back("-b");
     if (o.statsJson == "-") users.push_back("--stats-json -");
     if (users.size() > 1)
