@@ -1,16 +1,14 @@
 // Rays per second for an 800x600 render of the bundled demo scene (scenes/demo.xml) with
 // shadows and reflection depth 3, the thesis's measuring setup (4.3), on 1 and 2 threads.
-// The scene is found from the executable (or given by $RT_BENCH_SCENE); the accelerator is
+// The scene is the source tree's (or given by $RT_BENCH_SCENE); the accelerator is
 // the KD tree unless $RT_BENCH_ACCEL says naive or bsp. Wall-clock time.
 //   build/release/bench/bench_render --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
-#include <stdexcept>
 
 #include "accel/build.h"
 #include "render/renderer.h"
-#include "render/resource_path.h"
 #include "scene/xml_loader.h"
 
 namespace {
@@ -23,8 +21,7 @@ struct Prepared {
 const Prepared& demo() {
     static const Prepared prepared = [] {
         const char* env = std::getenv("RT_BENCH_SCENE");
-        const std::string path = env ? env : rt::findShippedFile("scenes/demo.xml", "scenes/demo.xml");
-        if (path.empty()) throw std::runtime_error("scenes/demo.xml not found; set RT_BENCH_SCENE");
+        const std::string path = env ? env : RT_SOURCE_DIR "/scenes/demo.xml";
         Prepared p{rt::loadSceneXml(path), nullptr};
         const char* accel = std::getenv("RT_BENCH_ACCEL");
         rt::AccelSettings settings;

@@ -2,6 +2,12 @@
 // file beside the target, which is renamed over it only once everything is written.
 // A failed or interrupted write leaves an existing file untouched and no partial file.
 // The path "-" means standard output (written directly: a pipe cannot be atomic).
+//
+// Temporaries are named "folder/.name.rt-tmp-PID-N.ext". A process killed by SIGKILL while
+// writing leaves its temporary behind (nothing can remove it then); every later write of the
+// same target first removes those whose process PID no longer runs on this machine.
+// Test hook: $RT_TEST_WRITE_DELAY_MS holds each finished temporary that many milliseconds
+// before the rename, so tests/cli/render_atomic.sh can kill a process in the middle of a write.
 #pragma once
 
 #include <functional>
@@ -9,6 +15,14 @@
 #include <string>
 
 namespace rt {
+
+// Throws rt::InputError "PATH: is a directory" if `path` names a folder (or ends in '/').
+void checkNotDirectory(const std::string& path);
+
+// Checks, before any work, that `path` can be written: creates its missing parent folders
+// and creates and removes a temporary file there. Throws rt::InputError naming `path` if it is
+// a directory or its folder cannot be created or written. "-" (standard output) always passes.
+void prepareOutputFile(const std::string& path);
 
 // Calls write(stream) and commits the result to `path`. Throws std::runtime_error
 // (naming the file) if the file cannot be written; the temporary is removed.

@@ -5,27 +5,32 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "builtin_color_config.h"
 #include "core/error.h"
-#include "render/resource_path.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
 namespace rt {
 
-std::string shippedColorConfigPath() { return findShippedFile("ocio/config.ocio", "config/ocio/config.ocio"); }
-
 namespace {
 
-OCIO::ConstConfigRcPtr loadConfig(std::string& path) {
-    if (path.empty()) {
-        const char* env = std::getenv("OCIO");
-        if (env && *env) return OCIO::Config::CreateFromEnv();
-        path = shippedColorConfigPath();
-        if (path.empty())
-            throw InputError("no colour configuration: set $OCIO or --color-config (rt's own config/ocio/config.ocio "
-                             "was not found near the executable)");
-    }
-    return OCIO::Config::CreateFromFile(path.c_str());
+// Which config a pipeline uses: --color-config, else $OCIO, else the built-in one.
+struct ConfigSource {
+    std::string file;  // "" for the built-in config
+    std::string name;  // as errors and the EXR header name it
+};
+
+ConfigSource configSource(const std::string& configPath) {
+    if (!configPath.empty()) return {configPath, configPath};
+    const char* env = std::getenv("OCIO");
+    if (env && *env) return {env, std::string(env) + " (from $OCIO)"};
+    return {"", kBuiltinColorConfigName};
+}
+
+OCIO::ConstConfigRcPtr loadConfig(const ConfigSource& source) {
+    if (!source.file.empty()) return OCIO::Config::CreateFromFile(source.file.c_str());
+    std::istringstream text(kBuiltinColorConfig);
+    return OCIO::Config::CreateFromStream(text);
 }
 
 bool hasView(const OCIO::Config& config, const std::string& display, const std::string& view) {
@@ -56,10 +61,12 @@ struct ColorPipeline::Impl {
     OCIO::ConstCPUProcessorRcPtr cpu;
 };
 
-ColorPipeline::ColorPipeline(const ColorSettings& s) : impl_(std::make_unique<Impl>()), configPath_(s.configPath) {
-    const std::string where = "colour configuration " + (configPath_.empty() ? std::string("$OCIO") : configPath_);
+ColorPipeline::ColorPipeline(const ColorSettings& s) : impl_(std::make_unique<Impl>()) {
+    const ConfigSource source = configSource(s.configPath);
+    configName_ = source.name;
+    const std::string where = source.file.empty() ? configName_ : "colour configuration " + configName_;
     try {
-        const OCIO::ConstConfigRcPtr config = loadConfig(configPath_);
+        const OCIO::ConstConfigRcPtr config = loadConfig(source);
         const std::string wanted = s.colorspace.empty() ? std::string(OCIO::ROLE_SCENE_LINEAR) : s.colorspace;
         const OCIO::ConstColorSpaceRcPtr space = config->getColorSpace(wanted.c_str());
         if (!space) throw InputError(where + " has no colour space '" + wanted + "'");

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
+#include "core/error.h"
 #include "image/ascii_art.h"
 
 namespace rt {
@@ -19,12 +20,19 @@ struct FormatName {
     ImageFormat format;
     const char* name;
     const char* extension;
+    const char* oiioName;  // OpenImageIO's writer, chosen by name so that any file name works
 };
-constexpr FormatName kFormats[] = {{ImageFormat::Null, "null", ""},
-                                   {ImageFormat::Png, "png", ".png"},
-                                   {ImageFormat::Exr, "exr", ".exr"},
-                                   {ImageFormat::Tga, "tga", ".tga"},
-                                   {ImageFormat::Text, "text", ".txt"}};
+constexpr FormatName kFormats[] = {{ImageFormat::Null, "null", "", ""},
+                                   {ImageFormat::Png, "png", ".png", "png"},
+                                   {ImageFormat::Exr, "exr", ".exr", "openexr"},
+                                   {ImageFormat::Tga, "tga", ".tga", "targa"},
+                                   {ImageFormat::Text, "text", ".txt", ""}};
+
+const FormatName& formatName(ImageFormat format) {
+    for (const FormatName& f : kFormats)
+        if (f.format == format) return f;
+    throw std::invalid_argument("unknown image format");
+}
 
 // The framebuffer's window as packed RGB floats, the layout OIIO and OCIO take.
 std::vector<float> packedRgb(const Framebuffer& image) {
@@ -46,9 +54,9 @@ OIIO::ImageSpec specFor(const Framebuffer& image, OIIO::TypeDesc type) {
     return spec;
 }
 
-void writeOiio(const std::string& file, const OIIO::ImageSpec& spec, const std::vector<float>& rgb,
-               OIIO::Filesystem::IOProxy* proxy) {
-    auto out = OIIO::ImageOutput::create(file);
+void writeOiio(const std::string& file, ImageFormat format, const OIIO::ImageSpec& spec,
+               const std::vector<float>& rgb, OIIO::Filesystem::IOProxy* proxy) {
+    auto out = OIIO::ImageOutput::create(formatName(format).oiioName);
     if (!out) throw std::runtime_error(file + ": " + OIIO::geterror());
     if (proxy && !(out->supports("ioproxy") && out->set_ioproxy(proxy)))
         throw std::runtime_error(std::string(out->format_name()) + " files cannot be written to standard output");
@@ -57,17 +65,21 @@ void writeOiio(const std::string& file, const OIIO::ImageSpec& spec, const std::
 }
 
 // Atomically to a file, or through memory to standard output for "-".
-void writeOiioAtomically(const std::string& path, const char* extension, const OIIO::ImageSpec& spec,
+void writeOiioAtomically(const std::string& path, ImageFormat format, const OIIO::ImageSpec& spec,
                          const std::vector<float>& rgb) {
     if (path != "-") {
         commitFileAtomically(path, [&](const std::string& temp) {
-            writeOiio(temp, spec, rgb, nullptr);
+            try {
+                writeOiio(temp, format, spec, rgb, nullptr);
+            } catch (const std::runtime_error& e) {  // OIIO names the temporary; the user gave `path`
+                throw std::runtime_error(path + ": cannot write: " + e.what());
+            }
             return true;
         });
         return;
     }
     OIIO::Filesystem::IOVecOutput memory;
-    writeOiio(std::string("stdout") + extension, spec, rgb, &memory);
+    writeOiio("standard output", format, spec, rgb, &memory);
     writeFileAtomically("-", [&](std::ostream& os) {
         os.write(reinterpret_cast<const char*>(memory.buffer().data()), std::streamsize(memory.buffer().size()));
     });
@@ -80,11 +92,11 @@ void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const Imag
     spec.attribute("Software", meta.software);
     spec.attribute("oiio:ColorSpace", color.colorspace());
     spec.attribute("rt:colorSpace", color.colorspace());
-    spec.attribute("rt:colorConfig", color.configPath().empty() ? std::string("$OCIO") : color.configPath());
+    spec.attribute("rt:colorConfig", color.configName());
     spec.attribute("rt:scene", meta.sceneFile);
     spec.attribute("rt:samplesPerPixel", meta.samplesPerPixel);
     spec.attribute("rt:renderSeconds", float(meta.renderSeconds));
-    writeOiioAtomically(s.path, ".exr", spec, packedRgb(image));
+    writeOiioAtomically(s.path, ImageFormat::Exr, spec, packedRgb(image));
 }
 
 void writeDisplayImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
@@ -95,7 +107,7 @@ void writeDisplayImage(const Framebuffer& image, const ImageOutputSettings& s, c
     const bool png = s.format == ImageFormat::Png;
     OIIO::ImageSpec spec = specFor(image, png && s.pngBits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
     spec.attribute("Software", meta.software);
-    writeOiioAtomically(s.path, png ? ".png" : ".tga", spec, rgb);
+    writeOiioAtomically(s.path, s.format, spec, rgb);
 }
 
 void writeText(const Framebuffer& image, const ImageOutputSettings& s) {
@@ -122,10 +134,22 @@ std::optional<ImageFormat> imageFormatFromPath(const std::string& path) {
     return std::nullopt;
 }
 
-const char* imageFormatName(ImageFormat format) {
-    for (const FormatName& f : kFormats)
-        if (f.format == format) return f.name;
-    return "?";
+const char* imageFormatName(ImageFormat format) { return formatName(format).name; }
+
+ImageFormat chooseImageFormat(const std::optional<std::string>& type, const std::optional<std::string>& path) {
+    const std::optional<ImageFormat> named = type ? parseImageFormat(*type) : std::nullopt;
+    if (type && !named) throw InputError("-o " + *type + ": unknown output type (null png exr tga text)");
+    if (!path) return named.value_or(ImageFormat::Null);
+    const std::optional<ImageFormat> byExtension = imageFormatFromPath(*path);
+    if (!named && *path == "-") throw InputError("-f -: give -o to say what to write to standard output");
+    if (!named && !byExtension)
+        throw InputError("-f " + *path + ": no writer for this extension (.png .exr .tga .txt); give -o");
+    if (named && byExtension && named != byExtension)
+        throw InputError("-o " + *type + " and -f " + *path + " disagree: the extension says " +
+                         imageFormatName(*byExtension));
+    if (named == ImageFormat::Null)
+        throw InputError("-o null writes no file, but -f " + *path + " names one: give one of them");
+    return named.value_or(*byExtension);
 }
 
 void writeImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {

@@ -19,6 +19,12 @@ std::optional<ImageFormat> parseImageFormat(const std::string& name);  // null p
 std::optional<ImageFormat> imageFormatFromPath(const std::string& path);
 const char* imageFormatName(ImageFormat format);
 
+// rt-render's rule for -o `type` and -f `path`: the extension picks the format unless `type`
+// names one; neither gives null. Throws rt::InputError if the two contradict each other
+// (-o png -f a.exr, -o null -f a.png), or if `path` has no extension a writer handles and no
+// type is given. With a type, a path without a known extension is written in that type.
+ImageFormat chooseImageFormat(const std::optional<std::string>& type, const std::optional<std::string>& path);
+
 struct ImageOutputSettings {
     ImageFormat format = ImageFormat::Null;
     std::string path;     // "-" is standard output

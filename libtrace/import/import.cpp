@@ -50,6 +50,7 @@ Transform rootTransform(const ImportOptions& options) {
 ImportResult importScene(const std::string& path, const ImportOptions& options) {
     checkOptions(options);
     std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory");
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
     const Transform root = rootTransform(options);
     ImportResult result = isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, root)

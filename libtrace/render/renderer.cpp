@@ -28,7 +28,7 @@ std::vector<PixelWindow> blocksOf(const PixelWindow& w) {
 }  // namespace
 
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
-                   const BlockProgress& progress) {
+                   const RenderProgress& progress) {
     validate(settings);
     const Tracer tracer(scene, accel, settings);
     Framebuffer image(settings.width, settings.height, settings.window());
@@ -36,7 +36,11 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
     const int total = int(blocks.size());
     const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
     std::vector<ThreadCounters> perThread(static_cast<std::size_t>(threads));
-    int done = 0;
+    const auto samplesIn = [&settings](const PixelWindow& w) {
+        return std::uint64_t(w.width()) * std::uint64_t(w.height()) * std::uint64_t(settings.pixelSamples);
+    };
+    const std::uint64_t samplesTotal = samplesIn(settings.window());
+    std::uint64_t samplesDone = 0;
 
     const auto start = std::chrono::steady_clock::now();
 #pragma omp parallel for num_threads(threads) schedule(dynamic)
@@ -47,7 +51,7 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
             for (int x = b.x0; x < b.x1; ++x) image.at(x, y) = tracer.pixel(x, y, counters);
         if (progress) {
 #pragma omp critical(rt_render_progress)
-            progress(++done, total);
+            progress(samplesDone += samplesIn(b), samplesTotal);
         }
     }
     stats.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

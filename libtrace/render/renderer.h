@@ -3,6 +3,7 @@
 // the same data, and dynamic scheduling gives a free thread the next unfinished block.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 #include "accel/accelerator.h"
@@ -15,14 +16,15 @@ namespace rt {
 
 constexpr int kBlockSize = 32;  // the thesis found 32x32 best; larger blocks gained nothing
 
-// Called after each finished block with the blocks done so far and the total (the
-// thesis's ProgressUpdater). Calls never overlap, so the callback need not be thread-safe.
-using BlockProgress = std::function<void(int done, int total)>;
+// Called after each finished block with the camera samples traced so far and the total (the
+// thesis's ProgressUpdater, counting work rather than blocks: edge blocks are smaller).
+// Calls never overlap, so the callback need not be thread-safe.
+using RenderProgress = std::function<void(std::uint64_t samplesDone, std::uint64_t samplesTotal)>;
 
 // Renders settings.window() of the scene. Fills the render part of `stats` (render time,
 // rays, tests, objects, lights, threads); preprocessing time and tree nodes are the caller's.
 // Throws rt::InputError for bad settings or a degenerate camera.
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
-                   const BlockProgress& progress = {});
+                   const RenderProgress& progress = {});
 
 }  // namespace rt

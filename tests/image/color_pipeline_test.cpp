@@ -102,7 +102,31 @@ TEST(ColorPipeline, HonoursOcioEnvironmentVariable) {
     std::filesystem::remove_all(dir);
 }
 
-TEST(ColorPipeline, FindsTheShippedConfigFromTheExecutable) {
-    // The test binary lives in the build tree under the source tree.
-    EXPECT_TRUE(std::filesystem::equivalent(shippedColorConfigPath(), RT_SOURCE_DIR "/config/ocio/config.ocio"));
+TEST(ColorPipeline, UsesTheBuiltInConfigWithoutOcio) {
+    // The built-in config needs no file: the tools work wherever they are built or copied.
+    const char* old = std::getenv("OCIO");
+    const std::string saved = old ? old : "";
+    unsetenv("OCIO");
+    const ColorPipeline pipeline{ColorSettings{}};
+    EXPECT_EQ(pipeline.configName(), kBuiltinColorConfigName);
+    EXPECT_EQ(pipeline.colorspace(), "lin_rec709");
+    EXPECT_EQ(pipeline.display(), "sRGB");
+    for (const float linear : {0.0f, 0.0031308f, 0.18f, 0.5f, 1.0f, 4.0f})  // the same as the shipped file
+        EXPECT_FLOAT_EQ(displayed(ColorSettings{}, linear), displayed(shipped(), linear)) << linear;
+    ColorSettings s;
+    s.view = "Filmic";
+    try {
+        ColorPipeline{s};
+        ADD_FAILURE() << "an unknown view was accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).find("$OCIO"), std::string::npos) << e.what();  // $OCIO is not in use
+        EXPECT_NE(std::string(e.what()).find("built-in"), std::string::npos) << e.what();
+    }
+    if (old) setenv("OCIO", saved.c_str(), 1);
+}
+
+TEST(ColorPipeline, NamesTheConfigInUse) {
+    EXPECT_EQ(ColorPipeline(shipped()).configName(), shipped().configPath);
+    const ScopedOcioEnv env(shipped().configPath);
+    EXPECT_NE(ColorPipeline{ColorSettings{}}.configName().find(shipped().configPath), std::string::npos);
 }

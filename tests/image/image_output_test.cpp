@@ -67,6 +67,31 @@ TEST_F(ImageOutputTest, FormatsByNameAndExtension) {
     EXPECT_STREQ(imageFormatName(ImageFormat::Null), "null");
 }
 
+TEST_F(ImageOutputTest, ExtensionPicksTheFormatUnlessOutputTypeNamesOne) {
+    using Name = std::optional<std::string>;
+    EXPECT_EQ(chooseImageFormat(Name(), Name()), ImageFormat::Null);
+    EXPECT_EQ(chooseImageFormat(Name(), Name("a.EXR")), ImageFormat::Exr);
+    EXPECT_EQ(chooseImageFormat(Name("png"), Name()), ImageFormat::Png);
+    EXPECT_EQ(chooseImageFormat(Name("png"), Name("a.png")), ImageFormat::Png);
+    EXPECT_EQ(chooseImageFormat(Name("exr"), Name("-")), ImageFormat::Exr);
+    EXPECT_EQ(chooseImageFormat(Name("png"), Name("picture")), ImageFormat::Png);  // no extension: -o says
+    // Contradictions and files no writer handles are usage errors.
+    EXPECT_THROW(chooseImageFormat(Name("png"), Name("m.exr")), InputError);
+    EXPECT_THROW(chooseImageFormat(Name("exr"), Name("m.png")), InputError);
+    EXPECT_THROW(chooseImageFormat(Name("null"), Name("m.png")), InputError);
+    EXPECT_THROW(chooseImageFormat(Name(), Name("m.jpg")), InputError);
+    EXPECT_THROW(chooseImageFormat(Name(), Name("-")), InputError);
+    EXPECT_THROW(chooseImageFormat(Name("jpeg"), Name()), InputError);
+}
+
+TEST_F(ImageOutputTest, OutputTypeWritesFilesWithoutTheExtension) {
+    const std::string path = file("picture");
+    writeImage(ramp(), settings(ImageFormat::Exr, path), metadata());
+    OIIO::ImageSpec spec;
+    readPixels(path, spec);
+    EXPECT_EQ(spec.format, OIIO::TypeDesc::HALF);
+}
+
 TEST_F(ImageOutputTest, ExrKeepsLinearValuesAndMetadata) {
     for (const bool half : {true, false}) {
         ImageOutputSettings s = settings(ImageFormat::Exr, file("a.exr"));
@@ -79,6 +104,7 @@ TEST_F(ImageOutputTest, ExrKeepsLinearValuesAndMetadata) {
         EXPECT_EQ(spec.get_string_attribute("Software"), "rt-render test");
         EXPECT_EQ(spec.get_string_attribute("rt:scene"), "scenes/test.xml");
         EXPECT_EQ(spec.get_string_attribute("rt:colorSpace"), "lin_rec709");
+        EXPECT_EQ(spec.get_string_attribute("rt:colorConfig"), s.color.configPath);  // the config used
         EXPECT_EQ(spec.get_int_attribute("rt:samplesPerPixel"), 16);
         EXPECT_FLOAT_EQ(spec.get_float_attribute("rt:renderSeconds"), 1.5f);
     }

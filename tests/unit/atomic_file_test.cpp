@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/error.h"
 #include "test_util.h"
 
 using namespace rt;
@@ -105,4 +106,32 @@ TEST_F(AtomicFile, AFileWhereTheFolderGoesIsAnError) {
     EXPECT_THROW(commitFolderAtomically(path, [](const std::string&) { return true; }), std::runtime_error);
     EXPECT_EQ(slurp(path), "mine");
     EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFile, PrepareCreatesMissingFoldersAndRejectsWhatCannotBeWritten) {
+    prepareOutputFile((dir / "new" / "deeper" / "a.png").string());
+    EXPECT_TRUE(fs::is_directory(dir / "new" / "deeper"));
+    EXPECT_TRUE(fs::is_empty(dir / "new" / "deeper")) << "the probe file was not removed";
+    EXPECT_THROW(prepareOutputFile(dir.string()), InputError);  // a folder
+    std::ofstream(dir / "plain") << "x";
+    EXPECT_THROW(prepareOutputFile((dir / "plain" / "a.png").string()), InputError);  // a file where a folder goes
+    prepareOutputFile("-");
+}
+
+TEST_F(AtomicFile, StaleTemporariesOfDeadProcessesAreRemoved) {
+    // PID 2^22 + 1 is above Linux's largest PID, so no process runs under it.
+    const fs::path dead = dir / ".a.rt-tmp-4194305-0.png";
+    const fs::path alive = dir / (".a.rt-tmp-" + std::to_string(::getpid()) + "-7.png");
+    const fs::path other = dir / ".b.rt-tmp-4194305-0.png", deadFolder = dir / ".models.rt-tmp-4194305-0";
+    for (const fs::path& p : {dead, alive, other}) std::ofstream(p) << "x";
+    fs::create_directories(deadFolder / "inside");
+    commitFileAtomically((dir / "a.png").string(), [](const std::string& temp) {
+        std::ofstream(temp) << "new";
+        return true;
+    });
+    EXPECT_FALSE(fs::exists(dead));
+    EXPECT_TRUE(fs::exists(alive)) << "a running process's temporary";
+    EXPECT_TRUE(fs::exists(other)) << "another target's temporary";
+    commitFolderAtomically((dir / "models").string(), [](const std::string&) { return true; });
+    EXPECT_FALSE(fs::exists(deadFolder));
 }

@@ -70,17 +70,22 @@ TEST(RenderDeterminism, ProgressReportsEveryBlockOnce) {
     settings.width = 70;
     settings.height = 40;
     settings.threads = 2;
-    int calls = 0, last = 0, reportedTotal = 0;
+    settings.pixelSamples = 2;
+    int calls = 0;
+    std::uint64_t last = 0, reportedTotal = 0;
     RenderStats stats;
-    render(s, accel, settings, stats, [&](int done, int total) {
+    render(s, accel, settings, stats, [&](std::uint64_t done, std::uint64_t total) {
         ++calls;
-        EXPECT_EQ(done, last + 1);
+        // Each block adds its own samples: full 32x32 blocks or the smaller edge blocks (6x32, 32x8, 6x8).
+        const std::uint64_t added = done - last;
+        EXPECT_TRUE(added == 32 * 32 * 2 || added == 6 * 32 * 2 || added == 32 * 8 * 2 || added == 6 * 8 * 2) << added;
         last = done;
         reportedTotal = total;
     });
-    EXPECT_EQ(reportedTotal, 3 * 2);  // ceil(70/32) x ceil(40/32) blocks
-    EXPECT_EQ(calls, reportedTotal);
-    EXPECT_EQ(stats.counters.camera.rays, 70u * 40u);
+    EXPECT_EQ(calls, 3 * 2);  // ceil(70/32) x ceil(40/32) blocks
+    EXPECT_EQ(reportedTotal, 70u * 40u * 2u);  // samples, not blocks: the ETA follows work done
+    EXPECT_EQ(last, reportedTotal);
+    EXPECT_EQ(stats.counters.camera.rays, 70u * 40u * 2u);
     EXPECT_EQ(stats.objects, s.primitives.size());
     EXPECT_EQ(stats.lights, 2u);
 }

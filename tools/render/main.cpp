@@ -13,7 +13,8 @@ using rt::render_tool::RenderOptions;
 
 void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName) {
     const char* group = "Rendering options";
-    app.add_option("-o,--output", o.outputType, "Output type: null png exr tga text (default: from -f, else null)")
+    app.add_option("-o,--output", o.outputType,
+                   "Output type: null png exr tga text (default: -f's extension; neither -o nor -f: null)")
         ->check(CLI::IsMember({"null", "png", "exr", "tga", "text"}))->group(group);
     app.add_option("-f,--file", o.outputPath, "Output file; - for standard output")->group(group);
     auto* bsp = app.add_flag_callback("-B,--bsp", [&] { accelName = "bsp"; }, "Use the BSP tree")->group(group);
@@ -46,7 +47,11 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
 
 void addOtherOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Other options";
-    app.add_flag("-q,--quiet", o.quiet, "Quiet: no progress bar or summary on standard error")->group(group);
+    app.add_flag("-q,--quiet", o.quiet, "Quiet: no progress or summary on standard error")->group(group);
+    app.add_option("--progress", o.progress,
+                   "Progress on standard error: bar, lines (for logs: every 10 % or 10 s), none, or auto "
+                   "(the bar on a terminal, else lines)")
+        ->check(CLI::IsMember({"auto", "bar", "lines", "none"}))->capture_default_str()->group(group);
     app.add_flag("-b,--batch-stats", o.statsLine,
                  "Print 'preprocessing render objects lights nodes tests-per-ray' on standard output")->group(group);
     app.add_flag("-p,--preprocess-only", o.preprocessOnly, "Build the tree and render nothing (implies -o null)")

@@ -21,7 +21,8 @@ struct RenderOptions {
     RenderSettings render;
     AccelSettings accel;                  // kind Kd unless -B or --accel says otherwise
     std::optional<std::string> region;    // --region x0,y0,x1,y1 (x1, y1 exclusive)
-    bool quiet = false;                   // -q
+    bool quiet = false;                   // -q (implies --progress none)
+    std::string progress = "auto";        // --progress auto|bar|lines|none
     bool statsLine = false;               // -b
     bool preprocessOnly = false;          // -p
     std::optional<std::string> statsJson;  // --stats-json FILE ("-" is standard output)

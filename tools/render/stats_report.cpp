@@ -70,8 +70,9 @@ std::string statsSummary(const RenderSettings& settings, const AccelStats& accel
     if (!rendered) return text;
     const RenderCounters& c = s.counters;
     const PixelWindow w = settings.window();
-    text += format("rendered %dx%d pixels in %.3f s on %d threads: %llu primary, %llu shadow, %llu reflection rays\n",
-                   w.width(), w.height(), s.renderSeconds, s.threads, static_cast<unsigned long long>(c.camera.rays),
+    text += format("rendered %dx%d pixels in %.3f s on %d thread%s: %llu primary, %llu shadow, %llu reflection rays\n",
+                   w.width(), w.height(), s.renderSeconds, s.threads, s.threads == 1 ? "" : "s",
+                   static_cast<unsigned long long>(c.camera.rays),
                    static_cast<unsigned long long>(c.shadow.rays), static_cast<unsigned long long>(c.reflection.rays));
     text += format("%.2f M rays/s, %.2f intersection tests per ray\n", s.raysPerSecond() / 1e6, s.testsPerRay());
     return text;
