@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -267,6 +269,44 @@ TEST(ImportFormats, OffQuadAndTriangle) {
     EXPECT_EQ(test::modelTriangles(r.scene), 3u);
     EXPECT_NEAR(doubleArea(r.scene), 2 * 1 + 4, 1e-5);
     expectCornersAmong(r.scene, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 2}});
+}
+
+// One definition of a degenerate triangle for every importer (docs/conversion.md): its cross
+// product, computed in double from its corners in float (as RAW stores them), is exactly zero.
+// So collinear corners and repeated corners are dropped; a sliver one float step away from a
+// line, and a tiny triangle, are kept.
+TEST(ImportFormats, DegenerateTrianglesAreTheSameInEveryImporter) {
+    const float step = std::nextafter(2.0f, 3.0f);
+    const std::vector<float> corners{0, 0, 0, 1, 0, 0, 0, 1, 0,         // valid
+                                     0, 0, 0, 1, 1, 1, 2, 2, 2,         // collinear
+                                     0, 0, 0, 0, 0, 0, 0, 1, 0,         // a repeated corner
+                                     0, 0, 0, 1, 1, 1, 2, 2, step,      // a sliver, not collinear in float
+                                     0, 0, 0, 1e-3f, 0, 0, 0, 1e-3f, 0};  // tiny
+    std::ostringstream vertices, obj, ply;
+    vertices.precision(9);
+    for (std::size_t i = 0; i < corners.size(); i += 3)
+        vertices << corners[i] << ' ' << corners[i + 1] << ' ' << corners[i + 2] << '\n';
+    std::istringstream lines(vertices.str());
+    for (std::string line; std::getline(lines, line);) obj << "v " << line << '\n';
+    ply << "ply\nformat ascii 1.0\nelement vertex 15\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face 5\nproperty list uchar int vertex_indices\nend_header\n"
+        << vertices.str();
+    for (int t = 0; t < 5; ++t) {
+        obj << "f " << 3 * t + 1 << ' ' << 3 * t + 2 << ' ' << 3 * t + 3 << '\n';
+        ply << "3 " << 3 * t << ' ' << 3 * t + 1 << ' ' << 3 * t + 2 << '\n';
+    }
+    test::GltfFixture gltf;
+    gltf.positions = corners;
+    gltf.indices.resize(15);
+    for (std::uint16_t i = 0; i < 15; ++i) gltf.indices[i] = i;
+    TempDir dir;
+    for (const std::string& path : {dir.write("d.obj", obj.str()), dir.write("d.ply", ply.str()),
+                                    dir.write("d.gltf", gltf.json())}) {
+        SCOPED_TRACE(path);
+        const ImportResult r = importScene(path);
+        EXPECT_EQ(test::modelTriangles(r.scene), 3u);
+        EXPECT_EQ(r.report.droppedDegenerate, 2u);
+    }
 }
 
 }  // namespace
