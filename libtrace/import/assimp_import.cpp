@@ -2,6 +2,7 @@
 
 #include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -64,8 +65,8 @@ std::string formatName(const Assimp::Importer& importer, const std::string& path
 constexpr const char* k3dsImporter = "Discreet 3DS Importer";
 
 // Assimp's 3DS reader turns the scene from 3D Studio's Z-up to Y-up (a root node transform);
-// the other readers used here leave the file's axes alone (Collada applies the file's own
-// <up_axis>, see docs/conversion.md).
+// the other readers leave the file's axes alone, except Collada's, which applies the file's
+// <up_axis> unless told not to (importAssimp does when --up-axis is given).
 UpAxis importerUpAxis(const std::string& format) { return format == k3dsImporter ? UpAxis::Z : UpAxis::Y; }
 
 class AssimpSceneBuilder {
@@ -285,6 +286,8 @@ private:
 ImportResult importAssimp(const std::string& path, const ImportOptions& options) {
     Assimp::Importer importer;
     removeGltfImporters(importer);
+    // --up-axis describes the file, so it takes the place of a Collada file's own <up_axis>.
+    if (options.upAxis) importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     ImportResult result;
     result.report.format = formatName(importer, path);
     const aiScene* ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);

@@ -232,6 +232,24 @@ TEST(ImportFormats, ColladaMeshPlacedTwiceIsOneModelWithTwoInstances) {
     EXPECT_EQ(r.scene.primitives.triangleCount(), 2u);
 }
 
+// A Collada file says its up axis itself, and Assimp applies it; --up-axis, when given, takes
+// its place: Z_UP and --up-axis z turn the file once (not twice), --up-axis y keeps its axes.
+TEST(ImportFormats, ColladaUpAxisIsTurnedOnce) {
+    TempDir dir;
+    const std::string path = dir.write("z.dae", test::replaceOnce(kColladaTwoPlacements, "Y_UP", "Z_UP"));
+    const auto rightOrigin = [&](std::optional<UpAxis> up) {
+        ImportOptions o;
+        o.upAxis = up;
+        Vec3 furthest(-1e9, 0, 0);
+        for (const Instance& i : importScene(path, o).scene.instances)
+            if (i.transform.point(Vec3()).x > furthest.x) furthest = i.transform.point(Vec3());
+        return furthest;  // the node translated by (4, 2, 1) in the file
+    };
+    expectNear(rightOrigin(std::nullopt), {4, 1, -2});
+    expectNear(rightOrigin(UpAxis::Z), {4, 1, -2});
+    expectNear(rightOrigin(UpAxis::Y), {4, 2, 1});
+}
+
 // An NFF polygon ("p", vertex count, then one vertex per line) after a fill colour
 // ("f" red green blue Kd Ks shine transmittance index of refraction).
 TEST(ImportFormats, NffPolygon) {
