@@ -75,6 +75,9 @@ public:
         : ai_(ai), file_(file), options_(options), out_(out), models_(ai.mNumMeshes), materials_(ai.mNumMaterials) {}
 
     void build(const Transform& root) {
+        // 3DS file coordinates in the scene: the quarter turn about x with which Assimp's 3DS
+        // reader makes the file Y-up, under the root (only 3DS cameras use it).
+        fileToWorld_ = root * Transform::rotateX(-kPi / 2);
         std::vector<std::pair<const aiNode*, Transform>> stack{{ai_.mRootNode, root}};
         std::set<const aiNode*> visited;
         while (!stack.empty()) {  // depth first, without recursion
@@ -83,7 +86,6 @@ public:
             if (!node || !visited.insert(node).second) fail("the node tree is not a tree");
             std::optional<Transform> world = worldTransform(*node, parent);
             if (!world) continue;
-            if (node == ai_.mRootNode) fileToWorld_ = *world;
             worldByName_.emplace(node->mName.C_Str(), *world);
             for (unsigned i = 0; i < node->mNumMeshes; ++i) placeMesh(node->mMeshes[i], *world);
             for (unsigned i = node->mNumChildren; i-- > 0;) stack.emplace_back(node->mChildren[i], *world);
@@ -276,7 +278,7 @@ private:
     std::vector<std::optional<std::uint32_t>> materials_;
     std::set<unsigned> meshesPlaced_;
     std::map<std::string, Transform> worldByName_;
-    Transform fileToWorld_;  // the root node's world transform: from the file's coordinates
+    Transform fileToWorld_;  // from a 3DS file's own coordinates
     NameTable modelNames_;
     NameTable materialNames_;
 };

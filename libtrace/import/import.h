@@ -6,7 +6,8 @@
 // The importers keep the file's structure: one Model per distinct mesh (glTF: per mesh
 // primitive, which carries the material; Assimp: per aiMesh; OBJ: per object, group and
 // material), one Instance per place a node puts it, with the node's world transform.
-// Degenerate triangles are dropped and counted.
+// Degenerate triangles (a cross product of exactly zero from the float corners: repeated or
+// collinear corners; mesh_data.h appendTriangle) are dropped and counted, the same in every importer.
 #pragma once
 
 #include <cstddef>
@@ -28,7 +29,7 @@ struct ImportOptions {
     double scale = 1;           // uniform factor applied at the root (units)
     // The file's up axis as its author knows it (3DS and most CAD exports: Z), whatever the
     // importer does internally; the scene is turned so that it becomes rt's +Y. Unset: the
-    // format's own convention (formatUpAxis).
+    // format's own convention (3DS: Z, a Collada file's <up_axis>, otherwise Y).
     std::optional<UpAxis> upAxis;
     double aspect = 4.0 / 3.0;  // width/height used to turn a vertical fov into rt's horizontal
                                 // one when the file gives no aspect ratio
