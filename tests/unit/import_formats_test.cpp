@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "import/import.h"
+#include "scene/raw_model.h"
 #include "import_test_util.h"
 #include "test_util.h"
 
@@ -248,6 +249,30 @@ TEST(ImportFormats, ColladaUpAxisIsTurnedOnce) {
     expectNear(rightOrigin(std::nullopt), {4, 1, -2});
     expectNear(rightOrigin(UpAxis::Z), {4, 1, -2});
     expectNear(rightOrigin(UpAxis::Y), {4, 2, 1});
+}
+
+// A thesis RAW model (appendix D) is read as one, not by Assimp's unrelated RAW reader: one
+// model placed once, framed by the generated camera (spheres count in the bounds), under any
+// name that starts with the RAW magic.
+TEST(ImportFormats, ThesisRawModelIsOneInstance) {
+    TempDir dir;
+    Model ball;
+    ball.sphereData = {10, 0, 0, 2};
+    for (const char* name : {"ball.raw", "ball-without-extension"}) {
+        SCOPED_TRACE(name);
+        const std::string path = dir.path(name);
+        writeRawFile(path, ball);
+        const ImportResult r = importScene(path);
+        EXPECT_EQ(r.report.format, "thesis RAW model");
+        ASSERT_EQ(r.scene.models.size(), 1u);
+        EXPECT_EQ(r.scene.models[0].sphereData, ball.sphereData);
+        ASSERT_EQ(r.scene.instances.size(), 1u);
+        EXPECT_TRUE(r.report.cameraGenerated);
+        expectNear(r.scene.camera.destination - r.scene.camera.origin,
+                   normalize(Vec3(10, 0, 0) - r.scene.camera.origin) *
+                       length(r.scene.camera.destination - r.scene.camera.origin),
+                   Real(1e-3));
+    }
 }
 
 // An NFF polygon ("p", vertex count, then one vertex per line) after a fill colour
