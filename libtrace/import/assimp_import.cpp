@@ -195,8 +195,8 @@ private:
         ImportReport& report = out_.report;
         report.camerasInFile = ai_.mNumCameras;
         if (ai_.mNumCameras == 0 || options_.camera == kFramingCamera) return;
-        const std::vector<Camera3ds> chunks = report.format == k3dsImporter ? read3dsCamerasFromFile(file_)
-                                                                             : std::vector<Camera3ds>();
+        const std::vector<Camera3ds> chunks =
+            report.format == k3dsImporter ? read3dsCamerasFromFile(file_) : std::vector<Camera3ds>();
         for (unsigned i = 0; i < ai_.mNumCameras; ++i) {
             const aiCamera& cam = *ai_.mCameras[i];
             const std::string name = cam.mName.C_Str();
@@ -235,7 +235,8 @@ private:
     // The camera chunk of the same name, in the file's coordinates under the root node.
     std::optional<Camera> camera3ds(const std::vector<Camera3ds>& chunks, const std::string& name,
                                     const std::string& what) {
-        const auto chunk = std::find_if(chunks.begin(), chunks.end(), [&](const Camera3ds& c) { return c.name == name; });
+        const auto chunk =
+            std::find_if(chunks.begin(), chunks.end(), [&](const Camera3ds& c) { return c.name == name; });
         if (chunk == chunks.end()) return unusable(what, "has no camera chunk of that name");
         if (chunk->target == chunk->position) return unusable(what, "looks at its own position");
         const double fov = fovDegreesFromLens(chunk->lensMm);

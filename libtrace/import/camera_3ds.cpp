@@ -31,7 +31,8 @@ public:
     std::vector<Camera3ds> read() {
         forEachChild(0, bytes_.size(), kMainChunk, [&](const Chunk& main) {
             forEachChild(main.begin, main.end, kEditorChunk, [&](const Chunk& editor) {
-                forEachChild(editor.begin, editor.end, kNamedObjectChunk, [&](const Chunk& object) { readObject(object); });
+                forEachChild(editor.begin, editor.end, kNamedObjectChunk,
+                             [&](const Chunk& object) { readObject(object); });
             });
         });
         return std::move(cameras_);
@@ -55,8 +56,8 @@ private:
         for (std::size_t at = begin; end - at >= kChunkHeaderBytes;) {
             const std::uint32_t length = littleEndian(at + 2, 4);
             if (length < kChunkHeaderBytes || length > end - at)
-                fail(at, "chunk of " + std::to_string(length) + " bytes does not fit in the " + std::to_string(end - at) +
-                             " bytes left of its parent");
+                fail(at, "chunk of " + std::to_string(length) + " bytes does not fit in the " +
+                             std::to_string(end - at) + " bytes left of its parent");
             if (littleEndian(at, 2) == id) visit(Chunk{id, at + kChunkHeaderBytes, at + length});
             at += length;
         }
@@ -79,8 +80,8 @@ private:
             v[i] = std::bit_cast<float>(littleEndian(chunk.begin + 4 * i, 4));
             if (!std::isfinite(v[i])) fail(chunk.begin + 4 * i, "camera number is NaN or infinite");
         }
-        cameras_.push_back({name, Vec3(Real(v[0]), Real(v[1]), Real(v[2])), Vec3(Real(v[3]), Real(v[4]), Real(v[5])),
-                            v[6], v[7]});
+        cameras_.push_back(
+            {name, Vec3(Real(v[0]), Real(v[1]), Real(v[2])), Vec3(Real(v[3]), Real(v[4]), Real(v[5])), v[6], v[7]});
     }
 
     std::span<const std::uint8_t> bytes_;

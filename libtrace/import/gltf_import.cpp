@@ -456,9 +456,11 @@ ImportResult importGltf(const std::string& path, const ImportOptions& options, c
     if (!std::ifstream(path, std::ios::binary)) throw InputError(path + ": cannot open the file");
     ImportResult result;
     const bool binary = hasGlbMagic(path);
-    const tinygltf::Model gltf = loadGltf(path, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
-        return binary ? loader.LoadBinaryFromFile(&model, &e, &w, path) : loader.LoadASCIIFromFile(&model, &e, &w, path);
-    });
+    const tinygltf::Model gltf =
+        loadGltf(path, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
+            return binary ? loader.LoadBinaryFromFile(&model, &e, &w, path)
+                          : loader.LoadASCIIFromFile(&model, &e, &w, path);
+        });
     GltfSceneBuilder(gltf, path, options, result).build(root);
     return result;
 }
@@ -469,11 +471,12 @@ ImportResult importGltfBytes(const std::string& bytes, const std::string& name, 
     ImportResult result;
     const bool binary = bytes.starts_with(kGlbMagic);
     const auto size = unsigned(bytes.size());
-    const tinygltf::Model gltf = loadGltf(name, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
-        return binary ? loader.LoadBinaryFromMemory(&model, &e, &w, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                    size, ".")
-                      : loader.LoadASCIIFromString(&model, &e, &w, bytes.data(), size, ".");
-    });
+    const tinygltf::Model gltf =
+        loadGltf(name, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
+            return binary ? loader.LoadBinaryFromMemory(&model, &e, &w,
+                                                        reinterpret_cast<const unsigned char*>(bytes.data()), size, ".")
+                          : loader.LoadASCIIFromString(&model, &e, &w, bytes.data(), size, ".");
+        });
     GltfSceneBuilder(gltf, name, options, result).build(root);
     return result;
 }

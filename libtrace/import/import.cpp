@@ -112,7 +112,8 @@ ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportO
     const std::string name = "<stdin>";
     checkOptions(options);
     if (!looksLikeGltf(bytes))
-        throw InputError(name + ": standard input takes a glTF 2.0 model (binary GLB or JSON); give other model files by name");
+        throw InputError(
+            name + ": standard input takes a glTF 2.0 model (binary GLB or JSON); give other model files by name");
     return finishImport(importGltfBytes(bytes, name, options, rootTransform(options)), name, options);
 }
 

@@ -77,11 +77,11 @@ struct DroppedMaterialData {
     std::size_t transparent = 0;  // d < 1 (or Tr > 0)
 
     void count(const tinyobj::material_t& m) {
-        const std::string* maps[] = {&m.ambient_texname,   &m.diffuse_texname,   &m.specular_texname,
-                                     &m.specular_highlight_texname, &m.bump_texname, &m.displacement_texname,
-                                     &m.alpha_texname,     &m.reflection_texname, &m.roughness_texname,
-                                     &m.metallic_texname,  &m.sheen_texname,     &m.emissive_texname,
-                                     &m.normal_texname};
+        const std::string* maps[] = {
+            &m.ambient_texname,   &m.diffuse_texname,      &m.specular_texname, &m.specular_highlight_texname,
+            &m.bump_texname,      &m.displacement_texname, &m.alpha_texname,    &m.reflection_texname,
+            &m.roughness_texname, &m.metallic_texname,     &m.sheen_texname,    &m.emissive_texname,
+            &m.normal_texname};
         textured += std::any_of(std::begin(maps), std::end(maps), [](const std::string* t) { return !t->empty(); });
         emissive += m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0;
         transparent += m.dissolve < 1;

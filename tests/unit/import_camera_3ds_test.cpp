@@ -24,7 +24,8 @@ using test::ThreeDsFixture;
 // A little-endian float32 written as 8 hex digits, as `xxd` shows the file.
 float floatFromHex(const std::string& hex) {
     std::uint32_t bits = 0;
-    for (int i = 3; i >= 0; --i) bits = bits << 8 | std::uint32_t(std::stoul(hex.substr(std::size_t(2 * i), 2), nullptr, 16));
+    for (int i = 3; i >= 0; --i)
+        bits = bits << 8 | std::uint32_t(std::stoul(hex.substr(std::size_t(2 * i), 2), nullptr, 16));
     return std::bit_cast<float>(bits);
 }
 
@@ -58,12 +59,14 @@ struct ChunkCamera {
 // `xxd -s 829 -l 32 -c 4` on each file (the camera chunk 0x4700 of object "Camera01" starts
 // at byte 823; its 6-byte header is followed by the eight float32). Both files also carry a
 // keyframe FOV key (chunk 0xB023) of 00003442 = 45.0 degrees for lens 53.333 mm = 2400 / 45.
-const ChunkCamera kTargetCamera{"3ds/TargetCameraAnim/TargetCameraAnim.3ds", 829,
-                                {"44bc83c2", "70f88041", "80331bc0", "f2d1c842", "28bae141", "00000000", "00000000",
-                                 "55555542"}};
-const ChunkCamera kRollCamera{"3ds/CameraRollAnim/CameraRollAnim.3ds", 829,
-                              {"bd1319c3", "88685140", "9338b641", "60e914c2", "43c461be", "9338b641", "00000000",
-                               "55555542"}};
+const ChunkCamera kTargetCamera{
+    "3ds/TargetCameraAnim/TargetCameraAnim.3ds",
+    829,
+    {"44bc83c2", "70f88041", "80331bc0", "f2d1c842", "28bae141", "00000000", "00000000", "55555542"}};
+const ChunkCamera kRollCamera{
+    "3ds/CameraRollAnim/CameraRollAnim.3ds",
+    829,
+    {"bd1319c3", "88685140", "9338b641", "60e914c2", "43c461be", "9338b641", "00000000", "55555542"}};
 
 void expectCameraFromChunk(const ChunkCamera& expected) {
     const std::string path = sharedModels() + "/" + expected.file;
@@ -183,7 +186,8 @@ TEST(Import3dsCamera, MalformedChunksAreInputErrorsWithTheirByte) {
     // Any cut or any byte set to 0 or 255: an error or a result, never a read past the end
     // (the asan preset checks that).
     std::vector<std::vector<std::uint8_t>> mutants;
-    for (std::size_t size = 0; size < good.size(); ++size) mutants.emplace_back(good.begin(), good.begin() + std::ptrdiff_t(size));
+    for (std::size_t size = 0; size < good.size(); ++size)
+        mutants.emplace_back(good.begin(), good.begin() + std::ptrdiff_t(size));
     for (std::size_t at = 0; at < good.size(); ++at)
         for (const std::uint8_t value : {0, 255}) {
             mutants.push_back(good);

@@ -13,8 +13,8 @@
 
 #include "core/error.h"
 #include "import/import.h"
-#include "scene/raw_model.h"
 #include "import_test_util.h"
+#include "scene/raw_model.h"
 #include "test_util.h"
 
 namespace rt {
@@ -320,11 +320,13 @@ TEST(ImportFormats, OffQuadAndTriangle) {
 // line, and a tiny triangle, are kept.
 TEST(ImportFormats, DegenerateTrianglesAreTheSameInEveryImporter) {
     const float step = std::nextafter(2.0f, 3.0f);
-    const std::vector<float> corners{0, 0, 0, 1, 0, 0, 0, 1, 0,         // valid
-                                     0, 0, 0, 1, 1, 1, 2, 2, 2,         // collinear
-                                     0, 0, 0, 0, 0, 0, 0, 1, 0,         // a repeated corner
-                                     0, 0, 0, 1, 1, 1, 2, 2, step,      // a sliver, not collinear in float
-                                     0, 0, 0, 1e-3f, 0, 0, 0, 1e-3f, 0};  // tiny
+    const std::vector<float> corners{
+        0, 0, 0, 1,     0, 0, 0, 1,     0,     // valid
+        0, 0, 0, 1,     1, 1, 2, 2,     2,     // collinear
+        0, 0, 0, 0,     0, 0, 0, 1,     0,     // a repeated corner
+        0, 0, 0, 1,     1, 1, 2, 2,     step,  // a sliver, not collinear in float
+        0, 0, 0, 1e-3f, 0, 0, 0, 1e-3f, 0,     // tiny
+    };
     std::ostringstream vertices, obj, ply;
     vertices.precision(9);
     for (std::size_t i = 0; i < corners.size(); i += 3)
@@ -343,8 +345,8 @@ TEST(ImportFormats, DegenerateTrianglesAreTheSameInEveryImporter) {
     gltf.indices.resize(15);
     for (std::uint16_t i = 0; i < 15; ++i) gltf.indices[i] = i;
     TempDir dir;
-    for (const std::string& path : {dir.write("d.obj", obj.str()), dir.write("d.ply", ply.str()),
-                                    dir.write("d.gltf", gltf.json())}) {
+    for (const std::string& path :
+         {dir.write("d.obj", obj.str()), dir.write("d.ply", ply.str()), dir.write("d.gltf", gltf.json())}) {
         SCOPED_TRACE(path);
         const ImportResult r = importScene(path);
         EXPECT_EQ(test::modelTriangles(r.scene), 3u);

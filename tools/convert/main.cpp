@@ -41,7 +41,8 @@ int convert(Options& o) {
     if (o.json && o.output == "-")
         throw rt::InputError("--json prints on standard output, where -o - writes the scene");
     if (!o.output.empty() && o.output != "-" && rt::lowerCaseExtension(o.output) != ".xml")
-        throw rt::InputError(o.output + ": rt-convert writes rt's XML scene only: name it .xml, or - for standard output");
+        throw rt::InputError(o.output +
+                             ": rt-convert writes rt's XML scene only: name it .xml, or - for standard output");
     if (!o.upAxis.empty()) o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
     const rt::ImportResult result = rt::importScene(o.input, o.import);
     if (!o.output.empty()) writeScene(result.scene, o.output);
