@@ -51,7 +51,7 @@ void noteDrops(ImportReport& r) {
 ImportResult finishImport(ImportResult result, const std::string& name, const ImportOptions& options) {
     if (result.scene.instances.empty()) throw InputError(name + ": nothing to convert: the scene places no triangles");
     noteDrops(result.report);
-    addMissingCameraAndLight(result, options.aspect);
+    addMissingCameraAndLight(result, options);
     return result;
 }
 

@@ -116,6 +116,9 @@ TEST(Import3dsCamera, AutoIgnoresTheFilesCameras) {
     EXPECT_EQ(r.report.camerasInFile, 1u);
     EXPECT_TRUE(r.report.cameraUsed.empty());
     EXPECT_TRUE(r.report.cameraGenerated);
+    EXPECT_NE(std::find_if(r.report.notes.begin(), r.report.notes.end(),
+                           [](const std::string& n) { return n.starts_with("--camera auto: made one"); }),
+              r.report.notes.end());
 }
 
 // A bank of 90 degrees rolls the camera counter-clockwise as seen from behind it: its up
