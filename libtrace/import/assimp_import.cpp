@@ -2,6 +2,7 @@
 
 #include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -13,6 +14,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "import/camera_3ds.h"
 #include "import/mesh_data.h"
 #include "import/scene_defaults.h"
 
@@ -60,12 +62,22 @@ std::string formatName(const Assimp::Importer& importer, const std::string& path
     throw InputError(path + ": unknown file format (no known extension, no recognised signature)");
 }
 
+constexpr const char* k3dsImporter = "Discreet 3DS Importer";
+
+// Assimp's 3DS reader turns the scene from 3D Studio's Z-up to Y-up (a root node transform);
+// the other readers leave the file's axes alone, except Collada's, which applies the file's
+// <up_axis> unless told not to (importAssimp does when --up-axis is given).
+UpAxis importerUpAxis(const std::string& format) { return format == k3dsImporter ? UpAxis::Z : UpAxis::Y; }
+
 class AssimpSceneBuilder {
 public:
     AssimpSceneBuilder(const aiScene& ai, const std::string& file, const ImportOptions& options, ImportResult& out)
         : ai_(ai), file_(file), options_(options), out_(out), models_(ai.mNumMeshes), materials_(ai.mNumMaterials) {}
 
     void build(const Transform& root) {
+        // 3DS file coordinates in the scene: the quarter turn about x with which Assimp's 3DS
+        // reader makes the file Y-up, under the root (only 3DS cameras use it).
+        fileToWorld_ = root * Transform::rotateX(-kPi / 2);
         std::vector<std::pair<const aiNode*, Transform>> stack{{ai_.mRootNode, root}};
         std::set<const aiNode*> visited;
         while (!stack.empty()) {  // depth first, without recursion
@@ -176,11 +188,15 @@ private:
         return it == worldByName_.end() ? nullptr : &it->second;
     }
 
-    // --camera NAME|INDEX, else the first perspective camera a node places. Assimp's
-    // mHorizontalFOV is half the horizontal angle.
+    // --camera NAME|INDEX, else the first perspective camera a node places; none for
+    // --camera auto. Assimp's mHorizontalFOV is half the horizontal angle. 3DS cameras come
+    // from the file's chunks, which Assimp's values cannot be turned back into.
     void takeCamera(const Aabb& bounds) {
         ImportReport& report = out_.report;
         report.camerasInFile = ai_.mNumCameras;
+        if (ai_.mNumCameras == 0 || options_.camera == kFramingCamera) return;
+        const std::vector<Camera3ds> chunks =
+            report.format == k3dsImporter ? read3dsCamerasFromFile(file_) : std::vector<Camera3ds>();
         for (unsigned i = 0; i < ai_.mNumCameras; ++i) {
             const aiCamera& cam = *ai_.mCameras[i];
             const std::string name = cam.mName.C_Str();
@@ -189,19 +205,43 @@ private:
             const Transform* world = placement(cam.mName);
             if (!wanted || !world) continue;
             const std::string what = "camera " + std::to_string(i) + " \"" + name + "\"";
-            if (cam.mOrthographicWidth > 0 || !(cam.mHorizontalFOV > 0 && cam.mHorizontalFOV < kPi / 2)) {
-                if (!options_.camera.empty()) fail(what + " is orthographic or has an invalid fov");
-                report.notes.push_back(what + " is orthographic or has an invalid fov: not used");
-                continue;
-            }
-            out_.scene.camera = viewCamera(world->point(toVec3(cam.mPosition)), world->vector(toVec3(cam.mLookAt)),
-                                           world->vector(toVec3(cam.mUp)), 2.0 * cam.mHorizontalFOV, bounds);
+            const std::optional<Camera> camera =
+                report.format == k3dsImporter ? camera3ds(chunks, name, what) : assimpCamera(cam, *world, what, bounds);
+            if (!camera) continue;
+            out_.scene.camera = *camera;
             report.cameraUsed = name;
             if (name.empty())
                 report.cameraUsed.append("#").append(std::to_string(i));  // (GCC 12 -Wrestrict misfires on "#" + s)
             return;
         }
         if (!options_.camera.empty()) fail("no node places a camera named or numbered \"" + options_.camera + "\"");
+    }
+
+    // A camera not used is an error when --camera asked for it, else a note.
+    std::nullopt_t unusable(const std::string& what, const std::string& why) {
+        if (!options_.camera.empty()) fail(what + " " + why);
+        out_.report.notes.push_back(what + " " + why + ": not used");
+        return std::nullopt;
+    }
+
+    std::optional<Camera> assimpCamera(const aiCamera& cam, const Transform& world, const std::string& what,
+                                       const Aabb& bounds) {
+        if (cam.mOrthographicWidth > 0 || !(cam.mHorizontalFOV > 0 && cam.mHorizontalFOV < kPi / 2))
+            return unusable(what, "is orthographic or has an invalid fov");
+        return viewCamera(world.point(toVec3(cam.mPosition)), world.vector(toVec3(cam.mLookAt)),
+                          world.vector(toVec3(cam.mUp)), 2.0 * cam.mHorizontalFOV, bounds);
+    }
+
+    // The camera chunk of the same name, in the file's coordinates under the root node.
+    std::optional<Camera> camera3ds(const std::vector<Camera3ds>& chunks, const std::string& name,
+                                    const std::string& what) {
+        const auto chunk =
+            std::find_if(chunks.begin(), chunks.end(), [&](const Camera3ds& c) { return c.name == name; });
+        if (chunk == chunks.end()) return unusable(what, "has no camera chunk of that name");
+        if (chunk->target == chunk->position) return unusable(what, "looks at its own position");
+        const double fov = fovDegreesFromLens(chunk->lensMm);
+        if (!(fov > 0 && fov < 180)) return unusable(what, "has a lens of " + std::to_string(chunk->lensMm) + " mm");
+        return cameraFrom3ds(*chunk, fileToWorld_);
     }
 
     // Point lights as they are, spot and area lights as point lights, directional lights as
@@ -239,15 +279,18 @@ private:
     std::vector<std::optional<std::uint32_t>> materials_;
     std::set<unsigned> meshesPlaced_;
     std::map<std::string, Transform> worldByName_;
+    Transform fileToWorld_;  // from a 3DS file's own coordinates
     NameTable modelNames_;
     NameTable materialNames_;
 };
 
 }  // namespace
 
-ImportResult importAssimp(const std::string& path, const ImportOptions& options, const Transform& root) {
+ImportResult importAssimp(const std::string& path, const ImportOptions& options) {
     Assimp::Importer importer;
     removeGltfImporters(importer);
+    // --up-axis describes the file, so it takes the place of a Collada file's own <up_axis>.
+    if (options.upAxis) importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     ImportResult result;
     result.report.format = formatName(importer, path);
     const aiScene* ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
@@ -255,7 +298,7 @@ ImportResult importAssimp(const std::string& path, const ImportOptions& options,
         const std::string why = importer.GetErrorString();
         throw InputError(path + ": " + (why.empty() ? "Assimp cannot read the file" : why));
     }
-    AssimpSceneBuilder(*ai, path, options, result).build(root);
+    AssimpSceneBuilder(*ai, path, options, result).build(rootTransform(options, importerUpAxis(result.report.format)));
     return result;
 }
 

@@ -12,7 +12,9 @@ namespace rt {
 // removed (they abort the process on some broken files; glTF goes through tinygltf). The node
 // tree gives the instances (world = parent * local), each aiMesh one Model, aiMaterial the
 // diffuse colour, specular, shininess and reflectivity, aiCamera and aiLight the camera and
-// lights. Camera and light defaults are left to the caller. Throws rt::InputError.
-ImportResult importAssimp(const std::string& path, const ImportOptions& options, const Transform& root);
+// lights (3DS cameras from the file's own chunks, import/camera_3ds.h). The root transform
+// follows rootTransform, knowing which formats Assimp turns Y-up itself. Camera and light
+// defaults are left to the caller. Throws rt::InputError.
+ImportResult importAssimp(const std::string& path, const ImportOptions& options);
 
 }  // namespace rt

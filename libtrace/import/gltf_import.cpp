@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -75,18 +76,16 @@ std::string firstLine(const std::string& text) {
     return line.empty() ? "not a valid glTF file" : line;
 }
 
-tinygltf::Model loadGltf(const std::string& path, ImportReport& report) {
-    if (!std::ifstream(path, std::ios::binary)) throw InputError(path + ": cannot open the file");
+// `load(loader, model, error, warning)` reads the file or the bytes; `name` names them in messages.
+template <class Load>
+tinygltf::Model loadGltf(const std::string& name, bool binary, ImportReport& report, Load load) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
     loader.SetFsCallbacks({isRegularFile, samePath, readRegularFile, refuseWrite, nullptr});
     tinygltf::Model gltf;
     std::string error, warning;
-    const bool binary = hasGlbMagic(path);
     report.format = binary ? "glTF 2.0 binary (.glb)" : "glTF 2.0";
-    const bool ok = binary ? loader.LoadBinaryFromFile(&gltf, &error, &warning, path)
-                           : loader.LoadASCIIFromFile(&gltf, &error, &warning, path);
-    if (!ok) throw InputError(path + ": " + firstLine(error));
+    if (!load(loader, gltf, error, warning)) throw InputError(name + ": " + firstLine(error));
     for (std::size_t start = 0; start < warning.size();) {
         const std::size_t end = std::min(warning.find('\n', start), warning.size());
         if (end > start) report.notes.push_back("tinygltf: " + firstLine(warning.substr(start, end - start)));
@@ -94,7 +93,7 @@ tinygltf::Model loadGltf(const std::string& path, ImportReport& report) {
     }
     for (const std::string& ext : gltf.extensionsRequired)
         if (ext.find("compression") != std::string::npos)
-            throw InputError(path + ": requires " + ext + ", which rt-convert does not decode");
+            throw InputError(name + ": requires " + ext + ", which rt-convert does not decode");
     return gltf;
 }
 
@@ -358,10 +357,11 @@ private:
                 float(finiteNumber(v[2], file_, what))};
     }
 
-    // --camera NAME|INDEX, else the first perspective camera a node places.
+    // --camera NAME|INDEX, else the first perspective camera a node places; none for --camera auto.
     void takeCamera(const Aabb& bounds) {
         ImportReport& report = out_.report;
         report.camerasInFile = gltf_.cameras.size();
+        if (options_.camera == kFramingCamera) return;
         const Placed* chosen = nullptr;
         for (const Placed& c : cameras_) {
             const tinygltf::Camera& cam = gltf_.cameras[std::size_t(c.index)];
@@ -450,16 +450,34 @@ private:
 
 }  // namespace
 
-bool hasGlbMagic(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    return in.read(magic, 4) && std::string(magic, 4) == "glTF";
-}
+bool hasGlbMagic(const std::string& path) { return fileStartsWith(path, kGlbMagic); }
 
 ImportResult importGltf(const std::string& path, const ImportOptions& options, const Transform& root) {
+    if (!std::ifstream(path, std::ios::binary)) throw InputError(path + ": cannot open the file");
     ImportResult result;
-    const tinygltf::Model gltf = loadGltf(path, result.report);
+    const bool binary = hasGlbMagic(path);
+    const tinygltf::Model gltf =
+        loadGltf(path, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
+            return binary ? loader.LoadBinaryFromFile(&model, &e, &w, path)
+                          : loader.LoadASCIIFromFile(&model, &e, &w, path);
+        });
     GltfSceneBuilder(gltf, path, options, result).build(root);
+    return result;
+}
+
+ImportResult importGltfBytes(const std::string& bytes, const std::string& name, const ImportOptions& options,
+                             const Transform& root) {
+    if (bytes.size() > std::numeric_limits<unsigned>::max()) throw InputError(name + ": larger than 4 GiB");
+    ImportResult result;
+    const bool binary = bytes.starts_with(kGlbMagic);
+    const auto size = unsigned(bytes.size());
+    const tinygltf::Model gltf =
+        loadGltf(name, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
+            return binary ? loader.LoadBinaryFromMemory(&model, &e, &w,
+                                                        reinterpret_cast<const unsigned char*>(bytes.data()), size, ".")
+                          : loader.LoadASCIIFromString(&model, &e, &w, bytes.data(), size, ".");
+        });
+    GltfSceneBuilder(gltf, name, options, result).build(root);
     return result;
 }
 

@@ -2,10 +2,14 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "import/import.h"
 
 namespace rt {
+
+// The first 4 bytes of a binary glTF (GLB) file.
+inline constexpr std::string_view kGlbMagic = "glTF";
 
 // True when the file starts with the GLB magic "glTF" (a .glb under any name).
 bool hasGlbMagic(const std::string& path);
@@ -16,5 +20,10 @@ bool hasGlbMagic(const std::string& path);
 // the chosen perspective camera and the KHR_lights_punctual lights. Camera and light defaults
 // are left to the caller. Throws rt::InputError for anything invalid.
 ImportResult importGltf(const std::string& path, const ImportOptions& options, const Transform& root);
+
+// The same from a GLB or glTF JSON held in memory (standard input), named `name` in messages;
+// relative URIs resolve against the working folder.
+ImportResult importGltfBytes(const std::string& bytes, const std::string& name, const ImportOptions& options,
+                             const Transform& root);
 
 }  // namespace rt

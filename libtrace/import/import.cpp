@@ -4,12 +4,16 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
 
 #include "core/error.h"
 #include "import/assimp_import.h"
 #include "import/gltf_import.h"
 #include "import/obj_import.h"
 #include "import/scene_defaults.h"
+#include "scene/raw_model.h"
 
 namespace rt {
 namespace {
@@ -19,12 +23,36 @@ void checkOptions(const ImportOptions& options) {
     if (!(options.aspect > 0) || !std::isfinite(options.aspect)) throw InputError("--aspect must be a positive number");
 }
 
+// A thesis RAW model (appendix D) is a scene of one model placed once under the root, with
+// rt's default material; the caller adds the camera and light.
+ImportResult importRaw(const std::string& path, const ImportOptions& options) {
+    ImportResult result;
+    result.report.format = "thesis RAW model";
+    Model model = readRawFile(path);
+    if (model.triangleCount() + model.sphereCount() == 0) return result;
+    model.name = std::filesystem::path(path).stem().string();
+    result.scene.models.push_back(std::move(model));
+    result.scene.materials.push_back(Material{});
+    result.scene.materials.back().name = "default";
+    result.scene.instances.push_back({0, 0, rootTransform(options)});
+    result.report.meshes = 1;
+    return result;
+}
+
 void noteDrops(ImportReport& r) {
     if (r.droppedPoints || r.droppedLines)
         r.notes.push_back("skipped " + std::to_string(r.droppedPoints) + " point and " +
                           std::to_string(r.droppedLines) + " line primitive(s): rt renders triangles");
     if (r.droppedDegenerate)
         r.notes.push_back("dropped " + std::to_string(r.droppedDegenerate) + " degenerate (zero-area) triangle(s)");
+}
+
+// What every import ends with: something to render, its drops noted, a camera and a light.
+ImportResult finishImport(ImportResult result, const std::string& name, const ImportOptions& options) {
+    if (result.scene.instances.empty()) throw InputError(name + ": nothing to convert: the scene places no triangles");
+    noteDrops(result.report);
+    addMissingCameraAndLight(result, options);
+    return result;
 }
 
 }  // namespace
@@ -40,26 +68,53 @@ bool isGltfPath(const std::string& path) {
     return ext == ".gltf" || ext == ".glb";
 }
 
-Transform rootTransform(const ImportOptions& options) {
-    // Z-up to Y-up: a right-handed quarter turn about x takes +Z to +Y (and +Y to -Z).
-    const Transform up = options.upAxis == UpAxis::Z ? Transform::rotateX(-kPi / 2) : Transform();
+Transform rootTransform(const ImportOptions& options, UpAxis importerUp) {
+    // Z-up to Y-up is a right-handed quarter turn about x: +Z to +Y (and +Y to -Z). The file's
+    // axis is turned up, after undoing the turn the importer made.
+    const UpAxis fileUp = options.upAxis.value_or(importerUp);
+    const Real turns = Real(fileUp == UpAxis::Z) - Real(importerUp == UpAxis::Z);
     const Real s = Real(options.scale);
-    return Transform::scale(Vec3(s, s, s)) * up;
+    return Transform::scale(Vec3(s, s, s)) * Transform::rotateX(-turns * kPi / 2);
+}
+
+std::string readStandardInput() {
+    std::ostringstream bytes;
+    bytes << std::cin.rdbuf();
+    return bytes.str();
+}
+
+bool fileStartsWith(const std::string& path, std::string_view magic) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(magic.size(), '\0');
+    return in.read(head.data(), std::streamsize(head.size())) && head == magic;
+}
+
+bool looksLikeGltf(std::string_view bytes) {
+    const std::size_t first = bytes.find_first_not_of(" \t\r\n");
+    return bytes.starts_with(kGlbMagic) || (first != std::string_view::npos && bytes[first] == '{');
 }
 
 ImportResult importScene(const std::string& path, const ImportOptions& options) {
+    if (path == "-") return importGltfFromStandardInput(readStandardInput(), options);
     checkOptions(options);
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory");
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a model file");
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
-    const Transform root = rootTransform(options);
-    ImportResult result = isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, root)
-                          : lowerCaseExtension(path) == ".obj" ? importObj(path, options, root)
-                                                               : importAssimp(path, options, root);
-    if (result.scene.instances.empty()) throw InputError(path + ": nothing to convert: the scene places no triangles");
-    noteDrops(result.report);
-    addMissingCameraAndLight(result, options.aspect);
-    return result;
+    const std::string ext = lowerCaseExtension(path);
+    ImportResult result = isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, rootTransform(options))
+                          : ext == ".obj"                       ? importObj(path, options, rootTransform(options))
+                          : ext == ".raw" || fileStartsWith(path, "raw3d") ? importRaw(path, options)
+                                                                           : importAssimp(path, options);
+    return finishImport(std::move(result), path, options);
+}
+
+ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportOptions& options) {
+    const std::string name = "<stdin>";
+    checkOptions(options);
+    if (!looksLikeGltf(bytes))
+        throw InputError(
+            name + ": standard input takes a glTF 2.0 model (binary GLB or JSON); give other model files by name");
+    return finishImport(importGltfBytes(bytes, name, options, rootTransform(options)), name, options);
 }
 
 }  // namespace rt

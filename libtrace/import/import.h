@@ -6,12 +6,14 @@
 // The importers keep the file's structure: one Model per distinct mesh (glTF: per mesh
 // primitive, which carries the material; Assimp: per aiMesh; OBJ: per object, group and
 // material), one Instance per place a node puts it, with the node's world transform.
-// Degenerate triangles are dropped and counted.
+// Degenerate triangles (a cross product of exactly zero from the float corners: repeated or
+// collinear corners; mesh_data.h appendTriangle) are dropped and counted, the same in every importer.
 #pragma once
 
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/scene.h"
@@ -22,12 +24,19 @@ enum class UpAxis { Y, Z };
 
 struct ImportOptions {
     std::optional<int> scene;   // glTF scene index; default: the file's default scene, else 0
-    std::string camera;         // camera name or index; empty: the first perspective camera placed
+    std::string camera;         // camera name or index; empty: the first perspective camera placed;
+                                // kFramingCamera: none of the file's, the generated framing camera
     double scale = 1;           // uniform factor applied at the root (units)
-    UpAxis upAxis = UpAxis::Y;  // the file's up axis; Z-up files are turned so that +Z becomes +Y
+    // The file's up axis as its author knows it (3DS and most CAD exports: Z), whatever the
+    // importer does internally; the scene is turned so that it becomes rt's +Y. Unset: the
+    // format's own convention (3DS: Z, a Collada file's <up_axis>, otherwise Y).
+    std::optional<UpAxis> upAxis;
     double aspect = 4.0 / 3.0;  // width/height used to turn a vertical fov into rt's horizontal
                                 // one when the file gives no aspect ratio
 };
+
+// ImportOptions::camera value (rt-convert --camera auto) that ignores the file's cameras.
+inline constexpr const char* kFramingCamera = "auto";
 
 // What an import kept, dropped and approximated; the tools print it as the summary.
 struct ImportReport {
@@ -56,12 +65,29 @@ std::string lowerCaseExtension(const std::string& path);
 // True for the extensions that importScene reads through tinygltf (.gltf, .glb).
 bool isGltfPath(const std::string& path);
 
-// Reads any supported model file. Throws rt::InputError (naming the file) for a missing,
+// True when the file at `path` starts with the bytes `magic` ("glTF", "raw3d").
+bool fileStartsWith(const std::string& path, std::string_view magic);
+
+// True for bytes that can only be glTF 2.0: the GLB magic "glTF", or a JSON object ('{' after
+// blanks), which no XML scene starts with.
+bool looksLikeGltf(std::string_view bytes);
+
+// Reads any supported model file: glTF, OBJ, a thesis RAW model (appendix D, wrapped in a scene
+// with one instance), everything else through Assimp. "-" reads standard input, which must hold
+// a glTF 2.0 model (GLB or JSON). Throws rt::InputError (naming the file) for a missing,
 // unreadable, unknown or invalid file; never reads out of bounds or allocates more than the
 // file's data can justify.
 ImportResult importScene(const std::string& path, const ImportOptions& options = {});
 
-// The root transform of the options: --up-axis, then --scale.
-Transform rootTransform(const ImportOptions& options);
+// All of standard input.
+std::string readStandardInput();
+
+// importScene for a model held in memory, read from standard input: GLB or glTF JSON.
+ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportOptions& options);
+
+// The root transform of the options: --up-axis, then --scale. `importerUp` is the up axis
+// the importer already turned to +Y (Assimp's 3DS reader turns Z-up to Y-up, the others
+// leave the file's axes alone), so that --up-axis describes the file, not the importer.
+Transform rootTransform(const ImportOptions& options, UpAxis importerUp = UpAxis::Y);
 
 }  // namespace rt

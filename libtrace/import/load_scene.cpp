@@ -3,14 +3,28 @@
 #include "scene/xml_loader.h"
 
 namespace rt {
+namespace {
 
-Scene loadScene(const std::string& path, const ImportOptions& options) {
-    if (path == "-" || lowerCaseExtension(path) == ".xml") return loadSceneXml(path);
-    ImportResult imported = importScene(path, options);
+Scene flattenedScene(ImportResult imported) {
     Scene scene = std::move(imported.scene);
     scene.warnings.insert(scene.warnings.end(), imported.report.notes.begin(), imported.report.notes.end());
     scene.droppedDegenerate = imported.report.droppedDegenerateInScene + scene.flatten();
     return scene;
+}
+
+// Standard input holds an XML scene or a glTF 2.0 model (GLB or JSON), told apart by content.
+Scene loadStandardInput(const ImportOptions& options) {
+    const std::string bytes = readStandardInput();
+    if (looksLikeGltf(bytes)) return flattenedScene(importGltfFromStandardInput(bytes, options));
+    return loadSceneXmlFromString(bytes, "<stdin>", ".");
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const ImportOptions& options) {
+    if (path == "-") return loadStandardInput(options);
+    if (lowerCaseExtension(path) == ".xml") return loadSceneXml(path);
+    return flattenedScene(importScene(path, options));
 }
 
 }  // namespace rt

@@ -8,8 +8,9 @@
 
 namespace rt {
 
-// "-" and files ending in .xml are read by loadSceneXml (thesis 3.4.2); anything else is
-// imported with `options` (glTF, OBJ, 3DS, ...), its notes becoming the scene's warnings.
+// Files ending in .xml are read by loadSceneXml (thesis 3.4.2); anything else is imported with
+// `options` (glTF, OBJ, 3DS, a thesis RAW model, ...), its notes becoming the scene's warnings.
+// "-" reads standard input: a glTF 2.0 model (GLB, or JSON), else an XML scene.
 // The returned scene is flattened. Throws rt::InputError for bad input.
 Scene loadScene(const std::string& path, const ImportOptions& options = {});
 

@@ -35,6 +35,12 @@ Aabb modelBounds(const Model& model) {
     Aabb box;
     const std::vector<float>& v = model.triangleVertices;
     for (std::size_t i = 0; i + 3 <= v.size(); i += 3) box.extend(Vec3(v[i], v[i + 1], v[i + 2]));
+    const std::vector<float>& s = model.sphereData;  // RAW models may hold spheres
+    for (std::size_t i = 0; i + 4 <= s.size(); i += 4) {
+        const Vec3 centre(s[i], s[i + 1], s[i + 2]), radius(s[i + 3], s[i + 3], s[i + 3]);
+        box.extend(centre - radius);
+        box.extend(centre + radius);
+    }
     return box;
 }
 

@@ -36,7 +36,7 @@ Color fileColor(float r, float g, float b);
 // shininess clamped to [1, 10000], or rt's default when it is not positive and finite.
 Material classicPhong(const Color& diffuse, const Color& specular, float shininess);
 
-// Bounds of a model's triangles in its own space (empty for an empty model).
+// Bounds of a model's triangles and spheres in its own space (empty for an empty model).
 Aabb modelBounds(const Model& model);
 
 // Hands out names that are unique within one table and safe as XML attribute values and

@@ -42,7 +42,9 @@ public:
         }
         std::ifstream in(path);
         const std::size_t before = materials->size();
-        tinyobj::LoadMtl(byName, materials, &in, warn, err);
+        std::string mtlWarnings;
+        tinyobj::LoadMtl(byName, materials, &in, &mtlWarnings, err);
+        *warn += withoutUnusedDataWarnings(mtlWarnings);
         // LoadMtl always appends the material it was filling; without a "newmtl" it has no name.
         if (materials->size() > before && materials->back().name.empty()) {
             const auto unnamed = byName->find("");
@@ -55,7 +57,42 @@ public:
     }
 
 private:
+    // tinyobjloader warns once per material that defines both d and Tr (35 lines for one public
+    // OBJ); rt uses neither, and the transparency note (ObjSceneBuilder) says so once.
+    static std::string withoutUnusedDataWarnings(const std::string& warnings) {
+        std::istringstream lines(warnings);
+        std::string kept;
+        for (std::string line; std::getline(lines, line);)
+            if (line.find("Both `d` and `Tr`") == std::string::npos) kept += line + "\n";
+        return kept;
+    }
+
     std::filesystem::path folder_;
+};
+
+// What a material defines that rt's Phong material drops, counted for the notes.
+struct DroppedMaterialData {
+    std::size_t textured = 0;     // any map_* or bump/disp/refl texture
+    std::size_t emissive = 0;     // Ke not black
+    std::size_t transparent = 0;  // d < 1 (or Tr > 0)
+
+    void count(const tinyobj::material_t& m) {
+        const std::string* maps[] = {
+            &m.ambient_texname,   &m.diffuse_texname,      &m.specular_texname, &m.specular_highlight_texname,
+            &m.bump_texname,      &m.displacement_texname, &m.alpha_texname,    &m.reflection_texname,
+            &m.roughness_texname, &m.metallic_texname,     &m.sheen_texname,    &m.emissive_texname,
+            &m.normal_texname};
+        textured += std::any_of(std::begin(maps), std::end(maps), [](const std::string* t) { return !t->empty(); });
+        emissive += m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0;
+        transparent += m.dissolve < 1;
+    }
+
+    void note(std::vector<std::string>& notes) const {
+        if (textured) notes.push_back(std::to_string(textured) + " material(s) with texture maps: textures ignored");
+        if (emissive) notes.push_back(std::to_string(emissive) + " material(s) with emission (Ke): emission ignored");
+        if (transparent)
+            notes.push_back(std::to_string(transparent) + " material(s) partly transparent (d, Tr): rendered opaque");
+    }
 };
 
 // Kd, Ks and Ns as classic Phong; illum 3 ("reflection on, ray trace on") mirrors with
@@ -122,6 +159,7 @@ public:
         }
         out_.report.droppedDegenerateInScene = out_.report.droppedDegenerate;
         out_.report.meshes = out_.scene.models.size();
+        dropped_.note(out_.report.notes);
         if (fannedConcave_)
             out_.report.notes.push_back(std::to_string(fannedConcave_) +
                                         " concave polygon(s) with more than " + std::to_string(kMaxEarClippedCorners) +
@@ -233,6 +271,7 @@ private:
         if (!added) return it->second;
         const bool known = index >= 0 && std::size_t(index) < mtl_.size();
         Material m = known ? materialFromMtl(mtl_[std::size_t(index)]) : Material{};
+        if (known) dropped_.count(mtl_[std::size_t(index)]);
         m.name = materialNames_.claim(known ? mtl_[std::size_t(index)].name : "", "default");
         out_.scene.materials.push_back(m);
         return it->second = std::uint32_t(out_.scene.materials.size() - 1);
@@ -250,6 +289,7 @@ private:
     Part* current_ = nullptr;
     std::map<int, std::uint32_t> materialIndex_;
     std::set<std::string> missingMaterials_;  // each named once in the notes
+    DroppedMaterialData dropped_;             // of the materials used
     NameTable modelNames_, materialNames_;
     std::size_t fannedConcave_ = 0;
     std::vector<std::uint32_t> polygon_, triangles_;  // scratch for face()

@@ -49,7 +49,8 @@ void scaleLightsToUnitPeak(std::vector<Light>& lights) {
         for (Light& l : lights) l.color *= 1 / peak;
 }
 
-void addMissingCameraAndLight(ImportResult& result, double aspect) {
+void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options) {
+    const double aspect = options.aspect;
     Scene& scene = result.scene;
     ImportReport& report = result.report;
     if (report.cameraUsed.empty()) {
@@ -64,7 +65,8 @@ void addMissingCameraAndLight(ImportResult& result, double aspect) {
         const Vec3 eye = centre + direction * Real(radius / std::sin(half));
         scene.camera = viewCamera(eye, centre - eye, Vec3(0, 1, 0), kFov, bounds);
         report.cameraGenerated = true;
-        report.notes.push_back("no usable camera: made one with a 50 degree fov framing the scene's bounds");
+        report.notes.push_back(std::string(options.camera == kFramingCamera ? "--camera auto" : "no usable camera") +
+                               ": made one with a 50 degree fov framing the scene's bounds");
     }
     if (scene.lights.empty()) {
         scene.lights.push_back(Light{scene.camera.origin, Color(1, 1, 1), 0});

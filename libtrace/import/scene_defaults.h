@@ -26,10 +26,10 @@ Camera viewCamera(const Vec3& eye, const Vec3& forward, const Vec3& up, double h
 // together so that the brightest channel is 1.
 void scaleLightsToUnitPeak(std::vector<Light>& lights);
 
-// If the importer chose no camera (report.cameraUsed empty), a camera with a 50 degree
-// horizontal fov looking at the bounds' centre from the front, right and above, far enough
-// for the bounding sphere to fit the narrower side of an image of `aspect`. If the scene
-// has no light, a white point light at the camera. Each is recorded in the report's notes.
-void addMissingCameraAndLight(ImportResult& result, double aspect);
+// If the importer chose no camera (report.cameraUsed empty, or --camera auto), a camera with a
+// 50 degree horizontal fov looking at the bounds' centre from the front, right and above, far
+// enough for the bounding sphere to fit the narrower side of an image of `options.aspect`. If
+// the scene has no light, a white point light at the camera. Each is recorded in the notes.
+void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options);
 
 }  // namespace rt

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "import/import.h"
+#include "import/scene_defaults.h"
 #include "import_test_util.h"
 #include "test_util.h"
 
@@ -57,6 +58,29 @@ TEST(ImportAssimp, MissingAndEmptyFilesAreInputErrors) {
     EXPECT_THROW(importScene(dir.path("absent.ply")), InputError);
     EXPECT_THROW(importScene(dir.write("empty.ply", "")), InputError);
     EXPECT_THROW(importScene(sharedModels() + "/3ds"), InputError);  // a folder
+}
+
+// --up-axis says how the file stands, whatever the importer does: Assimp's 3DS reader already
+// turns 3D Studio's Z-up to Y-up, so a triangle standing along the file's +Z stands along rt's
+// +Y by default and with --up-axis z (before: on its nose, along -Z), and keeps the file's
+// axes with --up-axis y.
+TEST(ImportAssimp, UpAxisDescribesTheFileNotTheImporter) {
+    TempDir dir;
+    const std::string path = test::ThreeDsFixture::write(
+        dir, test::ThreeDsFixture::file({test::ThreeDsFixture::mesh("tall", {0, 0, 0, 1, 0, 0, 0, 0, 10})}));
+    for (const std::optional<UpAxis> up : {std::optional<UpAxis>(), std::optional<UpAxis>(UpAxis::Z)}) {
+        ImportOptions o;
+        o.upAxis = up;
+        const Aabb b = sceneBounds(importScene(path, o).scene);
+        EXPECT_NEAR(b.lo.y, 0, 1e-5);
+        EXPECT_NEAR(b.hi.y, 10, 1e-5) << "the file's +Z is rt's up";
+        EXPECT_NEAR(b.hi.z - b.lo.z, 0, 1e-5);
+    }
+    ImportOptions o;
+    o.upAxis = UpAxis::Y;
+    const Aabb b = sceneBounds(importScene(path, o).scene);
+    EXPECT_NEAR(b.hi.z, 10, 1e-5) << "a file said to be Y-up keeps its axes";
+    EXPECT_NEAR(b.hi.y - b.lo.y, 0, 1e-5);
 }
 
 }  // namespace

@@ -4,14 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
 #include "import/import.h"
 #include "import_test_util.h"
+#include "scene/raw_model.h"
 #include "test_util.h"
 
 namespace rt {
@@ -230,6 +233,48 @@ TEST(ImportFormats, ColladaMeshPlacedTwiceIsOneModelWithTwoInstances) {
     EXPECT_EQ(r.scene.primitives.triangleCount(), 2u);
 }
 
+// A Collada file says its up axis itself, and Assimp applies it; --up-axis, when given, takes
+// its place: Z_UP and --up-axis z turn the file once (not twice), --up-axis y keeps its axes.
+TEST(ImportFormats, ColladaUpAxisIsTurnedOnce) {
+    TempDir dir;
+    const std::string path = dir.write("z.dae", test::replaceOnce(kColladaTwoPlacements, "Y_UP", "Z_UP"));
+    const auto rightOrigin = [&](std::optional<UpAxis> up) {
+        ImportOptions o;
+        o.upAxis = up;
+        Vec3 furthest(-1e9, 0, 0);
+        for (const Instance& i : importScene(path, o).scene.instances)
+            if (i.transform.point(Vec3()).x > furthest.x) furthest = i.transform.point(Vec3());
+        return furthest;  // the node translated by (4, 2, 1) in the file
+    };
+    expectNear(rightOrigin(std::nullopt), {4, 1, -2});
+    expectNear(rightOrigin(UpAxis::Z), {4, 1, -2});
+    expectNear(rightOrigin(UpAxis::Y), {4, 2, 1});
+}
+
+// A thesis RAW model (appendix D) is read as one, not by Assimp's unrelated RAW reader: one
+// model placed once, framed by the generated camera (spheres count in the bounds), under any
+// name that starts with the RAW magic.
+TEST(ImportFormats, ThesisRawModelIsOneInstance) {
+    TempDir dir;
+    Model ball;
+    ball.sphereData = {10, 0, 0, 2};
+    for (const char* name : {"ball.raw", "ball-without-extension"}) {
+        SCOPED_TRACE(name);
+        const std::string path = dir.path(name);
+        writeRawFile(path, ball);
+        const ImportResult r = importScene(path);
+        EXPECT_EQ(r.report.format, "thesis RAW model");
+        ASSERT_EQ(r.scene.models.size(), 1u);
+        EXPECT_EQ(r.scene.models[0].sphereData, ball.sphereData);
+        ASSERT_EQ(r.scene.instances.size(), 1u);
+        EXPECT_TRUE(r.report.cameraGenerated);
+        expectNear(r.scene.camera.destination - r.scene.camera.origin,
+                   normalize(Vec3(10, 0, 0) - r.scene.camera.origin) *
+                       length(r.scene.camera.destination - r.scene.camera.origin),
+                   Real(1e-3));
+    }
+}
+
 // An NFF polygon ("p", vertex count, then one vertex per line) after a fill colour
 // ("f" red green blue Kd Ks shine transmittance index of refraction).
 TEST(ImportFormats, NffPolygon) {
@@ -267,6 +312,46 @@ TEST(ImportFormats, OffQuadAndTriangle) {
     EXPECT_EQ(test::modelTriangles(r.scene), 3u);
     EXPECT_NEAR(doubleArea(r.scene), 2 * 1 + 4, 1e-5);
     expectCornersAmong(r.scene, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 2}});
+}
+
+// One definition of a degenerate triangle for every importer (docs/conversion.md): its cross
+// product, computed in double from its corners in float (as RAW stores them), is exactly zero.
+// So collinear corners and repeated corners are dropped; a sliver one float step away from a
+// line, and a tiny triangle, are kept.
+TEST(ImportFormats, DegenerateTrianglesAreTheSameInEveryImporter) {
+    const float step = std::nextafter(2.0f, 3.0f);
+    const std::vector<float> corners{
+        0, 0, 0, 1,     0, 0, 0, 1,     0,     // valid
+        0, 0, 0, 1,     1, 1, 2, 2,     2,     // collinear
+        0, 0, 0, 0,     0, 0, 0, 1,     0,     // a repeated corner
+        0, 0, 0, 1,     1, 1, 2, 2,     step,  // a sliver, not collinear in float
+        0, 0, 0, 1e-3f, 0, 0, 0, 1e-3f, 0,     // tiny
+    };
+    std::ostringstream vertices, obj, ply;
+    vertices.precision(9);
+    for (std::size_t i = 0; i < corners.size(); i += 3)
+        vertices << corners[i] << ' ' << corners[i + 1] << ' ' << corners[i + 2] << '\n';
+    std::istringstream lines(vertices.str());
+    for (std::string line; std::getline(lines, line);) obj << "v " << line << '\n';
+    ply << "ply\nformat ascii 1.0\nelement vertex 15\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face 5\nproperty list uchar int vertex_indices\nend_header\n"
+        << vertices.str();
+    for (int t = 0; t < 5; ++t) {
+        obj << "f " << 3 * t + 1 << ' ' << 3 * t + 2 << ' ' << 3 * t + 3 << '\n';
+        ply << "3 " << 3 * t << ' ' << 3 * t + 1 << ' ' << 3 * t + 2 << '\n';
+    }
+    test::GltfFixture gltf;
+    gltf.positions = corners;
+    gltf.indices.resize(15);
+    for (std::uint16_t i = 0; i < 15; ++i) gltf.indices[i] = i;
+    TempDir dir;
+    for (const std::string& path :
+         {dir.write("d.obj", obj.str()), dir.write("d.ply", ply.str()), dir.write("d.gltf", gltf.json())}) {
+        SCOPED_TRACE(path);
+        const ImportResult r = importScene(path);
+        EXPECT_EQ(test::modelTriangles(r.scene), 3u);
+        EXPECT_EQ(r.report.droppedDegenerate, 2u);
+    }
 }
 
 }  // namespace

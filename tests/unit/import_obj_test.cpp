@@ -38,8 +38,8 @@ TEST(ImportObj, TriangleCountsMatchTheManifest) {
     EXPECT_EQ(files, 12u);
 }
 
-// spider.obj: Assimp's FindDegenerates leaves 1312 of 1368 triangles, as the dropping here does.
-TEST(ImportObj, DegenerateTrianglesAreTheOnesAssimpFinds) {
+// spider.obj: 56 of its 1368 triangles have no area in float (Assimp's FindDegenerates finds the same ones here).
+TEST(ImportObj, DegenerateTrianglesOfSpider) {
     const ImportResult r = importScene(sharedModels() + "/obj/spider/spider.obj");
     EXPECT_EQ(test::modelTriangles(r.scene), 1312u);
     EXPECT_EQ(r.report.droppedDegenerate, 56u);
@@ -284,6 +284,30 @@ TEST(ImportObj, DegenerateFacesAreDroppedAndCounted) {
 
 TEST(ImportObj, NanVerticesOfTheSharedBadFileAreAnInputError) {
     EXPECT_THROW(importScene(sharedModels() + "/bad/obj-tinyobjloader/test-nan.obj"), InputError);
+}
+
+// Data rt does not use is no note (tinyobjloader warns for each material with both d and Tr);
+// data rt drops that changes the picture is one note per kind, with a count.
+TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
+    TempDir dir;
+    std::string mtl;
+    for (const char* name : {"a", "b", "c"})
+        mtl += std::string("newmtl ") + name + "\nKd 1 1 1\nd 0.5\nTr 0.5\nmap_Kd wood.png\nKe 1 1 1\n";
+    mtl += "newmtl plain\nKd 1 0 0\n";
+    dir.write("m.mtl", mtl);
+    const ImportResult r = importScene(dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare +
+                                                              "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n"
+                                                              "usemtl c\nf 1 2 4\nusemtl plain\nf 2 3 4\n"));
+    const auto& notes = r.report.notes;
+    const auto count = [&](const std::string& text) {
+        return std::count_if(notes.begin(), notes.end(),
+                             [&](const std::string& n) { return n.find(text) != std::string::npos; });
+    };
+    EXPECT_EQ(count("`Tr`"), 0) << "d and Tr are not used: no warning about them";
+    EXPECT_EQ(count("3 material(s) with texture maps"), 1);
+    EXPECT_EQ(count("3 material(s) with emission (Ke)"), 1);
+    EXPECT_EQ(count("3 material(s) partly transparent"), 1);
+    EXPECT_EQ(count("material"), 3) << "one note per kind, not per material";
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -120,6 +121,60 @@ struct GltfFixture {
           << R"(, "type": "VEC3"}, {"bufferView": 1, "componentType": 5123, "count": )" << indices.size()
           << R"(, "type": "SCALAR"}])" << extra << "}";
         return j.str();
+    }
+};
+
+// A 3DS file built chunk by chunk (uint16 id, uint32 length with the 6-byte header, little
+// endian): main 0x4D4D > editor 0x3D3D > named objects 0x4000, holding a triangle mesh 0x4100
+// (vertices 0x4110, faces 0x4120) or a camera 0x4700 (position, target, bank, lens).
+struct ThreeDsFixture {
+    using Bytes = std::vector<std::uint8_t>;
+
+    static void put(Bytes& out, std::uint32_t value, int bytes) {
+        for (int i = 0; i < bytes; ++i) out.push_back(std::uint8_t(value >> (8 * i)));
+    }
+    static void putFloat(Bytes& out, float value) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &value, 4);
+        put(out, bits, 4);
+    }
+    static Bytes chunk(std::uint16_t id, const Bytes& contents) {
+        Bytes out;
+        put(out, id, 2);
+        put(out, std::uint32_t(contents.size() + 6), 4);
+        out.insert(out.end(), contents.begin(), contents.end());
+        return out;
+    }
+    static Bytes object(const std::string& name, const Bytes& child) {
+        Bytes out(name.begin(), name.end());
+        out.push_back(0);
+        out.insert(out.end(), child.begin(), child.end());
+        return chunk(0x4000, out);
+    }
+    // One triangle.
+    static Bytes mesh(const std::string& name, const std::vector<float>& corners) {
+        Bytes vertices, faces;
+        put(vertices, 3, 2);
+        for (float v : corners) putFloat(vertices, v);
+        put(faces, 1, 2);
+        for (std::uint32_t i : {0u, 1u, 2u, 0u}) put(faces, i, 2);  // a, b, c, flags
+        Bytes tri = chunk(0x4110, vertices);
+        const Bytes f = chunk(0x4120, faces);
+        tri.insert(tri.end(), f.begin(), f.end());
+        return object(name, chunk(0x4100, tri));
+    }
+    static Bytes camera(const std::string& name, const std::vector<float>& numbers) {
+        Bytes data;
+        for (float v : numbers) putFloat(data, v);
+        return object(name, chunk(0x4700, data));
+    }
+    static Bytes file(const std::vector<Bytes>& objects) {
+        Bytes editor;
+        for (const Bytes& o : objects) editor.insert(editor.end(), o.begin(), o.end());
+        return chunk(0x4D4D, chunk(0x3D3D, editor));
+    }
+    static std::string write(const ::TempDir& dir, const Bytes& bytes) {
+        return dir.write("fixture.3ds", std::string(bytes.begin(), bytes.end()));
     }
 };
 

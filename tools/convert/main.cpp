@@ -21,7 +21,7 @@ struct Options {
     std::string output;
     bool json = false;
     rt::ImportOptions import;
-    std::string upAxis = "y";
+    std::string upAxis;  // empty: the format's convention
 };
 
 // saveSceneXml writes each file atomically, the RAW models first and the XML last. If it
@@ -55,7 +55,10 @@ int convert(Options& o) {
     if (o.input.empty() == o.generate.empty()) throw rt::InputError("give either a model file or --generate NAME");
     if (o.json && o.output == "-")
         throw rt::InputError("--json prints on standard output, where -o - writes the scene");
-    o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
+    if (!o.output.empty() && o.output != "-" && rt::lowerCaseExtension(o.output) != ".xml")
+        throw rt::InputError(o.output +
+                             ": rt-convert writes rt's XML scene only: name it .xml, or - for standard output");
+    if (!o.upAxis.empty()) o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
     const rt::ImportResult result =
         o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
     if (!o.output.empty()) writeScene(result.scene, o.output);
@@ -73,19 +76,24 @@ int main(int argc, char** argv) {
         "Without -o nothing is written: the file is checked and summarised."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-convert"));
     Options o;
-    app.add_option("input", o.input, "Model file: .gltf, .glb, .obj, .3ds, .ply, .stl, .fbx, .dae, ...");
+    app.add_option("input", o.input,
+                   "Model file: .gltf, .glb, .obj, .3ds, .ply, .stl, .fbx, .dae, .raw, ...; - reads a glTF 2.0 model "
+                   "(GLB or JSON) from standard input");
     app.add_option("--generate", o.generate,
                    "Instead of a model file, a test scene of the thesis: balls, balls2, ships, tree or pyramid5");
     app.add_option("-o,--output", o.output,
-                   "Scene file to write (RAW models go in a folder named after it), or - for standard output "
-                   "with the geometry inline");
+                   "Scene file to write, .xml (RAW models go in a folder named after it), or - for standard "
+                   "output with the geometry inline");
     app.add_option("--scene", o.import.scene, "glTF scene index (default: the file's default scene)")
         ->check(CLI::NonNegativeNumber);
-    app.add_option("--camera", o.import.camera, "Camera to use, by name or index (default: the first)");
+    app.add_option("--camera", o.import.camera,
+                   "Camera to use, by name or index (default: the first); auto: ignore the file's cameras and "
+                   "frame the scene");
     app.add_option("--scale", o.import.scale, "Uniform scale applied at the root, e.g. 0.01 for centimetres")
         ->check(CLI::PositiveNumber);
     app.add_option("--up-axis", o.upAxis,
-                   "The file's up axis; z turns a Z-up model so that it stands in rt's Y-up world")
+                   "The file's up axis as its author knows it (3DS, FBX, CAD: usually z); the model is turned to "
+                   "stand in rt's Y-up world (default: the format's convention, docs/conversion.md)")
         ->check(CLI::IsMember({"y", "z"}));
     app.add_option("--aspect", o.import.aspect,
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")

@@ -1,0 +1,28 @@
+# 3DS cameras (issue 10, item 2): the cameras of shared/models/3ds/TargetCameraAnim and
+# CameraRollAnim are taken from the files' camera chunks, so the picture through them shows the
+# box (before, Assimp's values gave a camera at twice its position looking straight up: an
+# empty picture). --camera auto ignores the file's camera and frames the scene.
+source "$(dirname "$0")/common.bash"
+MODELS="$RT_SHARED_DIR/models/3ds"
+[ -d "$MODELS" ] || fail "no $MODELS"
+
+for name in TargetCameraAnim CameraRollAnim; do
+    model="$MODELS/$name/$name.3ds"
+    expect_exit 0 "$RT_CONVERT" "$model" --json
+    grep -q '"cameras": {"inFile": 1, "used": "Camera01", "generated": false}' "$WORK/stdout" ||
+        fail "$name: the file's camera is not used: $(cat "$WORK/stdout")"
+    expect_exit 0 "$RT_CONVERT" "$model" --camera auto --json
+    grep -q '"cameras": {"inFile": 1, "used": null, "generated": true}' "$WORK/stdout" ||
+        fail "$name: --camera auto did not frame the scene: $(cat "$WORK/stdout")"
+
+    # The box covers part of the 40x15 text picture (one character per pixel, blank where no
+    # surface is seen), through the file's camera and through the framing one.
+    expect_exit 0 "$RT_CONVERT" "$model" --camera auto -o "$WORK/auto.xml"
+    for scene in "$model" "$WORK/auto.xml"; do
+        expect_exit 0 "$RT_RENDER" "$scene" -x 40 -y 15 -o text -q
+        seen=$(tr -d ' \n' <"$WORK/stdout" | wc -c)
+        [ "$seen" -ge 30 ] && [ "$seen" -le 570 ] ||
+            fail "$name through $scene: $seen of 600 pixels show the model: $(cat "$WORK/stdout")"
+    done
+done
+echo "convert_3ds_cameras: ok"
