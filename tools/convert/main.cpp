@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "command_line.h"
 #include "core/error.h"
 #include "import/import.h"
 #include "scene/xml_writer.h"
@@ -18,6 +19,7 @@ struct Options {
     std::string input;
     std::string output;
     bool json = false;
+    bool quiet = false;
     rt::ImportOptions import;
     std::string upAxis = "y";
 };
@@ -44,7 +46,7 @@ int convert(Options& o) {
     const rt::ImportResult result = rt::importScene(o.input, o.import);
     if (!o.output.empty()) writeScene(result.scene, o.output);
     const rt::convert::Summary summary{o.input, o.output, &result};
-    rt::convert::printSummary(std::cerr, summary);
+    if (!o.quiet) rt::convert::printSummary(std::cerr, summary);
     if (o.json) rt::convert::printSummaryJson(std::cout, summary);
     return rt::tool::kExitOk;
 }
@@ -73,10 +75,7 @@ int main(int argc, char** argv) {
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")
         ->check(CLI::PositiveNumber);
     app.add_flag("--json", o.json, "Print the summary as JSON on standard output");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? rt::tool::kExitOk : rt::tool::kExitBadInput;
-    }
+    app.add_flag("-q,--quiet", o.quiet, "Quiet: no summary or notes on standard error (errors still are)");
+    if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-convert", argc, argv)) return *exitCode;
     return rt::tool::run("rt-convert", [&] { return convert(o); });
 }
