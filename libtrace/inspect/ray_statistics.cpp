@@ -1,5 +1,7 @@
 #include "inspect/ray_statistics.h"
 
+#include <omp.h>
+
 #include "render/renderer.h"
 #include "render/tracer.h"
 
@@ -26,7 +28,7 @@ std::vector<float> pixelWork(const Scene& scene, const Accelerator& accel, const
     const Tracer tracer(scene, accel, traced);
     const int width = traced.width, height = traced.height;
     std::vector<float> work(std::size_t(width) * std::size_t(height));
-#pragma omp parallel for schedule(dynamic, 4)
+#pragma omp parallel for schedule(dynamic, 4) num_threads(traced.threads > 0 ? traced.threads : omp_get_max_threads())
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             RenderCounters counters;

@@ -12,3 +12,20 @@ expect_exit() {
     "$@" >"$WORK/stdout" 2>"$WORK/stderr" || got=$?
     [ "$got" = "$want" ] || { cat "$WORK/stderr" >&2; fail "'$*' exited $got, expected $want"; }
 }
+
+# need_shared_models: for a test that reads $RT_SHARED_DIR/models, which the repository does not
+# hold. Without them the test skips (exit 77, SKIP_RETURN_CODE in tests/CMakeLists.txt), or fails
+# when RT_REQUIRE_SHARED_MODELS=1 (CI, where they are present).
+need_shared_models() {
+    [ -d "$RT_SHARED_DIR/models" ] && return 0
+    local why="needs the shared test models, not found in $RT_SHARED_DIR/models: configure with -DRT_SHARED_DIR=/path/to/shared or put shared/ beside the checkout"
+    [ "${RT_REQUIRE_SHARED_MODELS:-0}" = 1 ] && fail "$why"
+    echo "SKIP: $why" >&2
+    exit 77
+}
+
+# expect_one_error TOOL TEXT: standard error is the one line "TOOL ERROR: ..." and contains TEXT.
+expect_one_error() {
+    [ "$(wc -l <"$WORK/stderr")" = 1 ] && grep -q "^$1 ERROR: .*$2" "$WORK/stderr" ||
+        fail "expected one line '$1 ERROR: ...$2...', got: $(cat "$WORK/stderr")"
+}

@@ -2,6 +2,7 @@
 # same name leaves only its own RAW files, and one that fails while writing (here: a file
 # size limit, as a full disk would) exits 1 and leaves the first scene byte for byte.
 source "$(dirname "$0")/common.bash"
+need_shared_models
 MODELS="$RT_SHARED_DIR/models"
 
 snapshot() { (cd "$WORK/out" && find . -type f -print0 | sort -z | xargs -0 md5sum); }

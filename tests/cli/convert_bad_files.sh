@@ -2,6 +2,7 @@
 # "rt-convert ERROR:" line, or 0 for the files docs/conversion.md lists as valid enough
 # (their faults lie in data rt does not use). Never a signal, never exit 1.
 source "$(dirname "$0")/common.bash"
+need_shared_models
 BAD="$RT_SHARED_DIR/models/bad"
 [ -d "$BAD" ] || fail "no $BAD"
 

@@ -1,8 +1,11 @@
-# Every model under shared/models/{gltf,glb,obj,3ds} converts: exit 0, a scene.xml, one RAW
-# file per model (the --json "models"), whose triangle counts (RAW header, appendix D) add up
-# to "modelTriangles"; instancing writes a mesh once (SharedMesh: 1 RAW for 2 instances,
-# 2CylinderEngine: 34 RAW for 115). -o - writes one XML with every model inline, and nothing else.
+# Every model of shared/models/MANIFEST.md under {gltf,glb,obj,3ds} converts: exit 0, a
+# scene.xml, one RAW file per model (the --json "models"), whose triangle counts (RAW header,
+# appendix D) add up to "modelTriangles"; with the degenerate triangles dropped they make the
+# manifest's count. The manifest lists every model file there is. Instancing writes a mesh
+# once (SharedMesh: 1 RAW for 2 instances, 2CylinderEngine: 34 RAW for 115). -o - writes one
+# XML with every model inline, and nothing else.
 source "$(dirname "$0")/common.bash"
+need_shared_models
 MODELS="$RT_SHARED_DIR/models"
 
 json_field() { sed -n "s/.*\"$1\": \([0-9]*\).*/\1/p" "$2"; }
@@ -19,23 +22,38 @@ raw_triangles() {
     echo "$total"
 }
 
+# manifest_models: "file triangles" for each row of the manifest's ground-truth tables in the
+# folders converted here: the file and Assimp's count of triangles in its mesh data.
+manifest_models() {
+    awk -F'|' 'NF > 14 && $2 ~ /^ `(gltf|glb|obj|3ds)\// && $5 ~ /^ [0-9]/ {
+        gsub(/[ `]/, "", $2); split($5, t, " "); print $2, t[1] }' "$MODELS/MANIFEST.md" | sort
+}
+model_files() {
+    find "$MODELS/gltf" "$MODELS/glb" "$MODELS/obj" "$MODELS/3ds" -type f \( -iname '*.gltf' -o -iname '*.glb' \
+        -o -iname '*.obj' -o -iname '*.3ds' -o -name testFormatDetection \) | sed "s|^$MODELS/||" | sort
+}
+missing=$(comm -3 <(manifest_models | cut -d' ' -f1) <(model_files))
+[ -z "$missing" ] || fail "model files and MANIFEST.md rows differ (left: only in the manifest, right: only on disk): $missing"
+
 count=0
-while IFS= read -r -d '' model; do
-    rel=${model#"$MODELS"/}
+while read -r rel triangles <&3; do
     out="$WORK/$count"
     mkdir -p "$out"
-    expect_exit 0 "$RT_CONVERT" "$model" -o "$out/scene.xml" --json
+    expect_exit 0 "$RT_CONVERT" "$MODELS/$rel" -o "$out/scene.xml" --json
     cp "$WORK/stdout" "$out/summary.json"
     [ -s "$out/scene.xml" ] || fail "$rel: no scene.xml"
     models=$(json_field models "$out/summary.json")
     [ "$(ls "$out/scene" | wc -l)" = "$models" ] || fail "$rel: $(ls "$out/scene" | wc -l) RAW files for $models models"
-    [ "$(raw_triangles "$out/scene")" = "$(json_field modelTriangles "$out/summary.json")" ] ||
-        fail "$rel: RAW triangles differ from the summary"
+    kept=$(json_field modelTriangles "$out/summary.json")
+    [ "$(raw_triangles "$out/scene")" = "$kept" ] || fail "$rel: RAW triangles differ from the summary"
+    dropped=$(json_field degenerate "$out/summary.json")
+    [ $((kept + dropped)) = "$triangles" ] ||
+        fail "$rel: $kept triangles kept and $dropped degenerate dropped, MANIFEST.md counts $triangles"
     grep -q "^rt-convert: .* -> $out/scene.xml" "$WORK/stderr" || fail "$rel: no summary on stderr"
+    rm -rf "$out"
     count=$((count + 1))
-done < <(find "$MODELS/gltf" "$MODELS/glb" "$MODELS/obj" "$MODELS/3ds" -type f \
-    \( -iname '*.gltf' -o -iname '*.glb' -o -iname '*.obj' -o -iname '*.3ds' -o -name testFormatDetection \) -print0 | sort -z)
-[ "$count" = 36 ] || fail "converted $count models, expected 36"
+done 3< <(manifest_models)
+[ "$count" -gt 0 ] || fail "no models in MANIFEST.md"
 
 # Instancing: one RAW per distinct mesh, however often it is placed.
 expect_exit 0 "$RT_CONVERT" "$MODELS/gltf/SharedMesh/02_shared_mesh.gltf" -o "$WORK/shared.xml" --json

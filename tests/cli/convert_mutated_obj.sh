@@ -3,6 +3,7 @@
 # "rt-convert ERROR:" line (exit 2), and never crashes, hangs or fails otherwise. The mutations
 # are drawn from a fixed seed, so a failure reproduces; the file that failed is kept.
 source "$(dirname "$0")/common.bash"
+need_shared_models
 MODELS="$RT_SHARED_DIR/models/obj"
 sources=(box/box.obj cube_usemtl/cube_usemtl.obj cornell_box-tinyobj/cornell_box.obj spd-teapot/teapot_s2.obj)
 replacements=(0 1 9 - + / . e E n f v " " $'\t' $'\r' $'\n' '#' x)

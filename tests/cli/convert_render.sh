@@ -7,6 +7,7 @@
 # rt-render reading the model file itself (converted in memory) renders the same picture.
 # Regenerate: RT_UPDATE_GOLDEN=1 ctest -R cli.convert_render, then look at the pictures.
 source "$(dirname "$0")/common.bash"
+need_shared_models
 MODELS="$RT_SHARED_DIR/models"
 GOLDEN="$RT_SOURCE_DIR/tests/golden"
 render() { "$RT_RENDER" "$1" -f "$2" -x 96 -y 72 -s -q; }

@@ -38,4 +38,26 @@ camera=$(green Avg "$WORK/camera.png" 0 0 120 90)
 all=$(green Avg "$WORK/all.png" 0 0 120 90)
 awk -v c="$camera" -v a="$all" 'BEGIN { exit !(a > c) }' || fail "all rays ($all) not warmer than camera rays ($camera)"
 expect_exit 2 "$RT_INSPECT" --heatmap "$WORK/x.png" --heatmap-rays some "$WORK/dense_left.xml"
+
+# A heat map is a PNG: another extension is refused before any work, as rt-render refuses
+# one it does not write; .PNG is a PNG.
+for name in heat.jpg heat.exr heat; do
+    expect_exit 2 "$RT_INSPECT" --heatmap "$WORK/$name" -x 32 -y 24 "$WORK/dense_left.xml"
+    expect_one_error rt-inspect "$WORK/$name: a heat map is a PNG"
+    [ ! -e "$WORK/$name" ] || fail "--heatmap $name wrote a file"
+done
+expect_exit 0 "$RT_INSPECT" --heatmap "$WORK/upper.PNG" -x 32 -y 24 "$WORK/dense_left.xml"
+iinfo "$WORK/upper.PNG" | grep -q "png" || fail "--heatmap upper.PNG is no PNG"
+
+# --threads as rt-render's: the same heat map and the same ray counts on one thread or two.
+for threads in 1 2; do
+    expect_exit 0 "$RT_INSPECT" --threads $threads --heatmap "$WORK/threads$threads.png" --heatmap-rays all -s \
+        --rays --json -x 64 -y 48 "$WORK/dense_left.xml"
+    cp "$WORK/stdout" "$WORK/threads$threads.json"
+done
+cmp -s "$WORK/threads1.png" "$WORK/threads2.png" || fail "--threads 1 and 2 give different heat maps"
+for key in cameraRays shadowRays traversalSteps intersectionTests; do
+    [ "$(json_number $key "$WORK/threads1.json")" = "$(json_number $key "$WORK/threads2.json")" ] ||
+        fail "--threads 1 and 2 count different $key"
+done
 echo "inspect_heatmap: ok"

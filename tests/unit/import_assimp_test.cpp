@@ -16,6 +16,7 @@ using test::sharedModels;
 using test::TempDir;
 
 TEST(ImportAssimp, TriangleCountsMatchTheManifest) {
+    SKIP_WITHOUT_SHARED_MODELS();
     const std::size_t files = test::expectManifestTriangleCounts({"3ds"}, [](const ImportResult& r) {
         EXPECT_EQ(r.scene.models.size(), r.scene.instances.size());  // 3DS files do not instance
     });
@@ -24,6 +25,7 @@ TEST(ImportAssimp, TriangleCountsMatchTheManifest) {
 
 // A 3DS camera lands where its node puts it, looking at its target; no camera is generated.
 TEST(ImportAssimp, ThreeDsCameraIsUsed) {
+    SKIP_WITHOUT_SHARED_MODELS();
     const ImportResult r = importScene(sharedModels() + "/3ds/TargetCameraAnim/TargetCameraAnim.3ds");
     EXPECT_EQ(r.report.camerasInFile, 1u);
     EXPECT_FALSE(r.report.cameraGenerated);
@@ -38,6 +40,7 @@ TEST(ImportAssimp, ThreeDsCameraIsUsed) {
 
 // Garbage whose keywords look like OBJ text, under a name without extension.
 TEST(ImportAssimp, ContentGuessesAreOnlyTrustedForBinaryFormats) {
+    SKIP_WITHOUT_SHARED_MODELS();
     EXPECT_THROW(
         importScene(sharedModels() + "/bad/assimp-fuzz/clusterfuzz-testcase-minimized-assimp_fuzzer-4751812606885888"),
         InputError);
@@ -47,6 +50,7 @@ TEST(ImportAssimp, ContentGuessesAreOnlyTrustedForBinaryFormats) {
 
 // Assimp's glTF importers are removed: a glTF JSON under another name is unknown, not parsed.
 TEST(ImportAssimp, AssimpNeverReadsGltf) {
+    SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     std::ifstream in(sharedModels() + "/gltf/Box/Box.gltf");
     const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -54,6 +58,7 @@ TEST(ImportAssimp, AssimpNeverReadsGltf) {
 }
 
 TEST(ImportAssimp, MissingAndEmptyFilesAreInputErrors) {
+    SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     EXPECT_THROW(importScene(dir.path("absent.ply")), InputError);
     EXPECT_THROW(importScene(dir.write("empty.ply", "")), InputError);

@@ -36,6 +36,7 @@ void expectSameTriangles(const Primitives& a, const Primitives& b) {
 class ImportRoundTrip : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ImportRoundTrip, WrittenAndReadBackIsTheSameScene) {
+    SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     ImportResult imported = importScene(sharedModels() + "/" + GetParam());
     saveSceneXml(imported.scene, dir.path("scene.xml"));
@@ -61,12 +62,14 @@ INSTANTIATE_TEST_SUITE_P(Models, ImportRoundTrip,
                                            "obj/CornellBox-Original/CornellBox-Original.obj", "3ds/jeep1/jeep1.3ds"));
 
 TEST(ImportLoadScene, ReadsModelFilesDirectly) {
+    SKIP_WITHOUT_SHARED_MODELS();
     const Scene scene = loadScene(sharedModels() + "/glb/2CylinderEngine/2CylinderEngine.glb");
     EXPECT_EQ(scene.primitives.triangleCount(), 121496u - scene.droppedDegenerate);
     EXPECT_FALSE(scene.warnings.empty());  // the generated light is reported
 }
 
 TEST(ImportLoadScene, ReadsXmlThroughTheSceneLoader) {
+    SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     saveSceneXml(importScene(sharedModels() + "/gltf/Box/Box.gltf").scene, dir.path("box.xml"));
     EXPECT_EQ(loadScene(dir.path("box.xml")).primitives.triangleCount(), 12u);

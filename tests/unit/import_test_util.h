@@ -50,6 +50,17 @@ inline std::map<std::string, ManifestCounts> manifestRows(const std::string& fol
     return rows;
 }
 
+// The manifest's count of model folders under `folder` (its first table). Each folder holds one
+// model with one row in the ground-truth tables, so that is how many rows manifestRows must find.
+inline std::size_t manifestModelFolders(const std::string& folder) {
+    std::ifstream in(sharedModels() + "/MANIFEST.md");
+    const std::string row = "| `" + folder + "/` | ";
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind(row, 0) == 0) return std::stoul(line.substr(row.size()));
+    ADD_FAILURE() << "MANIFEST.md lists no folder " << folder << "/";
+    return 0;
+}
+
 inline std::size_t modelTriangles(const Scene& scene) {
     std::size_t n = 0;
     for (const Model& m : scene.models) n += m.triangleCount();

@@ -23,6 +23,7 @@ TEST(SceneModelFile, FormatNames) {
 }
 
 TEST(SceneModelFile, ThreeDsTriangleCountsMatchTheManifest) {
+    SKIP_WITHOUT_SHARED_MODELS();
     // Assimp with aiProcess_Triangulate: MANIFEST.md "triangles (mesh data)"; every node places its meshes once.
     EXPECT_EQ(loadModelFile(kModels + "3ds/fels/fels.3ds", Model::Format::Max3ds).triangleCount(), 768u);
     EXPECT_EQ(loadModelFile(kModels + "3ds/test1/test1.3ds", Model::Format::Max3ds).triangleCount(), 108u);
@@ -36,6 +37,7 @@ TEST(SceneModelFile, ThreeDsTriangleCountsMatchTheManifest) {
 }
 
 TEST(SceneModelFile, BrokenThreeDsFilesAreInputErrors) {
+    SKIP_WITHOUT_SHARED_MODELS();
     for (const char* bad :
          {"bad/derived-3ds/fels_truncated_4096.3ds", "bad/derived-3ds/test1_bad_main_chunk_length.3ds",
           "bad/derived-3ds/random_bytes_named.3ds", "bad/assimp-invalid/empty.3ds"}) {

@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
 #include "core/vec3.h"
 
 // Tolerance that suits both the float and the double build.
@@ -13,3 +17,32 @@ inline void expectNear(const rt::Vec3& a, const rt::Vec3& b, rt::Real tol = kTol
     EXPECT_NEAR(a.y, b.y, tol) << a << " vs " << b;
     EXPECT_NEAR(a.z, b.z, tol) << a << " vs " << b;
 }
+
+namespace rt::test {
+
+// The shared test models are not part of the repository: RT_SHARED_DIR (set when CMake
+// configures, by default shared/ beside the checkout) may not hold them.
+inline bool sharedModelsPresent() { return std::filesystem::is_directory(RT_SHARED_DIR "/models"); }
+
+// RT_REQUIRE_SHARED_MODELS=1 (CI, where the models are present) turns the skip into a failure,
+// so that a wrong path cannot quietly skip half of the suite.
+inline bool sharedModelsRequired() {
+    const char* required = std::getenv("RT_REQUIRE_SHARED_MODELS");
+    return required && std::string(required) == "1";
+}
+
+inline std::string sharedModelsMissing() {
+    return "needs the shared test models, not found in " RT_SHARED_DIR
+           "/models: configure with -DRT_SHARED_DIR=/path/to/shared or put shared/ beside the checkout";
+}
+
+}  // namespace rt::test
+
+// First statement of a test that reads RT_SHARED_DIR/models: skips the test when they are absent.
+#define SKIP_WITHOUT_SHARED_MODELS()                                                           \
+    do {                                                                                       \
+        if (!rt::test::sharedModelsPresent()) {                                                \
+            if (rt::test::sharedModelsRequired()) FAIL() << rt::test::sharedModelsMissing();   \
+            GTEST_SKIP() << rt::test::sharedModelsMissing();                                   \
+        }                                                                                      \
+    } while (false)

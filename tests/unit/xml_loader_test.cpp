@@ -72,6 +72,7 @@ std::string errorOf(const std::string& xml) {
 }  // namespace
 
 TEST(XmlLoader, ThesisExampleLoadsAsWritten) {
+    SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     const std::string path = dir.write("ships.xml", replaced(kThesisExample, "SPACESHIP", kFels));
     const Scene scene = loadSceneXml(path);
@@ -311,6 +312,7 @@ TEST(XmlLoader, DegeneratePrimitivesAreDroppedAndCounted) {
 }
 
 TEST(XmlLoader, ThreeDsModelsBakeNodeTransforms) {
+    SKIP_WITHOUT_SHARED_MODELS();
     const Scene scene = load("<models><model name=\"j\" file=\"" RT_SHARED_DIR
                              "/models/3ds/jeep1/jeep1.3ds\"/></models>");
     EXPECT_EQ(scene.models.at(0).format, Model::Format::Max3ds);  // from the extension
@@ -413,6 +415,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, XmlLoaderBadInput, ::testing::ValuesIn(kBadScene
                          });
 
 TEST(XmlLoader, BadModelFilesGiveTheSceneLine) {
+    SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     dir.write("short.raw", std::string("raw3dS\x02\0\0\0", 10) + std::string(20, '\0'));
     const std::string path = dir.write("s.xml", sceneWith("<models>\n<model name=\"m\" file=\"short.raw\"/></models>"));

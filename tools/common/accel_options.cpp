@@ -1,5 +1,7 @@
 #include "accel_options.h"
 
+#include "command_line.h"
+
 namespace rt::tool {
 
 void addAccelOptions(CLI::App& app, AccelSettings& settings) {
@@ -7,25 +9,25 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
     BspSettings& bsp = settings.bsp;
     KdSettings& kd = settings.kd;
     app.add_option("--bsp-max-depth", bsp.maxDepth, "BSP: maximum depth")
-        ->check(CLI::Range(1, 64))->capture_default_str()->group(group);
+        ->check(numberIn(1, 64))->capture_default_str()->group(group);
     app.add_option("--bsp-min-prims", bsp.minPrimitives, "BSP: a node with at most this many primitives is a leaf")
-        ->check(CLI::Range(1, 1 << 20))->capture_default_str()->group(group);
+        ->check(numberIn(1, 1 << 20))->capture_default_str()->group(group);
     app.add_flag("--bsp-round-robin", bsp.roundRobin, "BSP: split X, Y, Z in turn instead of the longest axis")
         ->group(group);
     app.add_option("--kd-traversal-cost", kd.traversalCost, "KD: SAH cost of a traversal step")
-        ->check(CLI::PositiveNumber)->capture_default_str()->group(group);
+        ->check(positiveNumber())->capture_default_str()->group(group);
     app.add_option("--kd-intersection-cost", kd.intersectionCost, "KD: SAH cost of an intersection test")
-        ->check(CLI::PositiveNumber)->capture_default_str()->group(group);
+        ->check(positiveNumber())->capture_default_str()->group(group);
     app.add_option("--kd-empty-bonus", kd.emptyBonus, "KD: cost factor of splits cutting off empty space (1 = none)")
-        ->check(CLI::Range(0.0, 1.0))->capture_default_str()->group(group);
+        ->check(numberIn(0.0, 1.0))->capture_default_str()->group(group);
     app.add_option("--kd-max-depth", kd.maxDepth, "KD: maximum depth [default: 8 + 1.3 log2 N]")
-        ->check(CLI::Range(1, 64))->group(group);
+        ->check(numberIn(1, 64))->group(group);
     app.add_option_function<std::string>(
            "--kd-split", [&kd](const std::string& name) { kd.splitMethod = *parseKdSplitMethod(name); },
            "KD: split search: sweep (Wald-Havran, the default), sort or sample")
         ->check(CLI::IsMember({"sweep", "sort", "sample"}))->group(group);
     app.add_option("--kd-samples", kd.samples, "KD: candidate planes per axis for --kd-split sample")
-        ->check(CLI::Range(1, 1024))->capture_default_str()->group(group);
+        ->check(numberIn(1, 1024))->capture_default_str()->group(group);
 }
 
 }  // namespace rt::tool

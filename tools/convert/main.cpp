@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "command_line.h"
 #include "core/error.h"
 #include "import/import.h"
 #include "scene/thesis_scenes.h"
@@ -20,6 +21,7 @@ struct Options {
     std::string generate;
     std::string output;
     bool json = false;
+    bool quiet = false;
     rt::ImportOptions import;
     std::string upAxis;  // empty: the format's convention
 };
@@ -63,7 +65,7 @@ int convert(Options& o) {
         o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
     if (!o.output.empty()) writeScene(result.scene, o.output);
     const rt::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
-    rt::convert::printSummary(std::cerr, summary);
+    if (!o.quiet) rt::convert::printSummary(std::cerr, summary);
     if (o.json) rt::convert::printSummaryJson(std::cout, summary);
     return rt::tool::kExitOk;
 }
@@ -99,10 +101,7 @@ int main(int argc, char** argv) {
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")
         ->check(CLI::PositiveNumber);
     app.add_flag("--json", o.json, "Print the summary as JSON on standard output");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? rt::tool::kExitOk : rt::tool::kExitBadInput;
-    }
+    app.add_flag("-q,--quiet", o.quiet, "Quiet: no summary or notes on standard error (errors still are)");
+    if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-convert", argc, argv)) return *exitCode;
     return rt::tool::run("rt-convert", [&] { return convert(o); });
 }

@@ -9,6 +9,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "image/heatmap_png.h"
+#include "image/image_output.h"
 #include "inspect/leaf_boxes_obj.h"
 #include "inspect/tree_dump.h"
 #include "inspect/tree_report.h"
@@ -37,6 +38,9 @@ void checkOptions(const InspectOptions& o) {
         throw InputError("--dump with several trees needs a file (-f FILE); each tree gets its own");
     if (several && o.leavesPath == "-") throw InputError("--dump-leaves - (standard output) needs a single tree");
     if (o.heatmapPath == "-") throw InputError("--heatmap needs a file name; a PNG is not written to standard output");
+    // As rt-render, which refuses an extension it does not write rather than mislabel a file.
+    if (!o.heatmapPath.empty() && imageFormatFromPath(o.heatmapPath) != ImageFormat::Png)
+        throw InputError("--heatmap " + o.heatmapPath + ": a heat map is a PNG; give the file the extension .png");
     validate(o.picture);  // bounds the pixels, so the heat map cannot ask for more memory than a render
 }
 
@@ -128,7 +132,8 @@ int runInspection(const InspectOptions& o) {
     checkOptions(o);
     Scene scene = loadScene(o.scenePath);
     scene.dropDescription();
-    for (const std::string& w : scene.warnings) std::cerr << "rt-inspect: warning: " << w << '\n';
+    if (!o.quiet)
+        for (const std::string& w : scene.warnings) std::cerr << "rt-inspect: warning: " << w << '\n';
     const SceneSummary summary{o.scenePath == "-" ? "<stdin>" : o.scenePath, scene.primitives.triangleCount(),
                                scene.primitives.sphereCount(), std::uint32_t(scene.lights.size())};
 

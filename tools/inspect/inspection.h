@@ -19,8 +19,9 @@ struct InspectOptions {
     std::vector<AccelKind> trees;      // in the order they are reported
     AccelSettings accel;
     bool json = false;
+    bool quiet = false;                // -q: no warnings on standard error
     bool rays = false;
-    RenderSettings picture;            // whose rays --rays traces; its size is the heat map's
+    RenderSettings picture;            // whose rays --rays traces (on picture.threads); its size is the heat map's
     bool depthHistogram = false;
     std::string leavesPath;            // --dump-leaves
     std::string dumpFormat;            // "dot" or "json"; empty: no dump

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "accel_options.h"
+#include "command_line.h"
 #include "picture_options.h"
 #include "inspection.h"
 #include "tool.h"
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
     app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, or all (bsp and kd)")
         ->check(CLI::IsMember({"naive", "bsp", "kd", "all"}))->capture_default_str();
     app.add_flag("--json", o.json, "Print the statistics as one JSON document");
+    app.add_flag("-q,--quiet", o.quiet, "Quiet: no warnings or notes on standard error (errors still are)");
+    rt::tool::addThreadsOption(app, o.picture.threads);
 
     app.add_flag("--rays", o.rays, "Render the picture (options as rt-render's) and report the work per ray");
     rt::tool::addPictureOptions(app, o.picture);
@@ -53,11 +56,7 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber)->group(dumps);
     rt::tool::addAccelOptions(app, o.accel);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? rt::tool::kExitOk : rt::tool::kExitBadInput;
-    }
+    if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-inspect", argc, argv)) return *exitCode;
     o.trees = treesNamed(tree);
     o.cut.maxDepth = maxDepth;
     o.cut.nonEmptyOnly = leaves == "nonempty";

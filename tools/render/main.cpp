@@ -4,6 +4,7 @@
 
 #include "render_command.h"
 #include "accel_options.h"
+#include "command_line.h"
 #include "picture_options.h"
 #include "tool.h"
 
@@ -25,8 +26,7 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
         ->group(group);
     app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
         ->group(group);
-    app.add_option("--threads", o.render.threads, "Threads (default: all cores)")->check(CLI::NonNegativeNumber)
-        ->group(group);
+    rt::tool::addThreadsOption(app, o.render.threads)->group(group);
 }
 
 void addImageOptions(CLI::App& app, RenderOptions& o) {
@@ -73,11 +73,7 @@ int main(int argc, char** argv) {
     rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);
     addOtherOptions(app, options);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? rt::tool::kExitOk : rt::tool::kExitBadInput;
-    }
+    if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-render", argc, argv)) return *exitCode;
     options.accel.kind = *rt::parseAccelKind(accelName);
     return rt::tool::run("rt-render", [&] { return rt::render_tool::runRender(options); });
 }

@@ -1,0 +1,36 @@
+# A bad command line gives one line "tool ERROR: what is wrong" and exit 2, in every tool: a
+# value that is no number says so, a range reads as one, and an unknown option is named
+# before anything else (a missing scene or input, a bad value).
+source "$(dirname "$0")/common.bash"
+SCENE="$RT_SOURCE_DIR/scenes/demo.xml"
+
+for tool in "$RT_RENDER" "$RT_INSPECT"; do
+    name=$(basename "$tool")
+    expect_exit 2 "$tool" "$SCENE" -x abc
+    expect_one_error "$name" "--width: abc is not a number"
+    expect_exit 2 "$tool" "$SCENE" -x 1.5
+    expect_one_error "$name" "--width: 1.5 is not a whole number"
+    expect_exit 2 "$tool" "$SCENE" -y 0
+    expect_one_error "$name" "--height: 0 is not in 1-65536"
+    # --threads: 0 (every core) up to a bound; a negative count is no huge number.
+    expect_exit 2 "$tool" "$SCENE" --threads -1
+    expect_one_error "$name" "--threads: -1 is not in 0-1024"
+    expect_exit 2 "$tool" "$SCENE" --threads 1025
+    expect_one_error "$name" "--threads: 1025 is not in 0-1024"
+    expect_exit 2 "$tool" "$SCENE" --kd-traversal-cost -2
+    expect_one_error "$name" "--kd-traversal-cost: -2 is not a positive number"
+done
+
+for tool in "$RT_RENDER" "$RT_INSPECT" "$RT_CONVERT"; do
+    name=$(basename "$tool")
+    # An unknown option is the first thing to fix, with or without the scene or input.
+    expect_exit 2 "$tool" --no-such-option
+    expect_one_error "$name" "not expected: --no-such-option"
+    expect_exit 2 "$tool" --no-such-option "$SCENE"
+    expect_one_error "$name" "not expected: --no-such-option"
+    expect_exit 2 "$tool"
+    expect_one_error "$name" "is required"
+done
+expect_exit 2 "$RT_RENDER" "$SCENE" -x abc --no-such-option
+expect_one_error rt-render "not expected: --no-such-option"
+echo "tools_option_errors: ok"

@@ -1,0 +1,39 @@
+#include "command_line.h"
+
+#include <cmath>
+
+#include "tool.h"
+
+namespace rt::tool {
+
+std::optional<int> parseCommandLine(CLI::App& app, const std::string& toolName, int argc, char** argv) {
+    app.failure_message(
+        [toolName](const CLI::App*, const CLI::Error& e) { return toolName + " ERROR: " + e.what() + "\n"; });
+    try {
+        app.parse(argc, argv);
+        return std::nullopt;
+    } catch (const CLI::ParseError& e) {
+        // CLI11 checks required arguments and values before it looks at what is left over.
+        const bool isError = e.get_exit_code() != int(CLI::ExitCodes::Success);
+        const int code = isError && !app.remaining().empty() ? app.exit(CLI::ExtrasError(app.remaining())) : app.exit(e);
+        return code == 0 ? kExitOk : kExitBadInput;
+    }
+}
+
+CLI::Validator positiveNumber() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            double value = 0;
+            if (!CLI::detail::lexical_cast(text, value)) return text + " is not a number";
+            if (!(value > 0 && std::isfinite(value))) return text + " is not a positive number";
+            return {};
+        },
+        "POSITIVE");
+}
+
+CLI::Option* addThreadsOption(CLI::App& app, int& threads) {
+    return app.add_option("--threads", threads, "Threads (default 0: all cores)")
+        ->check(numberIn(0, kMaxThreads));
+}
+
+}  // namespace rt::tool

@@ -1,0 +1,48 @@
+// The command-line conventions the rt tools share: parse errors in one line, in the order a
+// user should fix them, and numbers checked with messages that say what is wrong
+// ("abc is not a number", "-1 is not in 0-1024"), where CLI11's Range says "not in range"
+// for both and prints the limits of double in full.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace rt::tool {
+
+// Parses the command line. Returns the exit code when the tool must stop (0 after --help or
+// --version, 2 after a parse error, printed as "tool ERROR: what"), nothing when it runs.
+// An unknown argument is reported before anything else: "--treads 2" is a typo, and a
+// missing scene or a bad value reported instead of it would send the user the wrong way.
+std::optional<int> parseCommandLine(CLI::App& app, const std::string& toolName, int argc, char** argv);
+
+// A validator for a number from `lowest` to `highest` (inclusive) that T holds.
+template <class T>
+CLI::Validator numberIn(T lowest, T highest) {
+    std::ostringstream range;
+    range << lowest << "-" << highest;
+    return CLI::Validator(
+        [=, range = range.str()](std::string& text) -> std::string {
+            double number = 0;
+            T value{};
+            if (!CLI::detail::lexical_cast(text, number)) return text + " is not a number";
+            if (!(number >= double(lowest) && number <= double(highest))) return text + " is not in " + range;
+            if (!CLI::detail::lexical_cast(text, value)) return text + " is not a whole number";
+            return {};
+        },
+        CLI::Range(lowest, highest).get_description());
+}
+
+// A validator for a finite number above zero.
+CLI::Validator positiveNumber();
+
+// The most threads --threads accepts: far beyond any machine rt runs on, small enough that a
+// typo (a negative number read as huge) is caught instead of starting thousands of threads.
+constexpr int kMaxThreads = 1024;
+
+// --threads N (0, the default, lets OpenMP use every core), checked as 0 to kMaxThreads.
+CLI::Option* addThreadsOption(CLI::App& app, int& threads);
+
+}  // namespace rt::tool
