@@ -67,6 +67,8 @@ Real largestSymmetricEigenvalue(const Real (&s)[3][3]) {
     const Real q = (s[0][0] + s[1][1] + s[2][2]) / 3;
     const Real a = s[0][0] - q, b = s[1][1] - q, c = s[2][2] - q;
     const Real p = std::sqrt((a * a + b * b + c * c + 2 * offDiagonal) / 6);
+    // S is qI to within rounding (a rotation in float): p^3 underflows, and q + 2p bounds every eigenvalue.
+    if (!(p * p * p > 0)) return q + 2 * p;
     // det(S - qI) / (2 p^3), clamped: rounding can push it just outside [-1, 1].
     const Real det = a * (b * c - s[1][2] * s[1][2]) - s[0][1] * (s[0][1] * c - s[1][2] * s[0][2]) +
                      s[0][2] * (s[0][1] * s[1][2] - b * s[0][2]);

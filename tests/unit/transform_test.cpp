@@ -111,3 +111,12 @@ TEST(Transform, MaxScaleOfAShearIsTheGoldenRatio) {
     shear[0][1] = 1;
     EXPECT_NEAR(Transform(shear).maxScale(), (1 + std::sqrt(Real(5))) / 2, kTol);
 }
+
+TEST(Transform, MaxScaleOfQuarterTurnsIsOne) {
+    // A^T A is the identity up to cos(90 degrees) rounding: in float its spread about the mean
+    // is so small that its cube underflows, which once gave NaN.
+    const Real quarter = kPi / 2;
+    EXPECT_NEAR((Transform::rotateY(quarter) * Transform::rotateX(quarter)).maxScale(), 1, kTol);
+    EXPECT_NEAR((Transform::rotateZ(quarter) * Transform::rotateY(quarter) * Transform::rotateX(quarter)).maxScale(), 1,
+                kTol);
+}
