@@ -1,5 +1,6 @@
 #include "core/transform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -54,6 +55,25 @@ Matrix rotation(int axis, Real radians) {
     m[j][i] = s;
     m[j][j] = c;
     return m;
+}
+
+
+// The largest eigenvalue of a symmetric 3x3 matrix in closed form (Smith 1961, "Eigenvalues of a
+// symmetric 3x3 matrix"): the eigenvalues are q + 2p cos(phi + 2 pi k / 3), where q is the mean of
+// the diagonal, p the spread about it and phi a third of the angle whose cosine is det(S - qI)/(2p^3).
+Real largestSymmetricEigenvalue(const Real (&s)[3][3]) {
+    const Real offDiagonal = s[0][1] * s[0][1] + s[0][2] * s[0][2] + s[1][2] * s[1][2];
+    if (offDiagonal == 0) return std::max({s[0][0], s[1][1], s[2][2]});  // already diagonal
+    const Real q = (s[0][0] + s[1][1] + s[2][2]) / 3;
+    const Real a = s[0][0] - q, b = s[1][1] - q, c = s[2][2] - q;
+    const Real p = std::sqrt((a * a + b * b + c * c + 2 * offDiagonal) / 6);
+    // S is qI to within rounding (a rotation in float): p^3 underflows, and q + 2p bounds every eigenvalue.
+    if (!(p * p * p > 0)) return q + 2 * p;
+    // det(S - qI) / (2 p^3), clamped: rounding can push it just outside [-1, 1].
+    const Real det = a * (b * c - s[1][2] * s[1][2]) - s[0][1] * (s[0][1] * c - s[1][2] * s[0][2]) +
+                     s[0][2] * (s[0][1] * s[1][2] - b * s[0][2]);
+    const Real r = std::clamp(det / (2 * p * p * p), Real(-1), Real(1));
+    return q + 2 * p * std::cos(std::acos(r) / 3);
 }
 
 }  // namespace
@@ -113,14 +133,14 @@ Transform Transform::inverse() const { return {inv_, m_}; }
 
 bool Transform::isIdentity() const { return m_ == identityMatrix(); }
 
+// The largest singular value of the linear part A: the square root of the largest eigenvalue
+// of the symmetric matrix A^T A. Lengths of the axis images alone are not enough: rotating by
+// 45 degrees and then scaling x by 2 stretches no axis by more than 1.58, but the diagonal by 2.
 Real Transform::maxScale() const {
-    Real best = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        Vec3 e;
-        e[axis] = 1;
-        best = std::max(best, length(vector(e)));
-    }
-    return best;
+    Real s[3][3];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s[i][j] = m_[0][i] * m_[0][j] + m_[1][i] * m_[1][j] + m_[2][i] * m_[2][j];
+    return std::sqrt(largestSymmetricEigenvalue(s));
 }
 
 }  // namespace rt

@@ -35,7 +35,8 @@ public:
     Transform inverse() const;
     const Matrix& matrix() const { return m_; }
     bool isIdentity() const;
-    // Largest factor by which the transform stretches a length (for sphere radii).
+    // Largest factor by which the transform stretches a length, in any direction: the largest
+    // singular value of its 3x3 part (for sphere radii).
     Real maxScale() const;
     bool operator==(const Transform& o) const { return m_ == o.m_; }
 

@@ -46,6 +46,12 @@ inline Vec3 min(const Vec3& a, const Vec3& b) {
 inline Vec3 max(const Vec3& a, const Vec3& b) {
     return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
+// Unit length to within the rounding that normalising and mirroring leave: what the sphere test
+// and the Phong model require of their directions (checked by assert in debug builds).
+inline bool isUnitLength(const Vec3& a) {
+    constexpr Real tolerance = sizeof(Real) == sizeof(float) ? Real(1e-4) : Real(1e-9);
+    return std::abs(dot(a, a) - 1) <= tolerance;
+}
 inline bool isFinite(const Vec3& a) {
     return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }

@@ -1,6 +1,7 @@
 // Sphere primitive: centre and radius, stored flat in Primitives::spheres.
 #pragma once
 
+#include <cassert>
 #include <cmath>
 
 #include "core/aabb.h"
@@ -16,7 +17,10 @@ struct Sphere {
         const Vec3 r{radius, radius, radius};
         return {center - r, center + r};
     }
-    Vec3 normal(const Vec3& point) const { return (point - center) / radius; }
+    // Unit outward normal at a point on the surface. Normalised rather than divided by the
+    // radius: a computed hit point lies off a small sphere by rounding, and a normal that is
+    // not unit would make reflected directions that are not unit either (see intersectSphere).
+    Vec3 normal(const Vec3& point) const { return normalize(point - center); }
     bool degenerate() const { return !(radius > 0) || !std::isfinite(radius) || !isFinite(center); }
 };
 
@@ -25,6 +29,7 @@ struct Sphere {
 // is why the thesis prefers it to the algebraic form. From inside the sphere the far
 // intersection is returned. A hit with 0 < t < tMax sets t and returns true.
 inline bool intersectSphere(const Sphere& s, const Ray& ray, Real tMax, Real& t) {
+    assert(isUnitLength(ray.direction));
     const Vec3 l = s.center - ray.origin;
     const Real tca = dot(l, ray.direction);  // distance to the point closest to the centre
     const Real l2 = dot(l, l);

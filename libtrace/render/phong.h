@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "core/color.h"
@@ -17,6 +18,7 @@ namespace rt {
 // n: unit normal facing the viewer; toLight, toViewer: unit vectors from the surface point.
 inline Color phongLight(const Material& m, const Vec3& n, const Vec3& toLight, const Vec3& toViewer,
                         const Color& lightColor) {
+    assert(isUnitLength(n) && isUnitLength(toLight) && isUnitLength(toViewer));  // else (R.V)^n is unbounded
     const Real cosine = dot(n, toLight);
     if (cosine <= 0) return {};
     Color c = lightColor * m.color * (m.diffuse * float(cosine));
@@ -33,6 +35,10 @@ inline Color phongLight(const Material& m, const Vec3& n, const Vec3& toLight, c
 inline Color phongAmbient(const Material& m, const Color& ambientLight) { return ambientLight * m.color * m.ambient; }
 
 // The mirror direction of a unit direction d about the unit normal n (thesis 2.1.3, b = a - 2(a.n)n).
-inline Vec3 mirror(const Vec3& d, const Vec3& n) { return d - n * (2 * dot(d, n)); }
+// The result is unit only if both are: |b|^2 = |a|^2 + 4 (a.n)^2 (|n|^2 - 1).
+inline Vec3 mirror(const Vec3& d, const Vec3& n) {
+    assert(isUnitLength(d) && isUnitLength(n));
+    return d - n * (2 * dot(d, n));
+}
 
 }  // namespace rt

@@ -2,18 +2,40 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "accel/accelerator.h"
 
 namespace rt {
 
+// Camera samples whose colour came out NaN or infinite. Each is replaced by black (0, 0, 0),
+// so that no non-finite value reaches an image, and counted here so that it is never replaced
+// silently. The first such pixel in scan order (row by row) is kept for the warning: it is the
+// same for any thread count and block order.
+struct NonFiniteSamples {
+    std::uint64_t count = 0;
+    int firstX = 0, firstY = 0;  // meaningful when count > 0
+
+    void add(int x, int y) { *this += {1, x, y}; }
+    NonFiniteSamples& operator+=(const NonFiniteSamples& o) {
+        if (o.count > 0 && (count == 0 || std::pair(o.firstY, o.firstX) < std::pair(firstY, firstX))) {
+            firstX = o.firstX;
+            firstY = o.firstY;
+        }
+        count += o.count;
+        return *this;
+    }
+};
+
 // The rays the renderer shot, by kind, each with the accelerator's work for it (traversal
-// steps, ray-primitive tests): what rt-render's statistics and rt-inspect --rays report.
+// steps, ray-primitive tests), and the samples that had to be replaced: what rt-render's
+// statistics and rt-inspect --rays report.
 // Each thread counts in its own copy; the copies are summed at the end.
 struct RenderCounters {
     RayCounters camera;      // the thesis's primary rays, -S per pixel
     RayCounters shadow;      // towards each light in front of a hit (a bundle for a soft shadow)
     RayCounters reflection;  // mirror and glossy rays, at any depth
+    NonFiniteSamples nonFinite;
 
     RayCounters total() const {
         RayCounters t = camera;
@@ -26,6 +48,7 @@ struct RenderCounters {
         camera += o.camera;
         shadow += o.shadow;
         reflection += o.reflection;
+        nonFinite += o.nonFinite;
         return *this;
     }
 };

@@ -22,7 +22,8 @@ constexpr int kBlockSize = 32;  // the thesis found 32x32 best; larger blocks ga
 using RenderProgress = std::function<void(std::uint64_t samplesDone, std::uint64_t samplesTotal)>;
 
 // Renders settings.window() of the scene. Fills the render part of `stats` (render time,
-// rays, tests, objects, lights, threads); preprocessing time and tree nodes are the caller's.
+// rays, tests, non-finite samples written as black, objects, lights, threads); preprocessing
+// time and tree nodes are the caller's.
 // Throws rt::InputError for bad settings or a degenerate camera.
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
                    const RenderProgress& progress = {});

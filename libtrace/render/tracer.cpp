@@ -38,6 +38,8 @@ Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
     return c + t * (radius * std::cos(angle)) + b * (radius * std::sin(angle));
 }
 
+bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
+
 }  // namespace
 
 Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings)
@@ -54,7 +56,11 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters) const {
         Real sx = Real(0.5), sy = Real(0.5);
         if (n > 1) jitteredGridSample(i, n, rng, sx, sy);
         ++counters.camera.rays;
-        sum += trace(camera_.at(Real(x) + sx, Real(y) + sy), 0, false, rng, counters);
+        const Color sample = trace(camera_.at(Real(x) + sx, Real(y) + sy), 0, false, rng, counters);
+        if (isFinite(sample))
+            sum += sample;
+        else
+            counters.nonFinite.add(x, y);  // counts as black, and the tool says so
     }
     return n == 1 ? sum : sum * (1.0f / float(n));
 }

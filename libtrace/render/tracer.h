@@ -22,7 +22,8 @@ public:
     // The scene must be flattened and `accel` built over scene.primitives; both must outlive the tracer.
     Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings);
 
-    // The linear colour of pixel (x, y): the mean of its camera samples.
+    // The linear colour of pixel (x, y): the mean of its camera samples. A sample that comes
+    // out NaN or infinite counts as black and is recorded in counters.nonFinite.
     Color pixel(int x, int y, RenderCounters& counters) const;
 
     // The colour seen along a ray that has already been reflected `depth` times.

@@ -1,6 +1,8 @@
 // Ray-sphere (thesis 2.1.2) and ray-triangle (Moller-Trumbore) against hand-computed hits.
 #include "geometry/primitives.h"
 
+#include <limits>
+
 #include "test_util.h"
 
 using namespace rt;
@@ -16,6 +18,28 @@ TEST(Sphere, HitFromOutside) {
     EXPECT_NEAR(t, 4, kTol);
     const Vec3 p = Ray{{0, 0, -5}, {0, 0, 1}}.at(t);
     expectNear(kUnitSphere.normal(p), {0, 0, -1});
+}
+
+TEST(Sphere, NormalsAreUnitOnSmallSpheresFarFromTheOrigin) {
+    // A computed hit point lies off the surface by the rounding of its coordinates, which far
+    // from the origin is large beside a radius of 0.006 (the balls scene's smallest): dividing
+    // by the radius instead of normalising gave normals up to 2.4 long after a few bounces.
+    const Real unitRounding = 8 * std::numeric_limits<Real>::epsilon();
+    for (const Vec3 centre : {Vec3{40, -25, 60}, Vec3{Real(1.3), Real(0.7), Real(-0.4)}, Vec3{-300, 150, 20}}) {
+        const Sphere s{centre, Real(0.006)};
+        for (int i = 0; i < 200; ++i) {
+            // Rays from 0.05 away towards points spread over the sphere, aimed at 0.9 of its radius.
+            const Real a = Real(0.1) * Real(i), b = Real(0.37) * Real(i);
+            const Vec3 from = centre + Vec3{std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)} * Real(0.05);
+            const Vec3 aim = centre + Vec3{std::sin(b), std::cos(a), std::sin(a)} * Real(0.9 * 0.006 / std::sqrt(2.0));
+            const Ray ray{from, normalize(aim - from)};
+            Real t = 0;
+            ASSERT_TRUE(intersectSphere(s, ray, kInfinity, t)) << centre << " ray " << i;
+            const Vec3 n = s.normal(ray.at(t));
+            EXPECT_NEAR(length(n), 1, unitRounding) << centre << " ray " << i;
+            EXPECT_GT(dot(n, -ray.direction), 0) << centre << " ray " << i;  // faces the ray that came from outside
+        }
+    }
 }
 
 TEST(Sphere, OffCentreHit) {

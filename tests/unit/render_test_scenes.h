@@ -2,9 +2,18 @@
 // so that they need neither the XML loader nor files.
 #pragma once
 
+#include "render/render_settings.h"
 #include "scene/scene.h"
 
 namespace rt::test {
+
+// Default render settings for a picture of the given size.
+inline RenderSettings picture(int width, int height) {
+    RenderSettings r;
+    r.width = width;
+    r.height = height;
+    return r;
+}
 
 inline std::uint32_t addMaterial(Scene& s, Material m) {
     s.materials.push_back(std::move(m));

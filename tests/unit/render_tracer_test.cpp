@@ -26,19 +26,12 @@ Scene litSphere() {
     return s;
 }
 
-RenderSettings small(int w, int h) {
-    RenderSettings r;
-    r.width = w;
-    r.height = h;
-    return r;
-}
-
 }  // namespace
 
 TEST(Tracer, MissesShowTheBackground) {
     const Scene s = litSphere();
     const NaiveAccelerator accel(s.primitives);
-    const Tracer tracer(s, accel, small(64, 64));
+    const Tracer tracer(s, accel, test::picture(64, 64));
     RenderCounters c;
     EXPECT_EQ(tracer.pixel(0, 0, c), s.background);
     EXPECT_EQ(c.camera.rays, 1u);
@@ -48,7 +41,7 @@ TEST(Tracer, MissesShowTheBackground) {
 TEST(Tracer, CentreOfALitSphereIsAmbientPlusLambert) {
     const Scene s = litSphere();
     const NaiveAccelerator accel(s.primitives);
-    RenderSettings settings = small(64, 64);
+    RenderSettings settings = test::picture(64, 64);
     settings.shadows = true;
     const Tracer tracer(s, accel, settings);
     RenderCounters c;
@@ -72,7 +65,7 @@ TEST(Tracer, ShadowsDarkenTheFloorUnderASphere) {
     s.lights.push_back({{0, 8, 0}, {1, 1, 1}, 0});
     s.flatten();
     const NaiveAccelerator accel(s.primitives);
-    RenderSettings settings = small(8, 8);
+    RenderSettings settings = test::picture(8, 8);
     const Tracer unshadowed(s, accel, settings);
     settings.shadows = true;
     const Tracer shadowed(s, accel, settings);
@@ -99,7 +92,7 @@ TEST(Tracer, SoftShadowsGiveAPenumbra) {
     s.lights.push_back({{0, 8, 0}, {1, 1, 1}, 1});
     s.flatten();
     const NaiveAccelerator accel(s.primitives);
-    RenderSettings settings = small(8, 8);
+    RenderSettings settings = test::picture(8, 8);
     settings.shadows = true;
     const Ray down{{Real(8) / 3, 0.5, 0}, {0, -1, 0}};
     SampleRng rng{0, 0, 0};
@@ -123,7 +116,7 @@ TEST(Tracer, GlossyReflectionsSpreadAroundTheMirrorDirection) {
     Scene sharpScene = s;
     for (Material& m : sharpScene.materials) m.spread = 0;
     const NaiveAccelerator accel(s.primitives);  // the same geometry serves both
-    RenderSettings settings = small(64, 48);
+    RenderSettings settings = test::picture(64, 48);
     settings.maxDepth = 2;
     settings.glossyReflections = true;
     settings.distributedSamples = 16;
@@ -151,7 +144,7 @@ TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
     s.flatten();
     const NaiveAccelerator accel(s.primitives);
     for (int depth : {1, 3, 10}) {
-        RenderSettings settings = small(8, 6);
+        RenderSettings settings = test::picture(8, 6);
         settings.maxDepth = depth;
         RenderStats stats;
         render(s, accel, settings, stats);
@@ -167,7 +160,7 @@ TEST(Tracer, EpsilonScalesWithTheScene) {
     b.looseObjects.addSphere({{1000, 0, 0}, 1}, 0);
     b.flatten();
     const NaiveAccelerator accelA(a.primitives), accelB(b.primitives);
-    const Tracer ta(a, accelA, small(4, 4)), tb(b, accelB, small(4, 4));
+    const Tracer ta(a, accelA, test::picture(4, 4)), tb(b, accelB, test::picture(4, 4));
     EXPECT_GT(ta.epsilon(), 0);
     EXPECT_GT(tb.epsilon(), 100 * ta.epsilon());
 }

@@ -119,6 +119,7 @@ int runRender(RenderOptions o) {
         const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
                                  stats.renderSeconds};
         writeImage(image, output, meta);
+        std::cerr << nonFiniteWarning(stats);  // even with -q: a replaced sample is never silent
     }
 
     if (!o.quiet) {

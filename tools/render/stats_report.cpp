@@ -26,7 +26,19 @@ std::string jsonString(const std::string& s) {
     return out + '"';
 }
 
+std::string firstNonFinitePixel(const NonFiniteSamples& n) {
+    return n.count ? format("[%d, %d]", n.firstX, n.firstY) : "null";
+}
+
 }  // namespace
+
+std::string nonFiniteWarning(const RenderStats& s) {
+    const NonFiniteSamples& n = s.counters.nonFinite;
+    if (!n.count) return {};
+    return format("rt-render: warning: %llu non-finite (NaN or infinite) samples, first at pixel (%d, %d); "
+                  "written as black (0, 0, 0)\n",
+                  static_cast<unsigned long long>(n.count), n.firstX, n.firstY);
+}
 
 std::string thesisStatsLine(const RenderStats& s) {
     return format("%.2f %.2f %llu %llu %llu %.2f", s.preprocessSeconds, s.renderSeconds,
@@ -58,6 +70,8 @@ std::string statsJson(const std::string& scene, const RenderSettings& settings, 
       << "  \"intersectionTests\": " << c.total().intersectionTests << ",\n"
       << "  \"traversalSteps\": " << c.total().traversalSteps << ",\n"
       << "  \"testsPerRay\": " << s.testsPerRay() << ",\n"
+      << "  \"nonFiniteSamples\": " << c.nonFinite.count << ",\n"
+      << "  \"firstNonFinitePixel\": " << firstNonFinitePixel(c.nonFinite) << ",\n"
       << "  \"raysPerSecond\": " << s.raysPerSecond() << "\n}\n";
     return o.str();
 }

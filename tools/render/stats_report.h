@@ -17,6 +17,10 @@ std::string thesisStatsLine(const RenderStats& stats);
 std::string statsJson(const std::string& scene, const RenderSettings& settings, const AccelStats& accel,
                       const RenderStats& stats);
 
+// One warning line for standard error if some samples came out NaN or infinite (written as
+// black), else nothing.
+std::string nonFiniteWarning(const RenderStats& stats);
+
 // Two or three lines for standard error.
 std::string statsSummary(const RenderSettings& settings, const AccelStats& accel, const RenderStats& stats,
                          bool rendered);
