@@ -17,37 +17,12 @@
 #include <vector>
 
 #include "accel/build.h"
+#include "bench_scenes.h"
 #include "render/camera_rays.h"
-#include "scene/generate.h"
 
 using namespace rt;
 
 namespace {
-
-const std::map<std::string, SceneRecipe>& recipes() {
-    static const std::map<std::string, SceneRecipe> all = {
-        {"tri10k", {10000, 0, Placement::Uniform, 1}},
-        {"tri100k", {100000, 0, Placement::Uniform, 1}},
-        {"tri1M", {1000000, 0, Placement::Uniform, 1}},
-        {"spheres100k", {0, 100000, Placement::Clustered, 1}},
-        {"stadium100k", {100000, 0, Placement::Clustered, 1}},
-    };
-    return all;
-}
-
-// "Teapot in a stadium": the clustered triangles on a floor 100 units wide, so that the
-// scene's box is mostly empty, like the thesis's uneven scenes (Table 4.2, "tree"),
-// where middle planes spend most of the BSP's depth limit on empty space.
-Scene makeScene(const std::string& name) {
-    Scene scene = generateScene(recipes().at(name));
-    if (name == "stadium100k") {
-        constexpr Real kHalf = 50, kFloor = Real(-1.2);
-        scene.looseObjects.addTriangle({{-kHalf, kFloor, -kHalf}, {kHalf, kFloor, kHalf}, {kHalf, kFloor, -kHalf}}, 0);
-        scene.looseObjects.addTriangle({{-kHalf, kFloor, -kHalf}, {-kHalf, kFloor, kHalf}, {kHalf, kFloor, kHalf}}, 0);
-        scene.flatten();
-    }
-    return scene;
-}
 
 AccelSettings settingsFor(const std::string& variant) {
     AccelSettings s;
@@ -75,7 +50,7 @@ Fixture& fixture(const std::string& sceneName) {
     auto& f = fixtures[sceneName];
     if (f) return *f;
     f = std::make_unique<Fixture>();
-    f->scene = makeScene(sceneName);
+    f->scene = bench::generatedScene(sceneName);
     const CameraRays camera(f->scene.camera, 800, 600);
     for (int y = 0; y < 600; ++y)
         for (int x = 0; x < 800; ++x) f->cameraRays.push_back(camera.at(Real(x) + Real(0.5), Real(y) + Real(0.5)));

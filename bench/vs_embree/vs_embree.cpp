@@ -1,0 +1,355 @@
+// rt's KD tree against Intel Embree 3 on the same scenes and the same rays (issue 14).
+//
+//   build/release/bench/vs_embree            all scenes, about 5 minutes on 2 cores
+//   build/release/bench/vs_embree --quick    two small scenes, one pass: a smoke test
+//
+// Scenes: the five thesis scenes (rt::thesisScene), 10k/100k/1M uniform random triangles
+// and the "teapot in a stadium" (bench_scenes.h). Rays, all made once with rt's KD tree:
+// the 480,000 camera rays of an 800x600 view, one per pixel through its centre; a shadow
+// ray from each visible point to each light it faces, and a mirror reflection ray from
+// each visible point, both made as rt-render's Tracer makes them (offset off the surface
+// by Tracer::epsilon). Every surface is treated as a mirror, so that every scene has a
+// set of incoherent reflection rays.
+//
+// Both sides trace single rays on this one thread (rt: Accelerator::intersect/occluded;
+// Embree: rtcIntersect1/rtcOccluded1), and Embree also traces the camera rays as packets
+// of 8 neighbouring pixels (4x2, rtcIntersect8). Rays per second are per thread CPU
+// second, the best of several passes taken in turn, so that other processes on a busy
+// machine disturb the ratio little. Builds run on 2 threads (rt: OpenMP; Embree:
+// RTC_BUILD_QUALITY_HIGH with threads=2) and are timed on the wall clock.
+//
+// Agreement: a ray agrees when both miss, or both hit the same primitive at distances
+// within kRelativeTolerance of the hit point's distance from the world origin (Embree sees
+// the rays and triangles rounded to float, whose error grows with the coordinates), or,
+// for shadow rays, both say occluded or both say not. Disagreeing rays are counted per set and the first
+// few are listed on stderr; more than kMaxDisagreement of a set fails the run (exit 1).
+// The tables go to stdout as Markdown.
+#include <CLI/CLI.hpp>
+#include <omp.h>
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "accel/kdtree.h"
+#include "bench_scenes.h"
+#include "embree_scene.h"
+#include "render/camera_rays.h"
+#include "render/phong.h"
+#include "render/tracer.h"
+#include "scene/thesis_scenes.h"
+
+using namespace rt;
+using rt::bench::EmbreeScene;
+using rt::bench::kPacketSize;
+
+namespace {
+
+constexpr int kWidth = 800, kHeight = 600;
+constexpr int kBuildThreads = 2;
+constexpr int kBuilds = 2;  // per scene and side; the best counts
+constexpr double kRelativeTolerance = 1e-5;
+constexpr int kListedDisagreements = 5;  // per ray set, on stderr
+// More disagreeing rays than this fraction of a set fails the run (exit 1): edge and
+// grazing hits, where float and double round to different sides, stay well below it.
+constexpr double kMaxDisagreement = 1e-4;
+
+// ---- Scenes and rays
+
+Scene loadScene(const std::string& name) {
+    const auto& generated = bench::generatedRecipes();
+    return generated.count(name) ? bench::generatedScene(name) : thesisScene(name);
+}
+
+struct RaySet {
+    std::string name;  // camera, shadow, reflection
+    bool anyHit = false;  // shadow rays ask only whether something is closer than tMax
+    std::vector<Ray> rays;
+    std::vector<Real> tMax;
+
+    void add(const Ray& ray, Real t) {
+        rays.push_back(ray);
+        tMax.push_back(t);
+    }
+};
+
+// One ray per pixel, in 4x2 tiles so that each run of 8 rays is one rtcIntersect8 packet.
+RaySet cameraRays(const Scene& scene) {
+    static_assert(kPacketSize == 8 && kWidth % 4 == 0 && kHeight % 2 == 0);
+    const CameraRays camera(scene.camera, kWidth, kHeight);
+    RaySet set{"camera", false, {}, {}};
+    for (int y0 = 0; y0 < kHeight; y0 += 2)
+        for (int x0 = 0; x0 < kWidth; x0 += 4)
+            for (int i = 0; i < kPacketSize; ++i)
+                set.add(camera.at(Real(x0 + i % 4) + Real(0.5), Real(y0 + i / 4) + Real(0.5)), kInfinity);
+    return set;
+}
+
+// The shadow and reflection rays leaving the camera rays' nearest hits, made as
+// Tracer::shade, visibility and reflection make them for point lights and mirrors.
+void addSecondaryRays(const Scene& scene, const Accelerator& kd, const RaySet& camera, RaySet& shadow,
+                      RaySet& reflection) {
+    const Real epsilon = Tracer(scene, kd, RenderSettings{}).epsilon();
+    RayCounters counters;
+    for (const Ray& ray : camera.rays) {
+        Hit hit;
+        if (!kd.intersect(ray, kInfinity, hit, counters)) continue;
+        const Vec3 p = ray.at(hit.t);
+        Vec3 n = scene.primitives.normal(hit.prim, p);
+        if (dot(n, ray.direction) > 0) n = -n;
+        const Vec3 origin = p + n * epsilon;
+        for (const Light& light : scene.lights) {
+            if (dot(n, light.position - p) <= 0) continue;  // the light is behind the surface
+            const Vec3 d = light.position - origin;
+            const Real distance = length(d);
+            shadow.add({origin, d / distance}, distance);
+        }
+        reflection.add({origin, mirror(ray.direction, n)}, kInfinity);
+    }
+}
+
+// ---- Tracing
+
+struct Answers {
+    std::vector<Hit> hits;
+    std::vector<char> found;  // hit (or, for shadow rays, occluded)
+};
+
+using TraceAll = std::function<void(const RaySet&, Answers&)>;
+
+TraceAll traceRt(const Accelerator& kd) {
+    return [&kd](const RaySet& set, Answers& out) {
+        RayCounters counters;
+        for (std::size_t i = 0; i < set.rays.size(); ++i) {
+            if (set.anyHit) {
+                out.found[i] = kd.occluded(set.rays[i], set.tMax[i], counters);
+            } else {
+                Hit hit;
+                out.found[i] = kd.intersect(set.rays[i], set.tMax[i], hit, counters);
+                out.hits[i] = hit;
+            }
+        }
+    };
+}
+
+TraceAll traceEmbree(const EmbreeScene& embree) {
+    return [&embree](const RaySet& set, Answers& out) {
+        for (std::size_t i = 0; i < set.rays.size(); ++i) {
+            if (set.anyHit) {
+                out.found[i] = embree.occluded(set.rays[i], set.tMax[i]);
+            } else {
+                Hit hit;
+                out.found[i] = embree.intersect(set.rays[i], set.tMax[i], hit);
+                out.hits[i] = hit;
+            }
+        }
+    };
+}
+
+// Camera rays only: they are unbounded and come in whole packets.
+TraceAll traceEmbree8(const EmbreeScene& embree) {
+    return [&embree](const RaySet& set, Answers& out) {
+        bool found[kPacketSize];
+        for (std::size_t i = 0; i < set.rays.size(); i += kPacketSize) {
+            embree.intersect8(&set.rays[i], &out.hits[i], found);
+            std::copy(found, found + kPacketSize, &out.found[i]);
+        }
+    };
+}
+
+double threadCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// The best time of each tracer over `passes` passes, taken in turn; `answers` keeps the last pass's results.
+std::vector<double> bestSeconds(const std::vector<TraceAll>& tracers, const RaySet& set, int passes,
+                                std::vector<Answers>& answers) {
+    std::vector<double> best(tracers.size(), std::numeric_limits<double>::infinity());
+    answers.assign(tracers.size(), {std::vector<Hit>(set.rays.size()), std::vector<char>(set.rays.size())});
+    for (int pass = 0; pass < passes; ++pass) {
+        for (std::size_t k = 0; k < tracers.size(); ++k) {
+            const double start = threadCpuSeconds();
+            tracers[k](set, answers[k]);
+            best[k] = std::min(best[k], threadCpuSeconds() - start);
+        }
+    }
+    return best;
+}
+
+// ---- Agreement
+
+bool agree(const RaySet& set, const Answers& a, const Answers& b, std::size_t i) {
+    if (a.found[i] != b.found[i]) return false;
+    if (set.anyHit || !a.found[i]) return true;
+    const Hit &x = a.hits[i], &y = b.hits[i];
+    const Ray& r = set.rays[i];
+    const Real scale = std::max({std::abs(r.origin.x), std::abs(r.origin.y), std::abs(r.origin.z)}) + std::max(x.t, y.t);
+    return x.prim == y.prim && std::abs(x.t - y.t) <= kRelativeTolerance * scale;
+}
+
+std::size_t countDisagreements(const std::string& scene, const std::string& tracer, const RaySet& set,
+                               const Answers& rtAnswers, const Answers& other) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < set.rays.size(); ++i) {
+        if (agree(set, rtAnswers, other, i)) continue;
+        if (++count > kListedDisagreements) continue;
+        const Hit &x = rtAnswers.hits[i], &y = other.hits[i];
+        const Ray& r = set.rays[i];
+        std::fprintf(stderr,
+                     "  differ %s %s %s ray %zu (o %.9g %.9g %.9g, d %.9g %.9g %.9g): rt %s prim %u t %.9g u %.3g v %.3g, "
+                     "Embree %s prim %u t %.9g u %.3g v %.3g\n",
+                     scene.c_str(), set.name.c_str(), tracer.c_str(), i, double(r.origin.x), double(r.origin.y),
+                     double(r.origin.z), double(r.direction.x), double(r.direction.y), double(r.direction.z),
+                     rtAnswers.found[i] ? "hit" : "miss", x.prim, double(x.t), double(x.u), double(x.v),
+                     other.found[i] ? "hit" : "miss", y.prim, double(y.t), double(y.u), double(y.v));
+    }
+    return count;
+}
+
+// ---- Report
+
+std::string rate(double perSecond) {
+    char text[32];
+    if (perSecond >= 1e6) std::snprintf(text, sizeof text, "%.2fM", perSecond / 1e6);
+    else std::snprintf(text, sizeof text, "%.0fk", perSecond / 1e3);
+    return text;
+}
+
+std::string fixed(double value, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return text;
+}
+
+std::string count(std::size_t n) {
+    return n >= 1000000 ? fixed(double(n) / 1e6, 2) + "M" : n >= 1000 ? fixed(double(n) / 1e3, 1) + "k" : std::to_string(n);
+}
+
+std::string disagreement(std::size_t differ, std::size_t rays) {
+    return std::to_string(differ) + " (" + fixed(100.0 * double(differ) / double(std::max<std::size_t>(rays, 1)), 3) +
+           " %)";
+}
+
+struct SceneReport {
+    std::vector<std::string> rayRows;
+    std::string buildRow;
+    bool agreed = true;  // every ray set within kMaxDisagreement
+};
+
+// One row of the ray table for a set: rt single rays, Embree single rays, Embree packets (camera only).
+std::string measureSet(const std::string& scene, std::size_t prims, const RaySet& set, const Accelerator& kd,
+                       const EmbreeScene& embree, int passes, bool& agreed) {
+    std::vector<TraceAll> tracers = {traceRt(kd), traceEmbree(embree)};
+    const bool packets = set.name == "camera";
+    if (packets) tracers.push_back(traceEmbree8(embree));
+    std::vector<Answers> answers;
+    const std::vector<double> seconds = bestSeconds(tracers, set, passes, answers);
+    const double n = double(set.rays.size());
+    std::string row = "| " + scene + " | " + count(prims) + " | " + set.name + " | " + count(set.rays.size()) + " | " +
+                      rate(n / seconds[0]) + " | " + rate(n / seconds[1]) + " | " + fixed(seconds[1] / seconds[0], 2) +
+                      " | ";
+    std::size_t differ = countDisagreements(scene, set.anyHit ? "rtcOccluded1" : "rtcIntersect1", set, answers[0], answers[1]);
+    if (packets) {
+        row += rate(n / seconds[2]) + " | " + fixed(seconds[2] / seconds[0], 2) + " | ";
+        differ = std::max(differ, countDisagreements(scene, "rtcIntersect8", set, answers[0], answers[2]));
+    } else {
+        row += "- | - | ";
+    }
+    agreed = agreed && double(differ) <= kMaxDisagreement * n;
+    return row + disagreement(differ, set.rays.size()) + " |";
+}
+
+template <class F>
+double wallSeconds(F&& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+SceneReport measureScene(const std::string& name, int passes) {
+    std::cerr << "vs_embree: " << name << ": generating\n";
+    const Scene scene = loadScene(name);
+    const Primitives& prims = scene.primitives;
+    std::cerr << "vs_embree: " << name << ": building (" << prims.size() << " primitives)\n";
+    std::unique_ptr<Accelerator> kd;
+    // The best of kBuilds builds: the first may pay for starting threads.
+    double kdSeconds = std::numeric_limits<double>::infinity(), embreeSeconds = kdSeconds;
+    std::unique_ptr<EmbreeScene> embreeScene;
+    for (int b = 0; b < kBuilds; ++b) {
+        kd.reset();
+        embreeScene.reset();
+        kdSeconds = std::min(kdSeconds, wallSeconds([&] { kd = buildKdTree(prims, KdSettings{}); }));
+        embreeScene = std::make_unique<EmbreeScene>(prims, kBuildThreads);
+        embreeSeconds = std::min(embreeSeconds, embreeScene->buildSeconds());
+    }
+    const EmbreeScene& embree = *embreeScene;
+
+    RaySet camera = cameraRays(scene), shadow{"shadow", true, {}, {}}, reflection{"reflection", false, {}, {}};
+    addSecondaryRays(scene, *kd, camera, shadow, reflection);
+    SceneReport report;
+    for (const RaySet* set : {&camera, &shadow, &reflection}) {
+        std::cerr << "vs_embree: " << name << ": " << set->rays.size() << " " << set->name << " rays\n";
+        report.rayRows.push_back(measureSet(name, prims.size(), *set, *kd, embree, passes, report.agreed));
+    }
+    const double n = double(prims.size());
+    const double geometryBytes = double(prims.triangleCount() * sizeof(Triangle) + prims.sphereCount() * sizeof(Sphere));
+    report.buildRow = "| " + name + " | " + count(prims.size()) + " | " + fixed(kdSeconds * 1e3, 0) + " ms | " +
+                      fixed(embreeSeconds * 1e3, 0) + " ms | " + fixed(kdSeconds / embreeSeconds, 2) +
+                      " | " + fixed(double(kd->stats().memoryBytes) / n, 1) + " + " + fixed(geometryBytes / n, 1) +
+                      " | " + fixed(double(embree.memoryBytes()) / n, 1) + " |";
+    return report;
+}
+
+void printTables(const std::vector<SceneReport>& reports) {
+    std::cout << "\n### Rays per second, one thread (rt / Embree > 1: rt is faster)\n\n"
+              << "| Scene | Primitives | Rays | Count | rt KD | Embree 1 | rt / Embree 1 | Embree 8 | rt / Embree 8 "
+                 "| Differ |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const SceneReport& r : reports)
+        for (const std::string& row : r.rayRows) std::cout << row << "\n";
+    std::cout << "\n### Builds on " << kBuildThreads
+              << " threads and memory (rt / Embree > 1: rt takes longer)\n\n"
+                 "| Scene | Primitives | rt KD build | Embree build | rt / Embree | rt bytes/prim (tree + geometry) "
+                 "| Embree bytes/prim |\n|---|---|---|---|---|---|---|\n";
+    for (const SceneReport& r : reports) std::cout << r.buildRow << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"rt's KD tree against Intel Embree 3: the same scenes and rays, rays per second and build times"};
+    std::vector<std::string> scenes = {"balls", "balls2",  "ships", "tree",       "pyramid5",
+                                       "tri10k", "tri100k", "tri1M", "stadium100k"};
+    int passes = 3;
+    bool quick = false;
+    app.add_option("--scenes", scenes, "Scenes to measure (thesis scenes and tri10k, tri100k, tri1M, stadium100k)");
+    app.add_option("--passes", passes, "Timed passes over each ray set; the best counts")->check(CLI::Range(1, 100));
+    app.add_flag("--quick", quick, "Smoke test: ships and tri10k, one pass");
+    CLI11_PARSE(app, argc, argv);
+    if (quick) scenes = {"ships", "tri10k"}, passes = 1;
+
+    omp_set_num_threads(kBuildThreads);
+    std::vector<SceneReport> reports;
+    try {
+        for (const std::string& name : scenes) reports.push_back(measureScene(name, passes));
+    } catch (const std::exception& e) {
+        std::cerr << "vs_embree ERROR: " << e.what() << "\n";
+        return 1;
+    }
+    std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
+              << kHeight << ", best of " << passes << " passes\n";
+    printTables(reports);
+    if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
+    std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement
+              << " % of a ray set (the first rays are listed above)\n";
+    return 1;
+}
