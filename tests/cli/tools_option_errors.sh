@@ -33,6 +33,13 @@ for tool in "$RT_RENDER" "$RT_INSPECT" "$RT_CONVERT"; do
     if [ "$name" = rt-convert ]; then expect_one_error "$name" "give either a model file or --generate NAME"
     else expect_one_error "$name" "is required"; fi
 done
+# rt-convert's numbers read the same way.
+expect_exit 2 "$RT_CONVERT" --generate ships --scale abc
+expect_one_error rt-convert "--scale: abc is not a number"
+expect_exit 2 "$RT_CONVERT" --generate ships --aspect -1
+expect_one_error rt-convert "--aspect: -1 is not a positive number"
+expect_exit 2 "$RT_CONVERT" --generate ships --scene -1
+expect_one_error rt-convert "--scene: -1 is not in 0-1073741824"
 expect_exit 2 "$RT_RENDER" "$SCENE" -x abc --no-such-option
 expect_one_error rt-render "not expected: --no-such-option"
 echo "tools_option_errors: ok"

@@ -87,19 +87,19 @@ int main(int argc, char** argv) {
                    "Scene file to write, .xml (RAW models go in a folder named after it), or - for standard "
                    "output with the geometry inline");
     app.add_option("--scene", o.import.scene, "glTF scene index (default: the file's default scene)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(rt::tool::numberIn(0, 1 << 30));
     app.add_option("--camera", o.import.camera,
                    "Camera to use, by name or index (default: the first); auto: ignore the file's cameras and "
                    "frame the scene");
     app.add_option("--scale", o.import.scale, "Uniform scale applied at the root, e.g. 0.01 for centimetres")
-        ->check(CLI::PositiveNumber);
+        ->check(rt::tool::positiveNumber());
     app.add_option("--up-axis", o.upAxis,
                    "The file's up axis as its author knows it (3DS, FBX, CAD: usually z); the model is turned to "
                    "stand in rt's Y-up world (default: the format's convention, docs/conversion.md)")
         ->check(CLI::IsMember({"y", "z"}));
     app.add_option("--aspect", o.import.aspect,
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")
-        ->check(CLI::PositiveNumber);
+        ->check(rt::tool::positiveNumber());
     app.add_flag("--json", o.json, "Print the summary as JSON on standard output");
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no summary or notes on standard error (errors still are)");
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-convert", argc, argv)) return *exitCode;
