@@ -3,8 +3,8 @@
 # box (before, Assimp's values gave a camera at twice its position looking straight up: an
 # empty picture). --camera auto ignores the file's camera and frames the scene.
 source "$(dirname "$0")/common.bash"
+need_shared_models
 MODELS="$RT_SHARED_DIR/models/3ds"
-[ -d "$MODELS" ] || fail "no $MODELS"
 
 for name in TargetCameraAnim CameraRollAnim; do
     model="$MODELS/$name/$name.3ds"

@@ -89,12 +89,19 @@ void expectCameraFromChunk(const ChunkCamera& expected) {
     EXPECT_NEAR(*c.fovDegrees, floatFromHex("00003442"), 1e-4);  // the camera's own FOV key
 }
 
-TEST(Import3dsCamera, TargetCameraIsTheFilesCameraChunk) { expectCameraFromChunk(kTargetCamera); }
+TEST(Import3dsCamera, TargetCameraIsTheFilesCameraChunk) {
+    SKIP_WITHOUT_SHARED_MODELS();
+    expectCameraFromChunk(kTargetCamera);
+}
 
-TEST(Import3dsCamera, RollCameraIsTheFilesCameraChunk) { expectCameraFromChunk(kRollCamera); }
+TEST(Import3dsCamera, RollCameraIsTheFilesCameraChunk) {
+    SKIP_WITHOUT_SHARED_MODELS();
+    expectCameraFromChunk(kRollCamera);
+}
 
 // The model is in view: the view cone of the horizontal fov meets the model's bounding sphere.
 TEST(Import3dsCamera, CameraLooksTowardsTheModel) {
+    SKIP_WITHOUT_SHARED_MODELS();
     for (const ChunkCamera* file : {&kTargetCamera, &kRollCamera}) {
         const ImportResult r = importScene(sharedModels() + "/" + file->file);
         SCOPED_TRACE(file->file);
@@ -110,6 +117,7 @@ TEST(Import3dsCamera, CameraLooksTowardsTheModel) {
 }
 
 TEST(Import3dsCamera, AutoIgnoresTheFilesCameras) {
+    SKIP_WITHOUT_SHARED_MODELS();
     ImportOptions o;
     o.camera = kFramingCamera;
     const ImportResult r = importScene(sharedModels() + "/" + kTargetCamera.file, o);
