@@ -8,6 +8,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/real.h"
 #include "version.h"
@@ -42,6 +43,7 @@ void checkStandardOutput() {
 }  // namespace
 
 int run(const std::string& toolName, const std::function<int()>& body) {
+    removeTemporariesOnSignals();
     try {
         const int status = body();
         checkStandardOutput();
