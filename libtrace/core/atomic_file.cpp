@@ -1,8 +1,14 @@
 #include "core/atomic_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <climits>
+#include <cstdint>
 
 #include <atomic>
 #include <cerrno>
@@ -74,6 +80,112 @@ void removeStaleTemporaries(const std::string& path) {
     }
 }
 
+// ---- Temporaries removed on SIGINT and SIGTERM -------------------------------------------
+// A fixed table the signal handler can read without locks or allocation: each slot holds the
+// path of a temporary file or folder this process is writing now.
+enum class LiveKind : int { Free, Claimed, File, Folder };  // Claimed: the path is being copied in
+static_assert(std::atomic<LiveKind>::is_always_lock_free, "the signal handler reads it");
+struct LiveSlot {
+    std::atomic<LiveKind> kind{LiveKind::Free};
+    char path[PATH_MAX] = {};
+};
+LiveSlot liveTemporaries[16];
+
+// Registers a temporary for the lifetime of this object. If the table is full or the path too
+// long, the temporary is simply not removed on a signal (the next run removes it as stale).
+class LiveTemporary {
+public:
+    LiveTemporary(const std::string& path, LiveKind kind) {
+        if (path.size() >= PATH_MAX) return;
+        for (LiveSlot& s : liveTemporaries) {
+            LiveKind expected = LiveKind::Free;
+            if (!s.kind.compare_exchange_strong(expected, LiveKind::Claimed)) continue;
+            std::memcpy(s.path, path.c_str(), path.size() + 1);
+            s.kind.store(kind);  // published whole: the handler never sees half a path
+            slot_ = &s;
+            return;
+        }
+    }
+    ~LiveTemporary() {
+        if (slot_) slot_->kind.store(LiveKind::Free);
+    }
+    LiveTemporary(const LiveTemporary&) = delete;
+    LiveTemporary& operator=(const LiveTemporary&) = delete;
+
+private:
+    LiveSlot* slot_ = nullptr;
+};
+
+// Async-signal-safe: only open, getdents64, unlinkat and close. A temporary folder holds
+// files only (RAW models and their own temporaries).
+void removeFilesInHandler(const char* folder) {
+    const int fd = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    alignas(dirent64) char buffer[4096];
+    for (ssize_t n; (n = ::getdents64(fd, buffer, sizeof buffer)) > 0;)
+        for (ssize_t at = 0; at < n;) {
+            const auto* entry = reinterpret_cast<const dirent64*>(buffer + at);
+            ::unlinkat(fd, entry->d_name, 0);  // "." and ".." fail harmlessly
+            at += entry->d_reclen;
+        }
+    ::close(fd);
+}
+
+void removeFolderInHandler(const char* folder) {
+    // Another pass if removing entries while reading the folder skipped some.
+    for (int pass = 0; pass < 3 && ::rmdir(folder) != 0 && errno == ENOTEMPTY; ++pass) removeFilesInHandler(folder);
+}
+
+extern "C" void removeLiveTemporariesAndDie(int signal) {
+    const int savedErrno = errno;
+    for (LiveSlot& s : liveTemporaries) {
+        const LiveKind kind = s.kind.load();
+        if (kind == LiveKind::File) ::unlink(s.path);
+        if (kind == LiveKind::Folder) removeFolderInHandler(s.path);
+    }
+    errno = savedErrno;
+    // SA_RESETHAND restored the default action: the signal, pending until this handler
+    // returns, then ends the process as it would have (exit status 128+N in a shell).
+    ::raise(signal);
+}
+
+// ---- Checked writes --------------------------------------------------------------------
+
+std::runtime_error cannotWrite(const std::string& path, int error) {
+    return std::runtime_error(path + ": cannot write" + (error ? std::string(": ") + std::strerror(error) : ""));
+}
+
+// Devices, FIFOs and sockets are written in place: renaming a file over them would replace
+// /dev/null with a regular file, and a FIFO's reader would get nothing.
+bool isSpecialFile(const std::string& path) {
+    struct stat st {};
+    return path != "-" && ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
+// Calls write(out), flushes and checks every byte went out; throws naming `name` if not.
+void writeStream(std::ostream& out, const std::string& name, const std::function<void(std::ostream&)>& write) {
+    if (!out) throw cannotWrite(name, errno);
+    errno = 0;
+    write(out);
+    out.flush();
+    if (!out) throw cannotWrite(name, errno);
+}
+
+// Makes a written temporary durable before it is renamed into place, and checks that it holds
+// what was written: some writers (OpenImageIO's PNG) do not report a full disk themselves.
+void syncTemporary(const std::string& path, const std::string& temp, std::optional<std::uintmax_t> expectedSize) {
+    const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw cannotWrite(path, errno);
+    struct stat st {};
+    const bool ok = ::fsync(fd) == 0 && ::fstat(fd, &st) == 0;
+    const int error = errno;
+    ::close(fd);
+    if (!ok) throw cannotWrite(path, error);
+    if (expectedSize && std::uintmax_t(st.st_size) != *expectedSize)
+        throw std::runtime_error(path + ": cannot write: only " + std::to_string(st.st_size) + " of " +
+                                 std::to_string(*expectedSize) + " bytes reached the disk");
+}
+
 // Test hook, for tests/cli/render_atomic.sh only: $RT_TEST_WRITE_DELAY_MS keeps the written
 // temporary that many milliseconds before it is renamed, so a test can kill a process mid-write.
 void testWriteDelay() {
@@ -82,14 +194,86 @@ void testWriteDelay() {
 }
 
 void renameOver(const std::string& from, const std::string& to) {
-    if (std::rename(from.c_str(), to.c_str()) != 0) {
-        const std::string why = std::strerror(errno);
-        std::remove(from.c_str());
-        throw std::runtime_error(to + ": cannot write: " + why);
+    if (std::rename(from.c_str(), to.c_str()) != 0) throw cannotWrite(to, errno);
+}
+
+// The common path of every file output: write(temp) fills a temporary beside `path` and returns
+// its expected size if it knows it; the temporary is synced, checked and renamed over `path`.
+// Whatever fails, the temporary is removed and `path` is untouched.
+void publishThroughTemporary(const std::string& path,
+                             const std::function<std::optional<std::uintmax_t>(const std::string&)>& write) {
+    removeStaleTemporaries(path);
+    const std::string temp = temporaryPathFor(path);
+    const LiveTemporary live(temp, LiveKind::File);
+    try {
+        syncTemporary(path, temp, write(temp));
+        testWriteDelay();
+        renameOver(temp, path);
+    } catch (...) {
+        std::remove(temp.c_str());
+        throw;
+    }
+}
+
+// Holds an exclusive flock on `folder` (a directory) while it lives: writers publishing into
+// the same folder take turns, and no lock file is left behind.
+class FolderLock {
+public:
+    explicit FolderLock(const fs::path& folder, const std::string& target) {
+        fd_ = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd_ < 0 || ::flock(fd_, LOCK_EX) != 0) {
+            const int error = errno;
+            if (fd_ >= 0) ::close(fd_);
+            throw cannotWrite(target, error);
+        }
+    }
+    ~FolderLock() { ::close(fd_); }  // closing releases the lock
+    FolderLock(const FolderLock&) = delete;
+    FolderLock& operator=(const FolderLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+// Puts `temp` in the place of `folder`; afterwards `temp` holds the old contents (or nothing).
+// RENAME_EXCHANGE swaps both at once, so `folder` is never missing, even if the process is
+// killed; file systems without it get two renames through `aside`.
+void exchangeFolders(const fs::path& temp, const fs::path& folder, const fs::path& aside) {
+    std::error_code ec;
+    if (!fs::exists(folder, ec)) return fs::rename(temp, folder);
+    if (::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, folder.c_str(), RENAME_EXCHANGE) == 0) return;
+    const std::error_code error(errno, std::generic_category());
+    if (error != std::errc::invalid_argument && error != std::errc::function_not_supported)
+        throw fs::filesystem_error("rename", temp, folder, error);
+    fs::rename(folder, aside);
+    fs::rename(temp, folder);
+    fs::rename(aside, temp);
+}
+
+// Undoes exchangeFolders when the file that goes with the folder could not be renamed.
+void putTheOldFolderBack(const fs::path& temp, const fs::path& folder) noexcept {
+    std::error_code ec;
+    try {
+        if (fs::exists(temp, ec)) exchangeFolders(temp, folder, temporaryPathFor(folder.string()));
+        else fs::rename(folder, temp, ec);  // there was none: remove the new one with the temporary
+    } catch (const fs::filesystem_error&) {  // nothing more can be done; the caller reports the first failure
     }
 }
 
 }  // namespace
+
+void removeTemporariesOnSignals() {
+    struct sigaction action {};
+    action.sa_handler = removeLiveTemporariesAndDie;
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    for (int signal : {SIGINT, SIGTERM}) {
+        struct sigaction previous {};
+        // An ignored signal stays ignored (nohup, a background job of a script).
+        if (sigaction(signal, nullptr, &previous) == 0 && previous.sa_handler != SIG_IGN)
+            sigaction(signal, &action, nullptr);
+    }
+}
 
 void checkNotDirectory(const std::string& path) {
     std::error_code ec;
@@ -100,82 +284,73 @@ void checkNotDirectory(const std::string& path) {
 void prepareOutputFile(const std::string& path) {
     if (path == "-") return;
     checkNotDirectory(path);
+    if (isSpecialFile(path)) {  // written in place: it must be writable itself
+        if (::access(path.c_str(), W_OK) != 0) throw InputError(path + ": cannot write: " + std::strerror(errno));
+        return;
+    }
     std::error_code ec;
     const fs::path folder = fs::path(path).parent_path();
     if (!folder.empty() && !fs::is_directory(folder, ec) && !fs::create_directories(folder, ec) && ec)
         throw InputError(path + ": cannot create the folder " + folder.string() + ": " + ec.message());
     const std::string probe = temporaryPathFor(path);
-    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+    const LiveTemporary live(probe, LiveKind::File);
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd < 0) throw InputError(path + ": cannot write: " + std::strerror(errno));
     ::close(fd);
     std::remove(probe.c_str());
 }
 
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
-    if (path == "-") {
-        write(std::cout);
-        std::cout.flush();
-        if (!std::cout) throw std::runtime_error("cannot write to standard output");
-        return;
+    if (path == "-") return writeStream(std::cout, "standard output", write);
+    if (isSpecialFile(path)) {
+        std::ofstream out(path, std::ios::binary);
+        return writeStream(out, path, write);
     }
-    commitFileAtomically(path, [&](const std::string& temp) {
+    publishThroughTemporary(path, [&](const std::string& temp) -> std::optional<std::uintmax_t> {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-        write(out);
-        out.flush();
-        return bool(out);
+        writeStream(out, path, write);
+        const std::streamoff size = out.tellp();
+        out.close();
+        if (out.fail()) throw cannotWrite(path, errno);
+        return std::uintmax_t(size);
     });
 }
 
-void commitFileAtomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
+void commitFileAndFolderAtomically(const std::string& path, const std::string& folder,
+                                   const std::function<bool(const std::string&, const std::string&)>& write) {
     removeStaleTemporaries(path);
-    const std::string temp = temporaryPathFor(path);
-    bool ok = false;
-    try {
-        ok = write(temp);
-    } catch (...) {
-        std::remove(temp.c_str());
-        throw;
-    }
-    if (!ok) {
-        std::remove(temp.c_str());
-        throw std::runtime_error(path + ": cannot write");
-    }
-    testWriteDelay();
-    renameOver(temp, path);
-}
-
-void commitFolderAtomically(const std::string& folder, const std::function<bool(const std::string&)>& write) {
     removeStaleTemporaries(folder);
     std::error_code ec;
-    const bool exists = fs::exists(folder, ec);
-    if (exists && !fs::is_directory(folder, ec))
+    if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
         throw std::runtime_error(folder + ": cannot write: it exists and is not a folder");
-    const fs::path temp = temporaryPathFor(folder), old = temporaryPathFor(folder);
-    if (!fs::create_directories(temp, ec))
-        throw std::runtime_error(folder + ": cannot write: " + (ec ? ec.message() : "the temporary folder exists"));
-    bool ok = false;
+    const std::string temp = temporaryPathFor(path), tempFolder = temporaryPathFor(folder);
+    const LiveTemporary liveFile(temp, LiveKind::File), liveFolder(tempFolder, LiveKind::Folder);
     try {
-        ok = write(temp.string());
+        if (!fs::create_directories(tempFolder, ec))
+            throw cannotWrite(folder, ec ? ec.value() : EEXIST);
+        if (!write(temp, tempFolder)) throw cannotWrite(path, 0);
+        syncTemporary(path, temp, std::nullopt);
+        testWriteDelay();
+        // Published as one unit: writers of the same scene take turns here, so each one's
+        // file is renamed right after its own folder, never beside another run's half.
+        const FolderLock lock(fs::path(path).parent_path(), path);
+        exchangeFolders(tempFolder, folder, temporaryPathFor(folder));
+        try {
+            renameOver(temp, path);
+        } catch (...) {
+            putTheOldFolderBack(tempFolder, folder);
+            throw;
+        }
+    } catch (const fs::filesystem_error& e) {
+        std::remove(temp.c_str());
+        removeQuietly(tempFolder);
+        throw cannotWrite(folder, e.code().value());
     } catch (...) {
-        removeQuietly(temp);
+        std::remove(temp.c_str());
+        removeQuietly(tempFolder);
         throw;
     }
-    if (!ok) {
-        removeQuietly(temp);
-        throw std::runtime_error(folder + ": cannot write");
-    }
-    // Two renames: the old folder out of the way, the new one in. Between them `folder`
-    // is briefly missing; a failure of the second puts the old one back.
-    if (exists) fs::rename(folder, old, ec);
-    if (!ec) fs::rename(temp, folder, ec);
-    if (ec) {
-        const std::string why = ec.message();
-        if (exists) fs::rename(old, folder, ec);
-        removeQuietly(temp);
-        throw std::runtime_error(folder + ": cannot write: " + why);
-    }
-    removeQuietly(old);
+    removeQuietly(tempFolder);  // now the old folder
 }
 
 }  // namespace rt

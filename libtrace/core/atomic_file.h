@@ -1,11 +1,16 @@
 // Writes that either happen completely or not at all: the data goes to a temporary
-// file beside the target, which is renamed over it only once everything is written.
-// A failed or interrupted write leaves an existing file untouched and no partial file.
-// The path "-" means standard output (written directly: a pipe cannot be atomic).
+// file beside the target, which is renamed over it only once everything is written, flushed,
+// synced to the disk (fsync) and checked for size. A failed or interrupted write (a full disk,
+// SIGINT, SIGTERM) leaves an existing file untouched and no partial file.
+// The path "-" means standard output, and a target that exists and is not a regular file (a
+// device such as /dev/null, a FIFO, a socket) is written in place: renaming over it would
+// replace it, and a pipe cannot be atomic. Every write there is checked too.
 //
 // Temporaries are named "folder/.name.rt-tmp-PID-N.ext". A process killed by SIGKILL while
 // writing leaves its temporary behind (nothing can remove it then); every later write of the
 // same target first removes those whose process PID no longer runs on this machine.
+// SIGINT and SIGTERM remove the temporaries being written when the tool installed
+// removeTemporariesOnSignals (tools/common/tool.cpp does).
 // Test hook: $RT_TEST_WRITE_DELAY_MS holds each finished temporary that many milliseconds
 // before the rename, so tests/cli/render_atomic.sh can kill a process in the middle of a write.
 #pragma once
@@ -15,6 +20,11 @@
 #include <string>
 
 namespace rt {
+
+// Installs handlers for SIGINT and SIGTERM that remove the temporaries this process is
+// writing, then end it by the same signal (default action: the exit status stays 128+N).
+// A signal the process started with ignored stays ignored.
+void removeTemporariesOnSignals();
 
 // Throws rt::InputError "PATH: is a directory" if `path` names a folder (or ends in '/').
 void checkNotDirectory(const std::string& path);
@@ -28,16 +38,14 @@ void prepareOutputFile(const std::string& path);
 // (naming the file) if the file cannot be written; the temporary is removed.
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
-// For writers that need a file name of their own (OpenImageIO): calls write(tempPath)
-// with a temporary path in the target's folder that keeps the target's extension,
-// then renames it over `path`. The temporary is removed if write throws or returns false.
-void commitFileAtomically(const std::string& path, const std::function<bool(const std::string&)>& write);
-
-// For an output that is a folder of files: calls write(tempFolder) with a new, empty
-// temporary folder beside `folder`, then puts it in the place of `folder`, whose old
-// contents are removed (nothing stale is left from an earlier output). If write throws or
-// returns false, the temporary folder is removed and `folder` is untouched. Throws
-// std::runtime_error if `folder` exists but is not a folder, or cannot be replaced.
-void commitFolderAtomically(const std::string& folder, const std::function<bool(const std::string&)>& write);
+// For a file that names files in a folder beside it (a scene XML and its RAW models):
+// calls write(tempPath, tempFolder) with a temporary file and a new, empty temporary folder,
+// then publishes both as one unit: under a lock on the target's folder (flock, so concurrent
+// writers of the same scene take turns), the temporary folder takes the place of `folder`,
+// whose old contents are removed (nothing stale is left), and the file is renamed over `path`.
+// If write throws or returns false, or a rename fails, `path` and `folder` are as they were.
+// Throws std::runtime_error if `folder` exists but is not a folder, or cannot be replaced.
+void commitFileAndFolderAtomically(const std::string& path, const std::string& folder,
+                                   const std::function<bool(const std::string&, const std::string&)>& write);
 
 }  // namespace rt

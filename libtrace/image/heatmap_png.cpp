@@ -1,28 +1,15 @@
 #include "image/heatmap_png.h"
 
-#include <OpenImageIO/imageio.h>
-
-#include <stdexcept>
-
-#include "core/atomic_file.h"
+#include "image/oiio_file.h"
 #include "version.h"
 
 namespace rt {
 
 void writeHeatmapPng(const std::string& path, const RgbImage& image) {
-    commitFileAtomically(path, [&](const std::string& tempPath) {
-        const auto fail = [&](const std::string& why) {
-            throw std::runtime_error(path + ": cannot write the PNG: " + why);
-        };
-        auto out = OIIO::ImageOutput::create("png");
-        if (!out) fail(OIIO::geterror());
-        OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        spec.attribute("Software", std::string("rt-inspect ") + kVersion);
-        if (!out->open(tempPath, spec)) fail(out->geterror());
-        if (!out->write_image(OIIO::TypeDesc::UINT8, image.bytes().data()) || !out->close()) fail(out->geterror());
-        return true;
-    });
+    OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("Software", std::string("rt-inspect ") + kVersion);
+    writeImageFile(path, "png", spec, OIIO::TypeDesc::UINT8, image.bytes().data());
 }
 
 }  // namespace rt

@@ -1,6 +1,5 @@
 #include "image/image_output.h"
 
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "image/ascii_art.h"
+#include "image/oiio_file.h"
 
 namespace rt {
 
@@ -54,37 +54,6 @@ OIIO::ImageSpec specFor(const Framebuffer& image, OIIO::TypeDesc type) {
     return spec;
 }
 
-void writeOiio(const std::string& file, ImageFormat format, const OIIO::ImageSpec& spec,
-               const std::vector<float>& rgb, OIIO::Filesystem::IOProxy* proxy) {
-    auto out = OIIO::ImageOutput::create(formatName(format).oiioName);
-    if (!out) throw std::runtime_error(file + ": " + OIIO::geterror());
-    if (proxy && !(out->supports("ioproxy") && out->set_ioproxy(proxy)))
-        throw std::runtime_error(std::string(out->format_name()) + " files cannot be written to standard output");
-    if (!out->open(file, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !out->close())
-        throw std::runtime_error(file + ": " + out->geterror());
-}
-
-// Atomically to a file, or through memory to standard output for "-".
-void writeOiioAtomically(const std::string& path, ImageFormat format, const OIIO::ImageSpec& spec,
-                         const std::vector<float>& rgb) {
-    if (path != "-") {
-        commitFileAtomically(path, [&](const std::string& temp) {
-            try {
-                writeOiio(temp, format, spec, rgb, nullptr);
-            } catch (const std::runtime_error& e) {  // OIIO names the temporary; the user gave `path`
-                throw std::runtime_error(path + ": cannot write: " + e.what());
-            }
-            return true;
-        });
-        return;
-    }
-    OIIO::Filesystem::IOVecOutput memory;
-    writeOiio("standard output", format, spec, rgb, &memory);
-    writeFileAtomically("-", [&](std::ostream& os) {
-        os.write(reinterpret_cast<const char*>(memory.buffer().data()), std::streamsize(memory.buffer().size()));
-    });
-}
-
 void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
     const ColorPipeline color(s.color);  // resolves and checks the colour space name
     OIIO::ImageSpec spec = specFor(image, s.exrHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
@@ -96,7 +65,7 @@ void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const Imag
     spec.attribute("rt:scene", meta.sceneFile);
     spec.attribute("rt:samplesPerPixel", meta.samplesPerPixel);
     spec.attribute("rt:renderSeconds", float(meta.renderSeconds));
-    writeOiioAtomically(s.path, ImageFormat::Exr, spec, packedRgb(image));
+    writeImageFile(s.path, formatName(ImageFormat::Exr).oiioName, spec, OIIO::TypeDesc::FLOAT, packedRgb(image).data());
 }
 
 void writeDisplayImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
@@ -107,7 +76,7 @@ void writeDisplayImage(const Framebuffer& image, const ImageOutputSettings& s, c
     const bool png = s.format == ImageFormat::Png;
     OIIO::ImageSpec spec = specFor(image, png && s.pngBits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
     spec.attribute("Software", meta.software);
-    writeOiioAtomically(s.path, s.format, spec, rgb);
+    writeImageFile(s.path, formatName(s.format).oiioName, spec, OIIO::TypeDesc::FLOAT, rgb.data());
 }
 
 void writeText(const Framebuffer& image, const ImageOutputSettings& s) {

@@ -216,23 +216,21 @@ void saveSceneXml(const Scene& scene, const std::string& path) {
         return;
     }
     // The RAW files go to a new folder and the XML to a temporary file; only when both are
-    // written does the folder replace the old one and the XML follow, so a failure leaves
-    // the previous scene as it was, and a successful save leaves no stale RAW file.
+    // written are they published together, so a failure leaves the previous scene as it was,
+    // a successful save leaves no stale RAW file, and concurrent saves take turns.
     const std::filesystem::path folder = modelFolderFor(path);
     std::vector<std::string> files = namesOf(scene.models);
     for (std::string& name : files) name = fileNameFor(name);
     files = uniqueNames(std::move(files), "model", true);
     std::vector<std::string> modelFiles;
     for (const std::string& file : files) modelFiles.push_back((folder.filename() / (file + ".raw")).generic_string());
-    commitFileAtomically(path, [&](const std::string& tempXml) {
-        commitFolderAtomically(folder.string(), [&](const std::string& tempFolder) {
-            for (std::size_t i = 0; i < scene.models.size(); ++i)
-                writeRawFile((std::filesystem::path(tempFolder) / (files[i] + ".raw")).string(), scene.models[i]);
-            std::ofstream out(tempXml, std::ios::binary | std::ios::trunc);
-            return out && saveXml(modelFiles, out);
-        });
-        return true;
-    });
+    const auto write = [&](const std::string& tempXml, const std::string& tempFolder) {
+        for (std::size_t i = 0; i < scene.models.size(); ++i)
+            writeRawFile((std::filesystem::path(tempFolder) / (files[i] + ".raw")).string(), scene.models[i]);
+        std::ofstream out(tempXml, std::ios::binary | std::ios::trunc);
+        return out && saveXml(modelFiles, out);
+    };
+    commitFileAndFolderAtomically(path, folder.string(), write);
 }
 
 }  // namespace rt

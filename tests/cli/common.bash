@@ -29,3 +29,15 @@ expect_one_error() {
     [ "$(wc -l <"$WORK/stderr")" = 1 ] && grep -q "^$1 ERROR: .*$2" "$WORK/stderr" ||
         fail "expected one line '$1 ERROR: ...$2...', got: $(cat "$WORK/stderr")"
 }
+
+# wait_for_temporary FOLDER PATTERN: waits up to 60 s for a file matching PATTERN in FOLDER (a
+# temporary held by the test hook RT_TEST_WRITE_DELAY_MS, core/atomic_file.h) and prints its name.
+wait_for_temporary() {
+    local name
+    for _ in $(seq 600); do
+        name=$(ls -A "$1" | grep "$2" || true)
+        [ -n "$name" ] && { echo "$name"; return 0; }
+        sleep 0.1
+    done
+    fail "no temporary '$2' in $1: the write never started"
+}

@@ -27,12 +27,7 @@ unchanged "killed render"
 # holds the written temporary before its rename, long enough to kill the process then.
 RT_TEST_WRITE_DELAY_MS=60000 "$RT_RENDER" "$scene" -q -x 64 -y 48 -d 1 -f "$out" &
 pid=$!
-for _ in $(seq 600); do
-    temporary=$(ls -A "$WORK/out" | grep '^\.picture\.rt-tmp-' || true)
-    [ -n "$temporary" ] && break
-    sleep 0.1
-done
-[ -n "$temporary" ] || fail "the write never started"
+temporary=$(wait_for_temporary "$WORK/out" '^\.picture\.rt-tmp-')
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null || true
 cmp -s "$out" "$WORK/before.png" || fail "killed write: the previous output changed"

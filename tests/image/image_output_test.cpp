@@ -3,6 +3,12 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -166,6 +172,25 @@ TEST_F(ImageOutputTest, FailedWritesLeaveTheOldFileAndNoTemporary) {
     std::stringstream kept;
     kept << std::ifstream(path).rdbuf();
     EXPECT_EQ(kept.str(), "previous");
+    EXPECT_EQ(filesInDir(), 1u);
+}
+
+// Every format is checked to the last byte: a full device (a node with /dev/full's numbers)
+// is an error naming the file and the reason, and the node is not replaced by a regular file.
+TEST_F(ImageOutputTest, AFullDeviceIsAnErrorInEveryFormat) {
+    if (::geteuid() != 0) GTEST_SKIP() << "making a device node needs root";
+    const std::string full = file("full");
+    ASSERT_EQ(::mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)), 0) << std::strerror(errno);
+    for (ImageFormat format : {ImageFormat::Png, ImageFormat::Tga, ImageFormat::Exr, ImageFormat::Text}) {
+        try {
+            writeImage(ramp(), settings(format, full), metadata());
+            ADD_FAILURE() << imageFormatName(format) << ": writing to a full device succeeded";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find(full + ": cannot write: No space left on device"), std::string::npos)
+                << e.what();
+        }
+        EXPECT_TRUE(fs::is_character_file(full)) << imageFormatName(format) << " replaced the device";
+    }
     EXPECT_EQ(filesInDir(), 1u);
 }
 

@@ -1,9 +1,14 @@
 #include "tool.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
+#include <stdexcept>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/real.h"
 #include "version.h"
@@ -22,9 +27,27 @@ void printError(const std::string& toolName, const std::string& message) {
     std::cerr << toolName << " ERROR: " << message << std::endl;
 }
 
+namespace {
+
+// Every write to standard output is checked here, once, rather than after each `<<`: a tool
+// whose table, JSON or -b line reached a full device or a closed stream must not exit 0.
+// The reason is known only if this last flush fails; an earlier one (std::endl) has lost it.
+void checkStandardOutput() {
+    errno = 0;
+    std::cout.flush();
+    if (std::fflush(stdout) == 0 && std::cout && !std::ferror(stdout)) return;
+    throw std::runtime_error(std::string("standard output: cannot write") + (errno ? ": " : "") +
+                             (errno ? std::strerror(errno) : ""));
+}
+
+}  // namespace
+
 int run(const std::string& toolName, const std::function<int()>& body) {
+    removeTemporariesOnSignals();
     try {
-        return body();
+        const int status = body();
+        checkStandardOutput();
+        return status;
     } catch (const InputError& e) {
         printError(toolName, e.what());
         return kExitBadInput;

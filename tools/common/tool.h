@@ -14,8 +14,11 @@ constexpr int kExitBadInput = 2;
 // "rt-render 0.1.0 (geometry in double, OpenMP 4.5)"
 std::string versionLine(const std::string& toolName);
 
-// Runs the body of a tool. An rt::InputError prints "tool ERROR: message" and returns 2;
-// any other exception prints the same shape and returns 1.
+// Runs the body of a tool, with the temporaries of its outputs removed on SIGINT and SIGTERM
+// (core/atomic_file.h). An rt::InputError prints "tool ERROR: message" and returns 2;
+// any other exception prints the same shape and returns 1, and so does standard output that
+// could not be written (a full device, a closed stream): everything the body printed there
+// is flushed and checked before run returns.
 int run(const std::string& toolName, const std::function<int()>& body);
 
 // Prints "tool ERROR: message" on stderr.

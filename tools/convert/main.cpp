@@ -3,7 +3,6 @@
 // writes and reports.
 #include <CLI/CLI.hpp>
 
-#include <filesystem>
 #include <iostream>
 
 #include "command_line.h"
@@ -25,21 +24,6 @@ struct Options {
     rt::ImportOptions import;
     std::string upAxis;  // empty: the format's convention
 };
-
-// saveSceneXml writes each file atomically, the RAW models first and the XML last. If it
-// fails part way, the model folder is removed when this run made it, so a failed
-// conversion leaves nothing behind.
-void writeScene(const rt::Scene& scene, const std::string& output) {
-    const std::filesystem::path folder = output == "-" ? "" : rt::modelFolderFor(output);
-    std::error_code ec;
-    const bool existed = output == "-" || std::filesystem::exists(folder, ec);
-    try {
-        rt::saveSceneXml(scene, output);
-    } catch (...) {
-        if (!existed) std::filesystem::remove_all(folder, ec);
-        throw;
-    }
-}
 
 // --generate: a test scene of the thesis (scenes/thesis/README.md) in place of a model file.
 rt::ImportResult generateThesisScene(const std::string& name) {
@@ -63,7 +47,7 @@ int convert(Options& o) {
     if (!o.upAxis.empty()) o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
     const rt::ImportResult result =
         o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
-    if (!o.output.empty()) writeScene(result.scene, o.output);
+    if (!o.output.empty()) rt::saveSceneXml(result.scene, o.output);  // all or nothing (core/atomic_file.h)
     const rt::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
     if (!o.quiet) rt::convert::printSummary(std::cerr, summary);
     if (o.json) rt::convert::printSummaryJson(std::cout, summary);
