@@ -5,11 +5,10 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
-#include "version.h"
 
 namespace rt {
 
-void writeHeatmapPng(const std::string& path, const RgbImage& image) {
+void writeHeatmapPng(const std::string& path, const RgbImage& image, const std::string& software) {
     commitFileAtomically(path, [&](const std::string& tempPath) {
         const auto fail = [&](const std::string& why) {
             throw std::runtime_error(path + ": cannot write the PNG: " + why);
@@ -18,7 +17,7 @@ void writeHeatmapPng(const std::string& path, const RgbImage& image) {
         if (!out) fail(OIIO::geterror());
         OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::UINT8);
         spec.attribute("oiio:ColorSpace", "sRGB");
-        spec.attribute("Software", std::string("rt-inspect ") + kVersion);
+        spec.attribute("Software", software);
         if (!out->open(tempPath, spec)) fail(out->geterror());
         if (!out->write_image(OIIO::TypeDesc::UINT8, image.bytes().data()) || !out->close()) fail(out->geterror());
         return true;
