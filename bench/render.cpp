@@ -9,7 +9,7 @@
 
 #include "accel/build.h"
 #include "render/renderer.h"
-#include "scene/xml_loader.h"
+#include "import/load_scene.h"
 
 namespace {
 
@@ -22,7 +22,7 @@ const Prepared& demo() {
     static const Prepared prepared = [] {
         const char* env = std::getenv("RT_BENCH_SCENE");
         const std::string path = env ? env : RT_SOURCE_DIR "/scenes/demo.xml";
-        Prepared p{rt::loadSceneXml(path), nullptr};
+        Prepared p{rt::loadScene(path), nullptr};  // as rt-render reads it
         const char* accel = std::getenv("RT_BENCH_ACCEL");
         rt::AccelSettings settings;
         settings.kind = rt::parseAccelKind(accel ? accel : "kd").value_or(rt::AccelKind::Kd);

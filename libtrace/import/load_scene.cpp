@@ -1,5 +1,6 @@
 #include "import/load_scene.h"
 
+#include "import/model_file.h"
 #include "scene/xml_loader.h"
 
 namespace rt {
@@ -16,14 +17,14 @@ Scene flattenedScene(ImportResult imported) {
 Scene loadStandardInput(const ImportOptions& options) {
     const std::string bytes = readStandardInput();
     if (looksLikeGltf(bytes)) return flattenedScene(importGltfFromStandardInput(bytes, options));
-    return loadSceneXmlFromString(bytes, "<stdin>", ".");
+    return loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile);
 }
 
 }  // namespace
 
 Scene loadScene(const std::string& path, const ImportOptions& options) {
     if (path == "-") return loadStandardInput(options);
-    if (lowerCaseExtension(path) == ".xml") return loadSceneXml(path);
+    if (lowerCaseExtension(path) == ".xml") return loadSceneXml(path, readModelFile);
     return flattenedScene(importScene(path, options));
 }
 

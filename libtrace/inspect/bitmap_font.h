@@ -5,7 +5,7 @@
 
 #include <string_view>
 
-#include "inspect/rgb_image.h"
+#include "core/rgb_image.h"
 
 namespace rt {
 

@@ -3,7 +3,7 @@
 // greyscale. Stored as 11 samples of the original 256-entry table and interpolated.
 #pragma once
 
-#include "inspect/rgb_image.h"
+#include "core/rgb_image.h"
 
 namespace rt {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "inspect/rgb_image.h"
+#include "core/rgb_image.h"
 
 namespace rt {
 

@@ -32,7 +32,8 @@ Vec3 place(const Transform& toWorld, const Vec3& p) { return toWorld.isIdentity(
 
 class SceneBuilder {
 public:
-    SceneBuilder(const XmlFile& file, std::string baseDir) : file_(file), baseDir_(std::move(baseDir)) {}
+    SceneBuilder(const XmlFile& file, std::string baseDir, const ModelFileReader& readModelFile)
+        : file_(file), baseDir_(std::move(baseDir)), readModelFile_(readModelFile) {}
     Scene build();
 
 private:
@@ -63,6 +64,7 @@ private:
 
     const XmlFile& file_;
     std::string baseDir_;
+    const ModelFileReader& readModelFile_;
     Scene scene_;
     std::unordered_map<std::string, Definition> materials_;
     std::unordered_map<std::string, Definition> models_;
@@ -218,7 +220,7 @@ Model SceneBuilder::readModelData(const XmlElement& e, const std::string& name) 
             e.fail("<model> needs type=\"raw\" or type=\"3ds\" (the file name does not tell)");
         std::filesystem::path path(*file);
         if (path.is_relative()) path = std::filesystem::path(baseDir_) / path;
-        Model model = placed([&] { return loadModelFile(path.string(), *format); });
+        Model model = placed([&] { return readModelFile_(path.string(), *format); });
         model.file = *file;
         model.format = *format;
         return model;
@@ -359,25 +361,27 @@ std::uint32_t SceneBuilder::materialOf(const XmlElement& e) {
     return index;
 }
 
-Scene loadScene(std::string xml, const std::string& name, const std::string& baseDir) {
+Scene loadScene(std::string xml, const std::string& name, const std::string& baseDir,
+                const ModelFileReader& readModelFile) {
     const XmlFile file(std::move(xml), name);
-    return SceneBuilder(file, baseDir).build();
+    return SceneBuilder(file, baseDir, readModelFile).build();
 }
 
 }  // namespace
 
-Scene loadSceneXml(const std::string& path) {
+Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile) {
     if (path == "-") {
         std::ostringstream text;
         text << std::cin.rdbuf();
-        return loadScene(text.str(), "<stdin>", ".");
+        return loadScene(text.str(), "<stdin>", ".", readModelFile);
     }
     const std::string folder = std::filesystem::path(path).parent_path().string();
-    return loadScene(readInputFile(path), path, folder.empty() ? "." : folder);
+    return loadScene(readInputFile(path), path, folder.empty() ? "." : folder, readModelFile);
 }
 
-Scene loadSceneXmlFromString(const std::string& xml, const std::string& name, const std::string& baseDir) {
-    return loadScene(xml, name, baseDir);
+Scene loadSceneXmlFromString(const std::string& xml, const std::string& name, const std::string& baseDir,
+                             const ModelFileReader& readModelFile) {
+    return loadScene(xml, name, baseDir, readModelFile);
 }
 
 }  // namespace rt

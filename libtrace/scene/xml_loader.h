@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "scene/model_file.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -10,9 +11,12 @@ namespace rt {
 // Reads the scene file at `path` ("-" reads standard input; relative model paths then
 // resolve against the current folder). Throws rt::InputError naming file and line.
 // The returned scene is flattened: scene.primitives holds the world-space geometry.
-Scene loadSceneXml(const std::string& path);
+// <model> files are read with `readModelFile`: the default reads RAW only; rt::loadScene
+// (import/load_scene.h) passes the import layer's reader, which reads 3ds too.
+Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile = readRawModelFileOnly);
 
 // The same from XML text; `name` is used in messages, `baseDir` resolves model paths.
-Scene loadSceneXmlFromString(const std::string& xml, const std::string& name, const std::string& baseDir);
+Scene loadSceneXmlFromString(const std::string& xml, const std::string& name, const std::string& baseDir,
+                             const ModelFileReader& readModelFile = readRawModelFileOnly);
 
 }  // namespace rt

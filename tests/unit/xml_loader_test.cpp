@@ -3,6 +3,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "import/model_file.h"
 #include "scene_test_files.h"
 #include "test_util.h"
 
@@ -61,12 +62,13 @@ std::string sceneWith(const std::string& body) {
     return "<scene>\n<camera><origin/><destination z=\"1\"/></camera>\n" + body + "</scene>\n";
 }
 
+// With the model reader rt::loadScene gives the loader, which reads 3ds models too.
 Scene load(const std::string& body, const std::string& baseDir = ".") {
-    return loadSceneXmlFromString(sceneWith(body), "s.xml", baseDir);
+    return loadSceneXmlFromString(sceneWith(body), "s.xml", baseDir, readModelFile);
 }
 
 std::string errorOf(const std::string& xml) {
-    return inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", "."); });
+    return inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", ".", readModelFile); });
 }
 
 }  // namespace
@@ -75,7 +77,7 @@ TEST(XmlLoader, ThesisExampleLoadsAsWritten) {
     SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     const std::string path = dir.write("ships.xml", replaced(kThesisExample, "SPACESHIP", kFels));
-    const Scene scene = loadSceneXml(path);
+    const Scene scene = loadSceneXml(path, readModelFile);
 
     EXPECT_EQ(scene.background, Color(0.1f, 0.1f, 0.6f));
     ASSERT_TRUE(scene.camera.fovDegrees);
@@ -317,6 +319,14 @@ TEST(XmlLoader, ThreeDsModelsBakeNodeTransforms) {
                              "/models/3ds/jeep1/jeep1.3ds\"/></models>");
     EXPECT_EQ(scene.models.at(0).format, Model::Format::Max3ds);  // from the extension
     EXPECT_EQ(scene.models.at(0).triangleCount(), 2032u);          // MANIFEST.md
+}
+
+// Assimp is the import layer's: the scene layer's own reader names it instead of reading 3ds.
+TEST(XmlLoader, ThreeDsModelsNeedTheImportLayersReader) {
+    const std::string xml = sceneWith("<models>\n<model name=\"m\" file=\"ship.3ds\"/></models>");
+    EXPECT_EQ(inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", "dir"); }),
+              "s.xml:4: model 'm': dir/ship.3ds: a 3ds model is read through the import layer (rt::loadScene); "
+              "this scene reader takes RAW models only");
 }
 
 namespace {

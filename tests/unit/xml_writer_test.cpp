@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "import/model_file.h"
 #include "scene/input_file.h"
 #include "scene/xml_loader.h"
 #include "scene_test_files.h"
@@ -43,7 +44,7 @@ const std::string kScene = R"(<scene>
 Scene loadTestScene(const TempDir& dir) {
     std::string xml = kScene;
     xml.replace(xml.find("FELS"), 4, RT_SHARED_DIR "/models/3ds/fels/fels.3ds");
-    return loadSceneXml(dir.write("in/scene.xml", xml));
+    return loadSceneXml(dir.write("in/scene.xml", xml), readModelFile);  // the 3ds model too
 }
 
 template <typename T>

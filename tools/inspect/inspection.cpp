@@ -15,6 +15,7 @@
 #include "inspect/tree_report.h"
 #include "import/load_scene.h"
 #include "tool.h"
+#include "version.h"
 
 namespace rt::tool {
 
@@ -85,7 +86,7 @@ void writeHeatmaps(const InspectOptions& o, const Scene& scene, const std::vecto
                          (o.heatmapRays == PixelRays::All ? ": steps + tests per pixel, all rays"
                                                           : ": steps + tests per pixel, camera rays");  // drawn in capitals
         const std::string path = pathFor(o.heatmapPath, accelKindName(report.settings.kind), trees.size() > 1);
-        writeHeatmapPng(path, renderHeatmap(costs[i], w, h, shared));
+        writeHeatmapPng(path, renderHeatmap(costs[i], w, h, shared), std::string("rt-inspect ") + kVersion);
     }
 }
 

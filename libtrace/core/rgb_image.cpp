@@ -1,4 +1,4 @@
-#include "inspect/rgb_image.h"
+#include "core/rgb_image.h"
 
 #include <stdexcept>
 

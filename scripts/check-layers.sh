@@ -1,0 +1,139 @@
+#!/usr/bin/env bash
+# The layers of libtrace, and the check that its #include lines keep to them: a file may include
+# headers of its own folder, of the layers the table lets its folder use, and of the third-party
+# libraries the table gives its folder. The table below is the one statement of the layering;
+# libtrace/CMakeLists.txt links each folder's library the same way, and docs/architecture.md
+# shows the table (the check fails when the two differ).
+#   scripts/check-layers.sh               checks libtrace/ and docs/architecture.md
+#   scripts/check-layers.sh DIR           checks the libtrace tree at DIR (a copy, in the tests)
+#   scripts/check-layers.sh --table       prints the table as Markdown
+# Exits 1 with one line "check-layers ERROR: file:line: what is wrong" per forbidden include.
+set -euo pipefail
+
+# folder   | layers it may use (lowest first)  | third-party headers it may include
+readonly TABLE='
+core       |                                   |
+geometry   | core                              |
+accel      | core geometry                     |
+scene      | core geometry                     | pugixml.hpp
+import     | core geometry scene               | assimp/ tiny_gltf.h tiny_obj_loader.h
+render     | core geometry accel scene         |
+image      | core geometry accel scene render  | OpenImageIO/ OpenColorIO/
+inspect    | core geometry accel scene render  |
+'
+# Headers CMake generates into the build folder, which any layer may include.
+readonly GENERATED='version.h builtin_color_config.h'
+
+declare -A MAY_USE THIRD_PARTY
+FOLDERS=()
+GUARDED=()  # every third-party header named in the table
+while IFS='|' read -r folder layers headers; do
+    folder=$(echo $folder)
+    [ -n "$folder" ] || continue
+    FOLDERS+=("$folder")
+    MAY_USE[$folder]=$(echo $layers)
+    THIRD_PARTY[$folder]=$(echo $headers)
+    GUARDED+=($headers)
+done <<<"$TABLE"
+
+print_table() {
+    echo "| folder | may use | third-party headers |"
+    echo "|---|---|---|"
+    for folder in "${FOLDERS[@]}"; do
+        echo "| \`$folder/\` | ${MAY_USE[$folder]:--} | ${THIRD_PARTY[$folder]:--} |"
+    done
+}
+
+# contains WORD LIST...: true when WORD is one of LIST.
+contains() {
+    local word=$1; shift
+    local item
+    for item in "$@"; do [ "$item" = "$word" ] && return 0; done
+    return 1
+}
+
+# guarded_header HEADER: the table's entry HEADER falls under (assimp/ for assimp/scene.h), if any.
+guarded_header() {
+    local entry
+    for entry in "${GUARDED[@]}"; do
+        if [[ $entry == */ && $1 == "$entry"* ]] || [ "$1" = "$entry" ]; then
+            echo "$entry"
+            return
+        fi
+    done
+}
+
+# owners ENTRY: the folders the table gives the third-party header ENTRY.
+owners() {
+    local folder list=()
+    for folder in "${FOLDERS[@]}"; do
+        contains "$1" ${THIRD_PARTY[$folder]} && list+=("$folder/")
+    done
+    echo "${list[*]}"
+}
+
+ERRORS=0
+error() {
+    echo "check-layers ERROR: $1" >&2
+    ERRORS=$((ERRORS + 1))
+}
+
+# check_include FILE LINE FOLDER INCLUDE-LINE
+check_include() {
+    local file=$1 line=$2 folder=$3 text=$4
+    if [[ $text =~ \#[[:space:]]*include[[:space:]]*\"([^\"]+)\" ]]; then
+        local header=${BASH_REMATCH[1]}
+        if [[ $header != */* ]]; then
+            contains "$header" $GENERATED ||
+                error "$file:$line: \"$header\": include libtrace's headers by folder (\"$folder/$header\")"
+            return
+        fi
+        local layer=${header%%/*}
+        [ "$layer" = "$folder" ] && return
+        contains "$layer" "${FOLDERS[@]}" || { error "$file:$line: \"$header\" is in no layer of libtrace"; return; }
+        contains "$layer" ${MAY_USE[$folder]} ||
+            error "$file:$line: $folder/ may not include \"$header\" ($folder/ may use: ${MAY_USE[$folder]:-nothing})"
+    elif [[ $text =~ \#[[:space:]]*include[[:space:]]*\<([^\>]+)\> ]]; then
+        local entry
+        entry=$(guarded_header "${BASH_REMATCH[1]}")
+        [ -z "$entry" ] || contains "$entry" ${THIRD_PARTY[$folder]} ||
+            error "$file:$line: $folder/ may not include <${BASH_REMATCH[1]}> (only $(owners "$entry") may)"
+    fi
+}
+
+check_tree() {
+    local root=${1%/} file
+    while IFS= read -r file; do
+        local relative=${file#"$root"/}
+        local folder=${relative%%/*}
+        [[ $relative == */* ]] || continue  # CMakeLists.txt, version.h.in
+        if ! contains "$folder" "${FOLDERS[@]}"; then
+            error "$file:1: folder $folder/ is not in the layer table of scripts/check-layers.sh"
+            continue
+        fi
+        local line=0 text
+        while IFS= read -r text || [ -n "$text" ]; do
+            line=$((line + 1))
+            [[ $text =~ ^[[:space:]]*\#[[:space:]]*include ]] && check_include "$file" "$line" "$folder" "$text"
+        done <"$file"
+    done < <(find "$root" -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.h.in' \) | sort)
+}
+
+check_docs() {
+    local docs=$1
+    [[ $(<"$docs") == *"$(print_table)"* ]] ||
+        error "$docs:1: the layer table differs from scripts/check-layers.sh's; paste the output of scripts/check-layers.sh --table"
+}
+
+if [ "${1:-}" = "--table" ]; then
+    print_table
+    exit 0
+fi
+if [ $# -gt 0 ]; then
+    check_tree "$1"
+else
+    cd "$(dirname "$0")/.."
+    check_tree libtrace
+    check_docs docs/architecture.md
+fi
+[ "$ERRORS" = 0 ] || exit 1

@@ -1,0 +1,38 @@
+# scripts/check-layers.sh, the layering check CI runs (ctest test "layers"): a copy of libtrace
+# passes, and the same copy with one forbidden include fails, naming the file and line.
+source "$(dirname "$0")/common.bash"
+check="$RT_SOURCE_DIR/scripts/check-layers.sh"
+
+fresh_copy() {
+    rm -rf "$WORK/libtrace"
+    cp -r "$RT_SOURCE_DIR/libtrace" "$WORK/libtrace"
+}
+
+fresh_copy
+expect_exit 0 "$check" "$WORK/libtrace"
+[ ! -s "$WORK/stderr" ] || fail "a clean copy should pass silently: $(cat "$WORK/stderr")"
+
+# add_line FILE TEXT: appends TEXT to FILE, printing its line number.
+add_line() {
+    echo "$2" >>"$1"
+    wc -l <"$1"
+}
+
+# A layer including one above it.
+line=$(add_line "$WORK/libtrace/geometry/overlap.h" '#include "render/renderer.h"')
+expect_exit 1 "$check" "$WORK/libtrace"
+expect_one_error check-layers "libtrace/geometry/overlap.h:$line: geometry/ may not include \"render/renderer.h\""
+
+# A third-party library outside the layer that links it.
+fresh_copy
+line=$(add_line "$WORK/libtrace/render/tracer.cpp" '#include <assimp/scene.h>')
+expect_exit 1 "$check" "$WORK/libtrace"
+expect_one_error check-layers "libtrace/render/tracer.cpp:$line: render/ may not include <assimp/scene.h> (only import/ may)"
+
+# A folder the table does not know.
+fresh_copy
+mkdir "$WORK/libtrace/extra"
+echo '#include "core/vec3.h"' >"$WORK/libtrace/extra/extra.h"
+expect_exit 1 "$check" "$WORK/libtrace"
+expect_one_error check-layers "folder extra/ is not in the layer table"
+echo "layers_check: ok"
