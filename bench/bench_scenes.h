@@ -27,8 +27,8 @@ inline Scene generatedScene(const std::string& name) {
     Scene scene = generateScene(generatedRecipes().at(name));
     if (name == "stadium100k") {
         constexpr Real kHalf = 50, kFloor = Real(-1.2);
-        scene.looseObjects.addTriangle({{-kHalf, kFloor, -kHalf}, {kHalf, kFloor, kHalf}, {kHalf, kFloor, -kHalf}}, 0);
-        scene.looseObjects.addTriangle({{-kHalf, kFloor, -kHalf}, {-kHalf, kFloor, kHalf}, {kHalf, kFloor, kHalf}}, 0);
+        scene.looseObjects.add<Triangle>({{-kHalf, kFloor, -kHalf}, {kHalf, kFloor, kHalf}, {kHalf, kFloor, -kHalf}}, 0);
+        scene.looseObjects.add<Triangle>({{-kHalf, kFloor, -kHalf}, {-kHalf, kFloor, kHalf}, {kHalf, kFloor, kHalf}}, 0);
         scene.flatten();
     }
     return scene;

@@ -75,7 +75,7 @@ void BM_LoadSceneXml(benchmark::State& state) {
         primitives = scene.primitives.size();
         primitiveBytes = double(scene.primitives.memoryBytes());
         modelBytes = double(scene.models.at(0).triangleVertices.capacity() * sizeof(float));
-        benchmark::DoNotOptimize(scene.primitives.triangles().data());
+        benchmark::DoNotOptimize(scene.primitives.all<rt::Triangle>().data());
     }
     state.counters["primitives"] = primitives;
     state.counters["bytes/primitive"] = primitiveBytes / primitives;

@@ -27,13 +27,13 @@ void throwOnError(RTCDevice device, const char* what) {
 
 void attachTriangles(RTCDevice device, RTCScene scene, const Primitives& prims) {
     const RTCGeometry mesh = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    const std::size_t n = prims.triangleCount();
+    const std::size_t n = prims.count<Triangle>();
     auto* vertices = static_cast<float*>(
         rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
     auto* indices = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
     for (std::size_t i = 0; i < n; ++i) {
-        const Triangle& t = prims.triangle(std::uint32_t(i));
+        const Triangle& t = prims.all<Triangle>()[std::uint32_t(i)];
         for (int c = 0; c < 3; ++c) {
             const Vec3& p = c == 0 ? t.p0 : c == 1 ? t.p1 : t.p2;
             for (int a = 0; a < 3; ++a) vertices[9 * i + 3 * c + a] = float(p[a]);
@@ -49,7 +49,7 @@ void attachTriangles(RTCDevice device, RTCScene scene, const Primitives& prims) 
 
 void sphereBounds(const RTCBoundsFunctionArguments* args) {
     const auto* prims = static_cast<const Primitives*>(args->geometryUserPtr);
-    const Aabb b = prims->bounds(prims->triangleCount() + args->primID);
+    const Aabb b = prims->bounds(prims->count<Triangle>() + args->primID);
     *args->bounds_o = {float(b.lo.x), float(b.lo.y), float(b.lo.z), 0,
                        float(b.hi.x), float(b.hi.y), float(b.hi.z), 0};
 }
@@ -64,7 +64,7 @@ Ray rayOf(RTCRayN* ray, unsigned n, unsigned i) {
 
 void sphereIntersect(const RTCIntersectFunctionNArguments* args) {
     const auto* prims = static_cast<const Primitives*>(args->geometryUserPtr);
-    const Sphere& sphere = prims->sphere(prims->triangleCount() + args->primID);
+    const Sphere& sphere = prims->all<Sphere>()[args->primID];
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
     for (unsigned i = 0; i < args->N; ++i) {
@@ -81,7 +81,7 @@ void sphereIntersect(const RTCIntersectFunctionNArguments* args) {
 
 void sphereOccluded(const RTCOccludedFunctionNArguments* args) {
     const auto* prims = static_cast<const Primitives*>(args->geometryUserPtr);
-    const Sphere& sphere = prims->sphere(prims->triangleCount() + args->primID);
+    const Sphere& sphere = prims->all<Sphere>()[args->primID];
     for (unsigned i = 0; i < args->N; ++i) {
         Real t;
         if (args->valid[i] == -1 && intersectSphere(sphere, rayOf(args->ray, args->N, i),
@@ -92,7 +92,7 @@ void sphereOccluded(const RTCOccludedFunctionNArguments* args) {
 
 void attachSpheres(RTCDevice device, RTCScene scene, const Primitives& prims) {
     const RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, prims.sphereCount());
+    rtcSetGeometryUserPrimitiveCount(geometry, prims.count<Sphere>());
     rtcSetGeometryUserData(geometry, const_cast<Primitives*>(&prims));
     rtcSetGeometryBoundsFunction(geometry, sphereBounds, nullptr);
     rtcSetGeometryIntersectFunction(geometry, sphereIntersect);
@@ -121,8 +121,8 @@ EmbreeScene::EmbreeScene(const Primitives& prims, int threads) : prims_(prims) {
     rtcSetDeviceMemoryMonitorFunction(device_, countBytes, &bytes_);
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    if (prims.triangleCount() > 0) attachTriangles(device_, scene_, prims);
-    if (prims.sphereCount() > 0) attachSpheres(device_, scene_, prims);
+    if (prims.count<Triangle>() > 0) attachTriangles(device_, scene_, prims);
+    if (prims.count<Sphere>() > 0) attachSpheres(device_, scene_, prims);
     const auto start = std::chrono::steady_clock::now();
     rtcCommitScene(scene_);
     buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -135,7 +135,7 @@ EmbreeScene::~EmbreeScene() {
 }
 
 std::int64_t EmbreeScene::memoryBytes() const {
-    return bytes_.load() + std::int64_t(prims_.sphereCount() * sizeof(Sphere));
+    return bytes_.load() + std::int64_t(prims_.count<Sphere>() * sizeof(Sphere));
 }
 
 bool EmbreeScene::intersect(const Ray& ray, Real tMax, Hit& hit) const {
@@ -147,7 +147,7 @@ bool EmbreeScene::intersect(const Ray& ray, Real tMax, Hit& hit) const {
     rtcIntersect1(scene_, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     hit.t = rh.ray.tfar;
-    hit.prim = rh.hit.geomID == kSphereGeometry ? prims_.triangleCount() + rh.hit.primID : rh.hit.primID;
+    hit.prim = rh.hit.geomID == kSphereGeometry ? prims_.count<Triangle>() + rh.hit.primID : rh.hit.primID;
     hit.u = rh.hit.u, hit.v = rh.hit.v;
     return true;
 }
@@ -181,7 +181,7 @@ void EmbreeScene::intersect8(const Ray* rays, Hit* hits, bool* found) const {
         found[i] = rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
         if (!found[i]) continue;
         hits[i].t = rh.ray.tfar[i];
-        hits[i].prim = rh.hit.geomID[i] == kSphereGeometry ? prims_.triangleCount() + rh.hit.primID[i] : rh.hit.primID[i];
+        hits[i].prim = rh.hit.geomID[i] == kSphereGeometry ? prims_.count<Triangle>() + rh.hit.primID[i] : rh.hit.primID[i];
         hits[i].u = rh.hit.u[i], hits[i].v = rh.hit.v[i];
     }
 }

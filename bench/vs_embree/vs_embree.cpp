@@ -302,7 +302,7 @@ SceneReport measureScene(const std::string& name, int passes) {
         report.rayRows.push_back(measureSet(name, prims.size(), *set, *kd, embree, passes, report.agreed));
     }
     const double n = double(prims.size());
-    const double geometryBytes = double(prims.triangleCount() * sizeof(Triangle) + prims.sphereCount() * sizeof(Sphere));
+    const double geometryBytes = double(prims.count<Triangle>() * sizeof(Triangle) + prims.count<Sphere>() * sizeof(Sphere));
     report.buildRow = "| " + name + " | " + count(prims.size()) + " | " + fixed(kdSeconds * 1e3, 0) + " ms | " +
                       fixed(embreeSeconds * 1e3, 0) + " ms | " + fixed(kdSeconds / embreeSeconds, 2) +
                       " | " + fixed(double(kd->stats().memoryBytes) / n, 1) + " + " + fixed(geometryBytes / n, 1) +

@@ -17,7 +17,7 @@ struct BspNode {
 };
 
 bool overlapsVoxel(const Primitives& prims, std::uint32_t id, const Aabb& voxel) {
-    return prims.isSphere(id) ? overlaps(prims.sphere(id), voxel) : overlaps(prims.triangle(id), voxel);
+    return prims.visit(id, [&](const auto& p) { return overlaps(p, voxel); });
 }
 
 class BspSplitter {

@@ -170,8 +170,7 @@ private:
 
     // Perfect split: the primitive's own extent inside the child's voxel.
     void addClipped(KdNode& child, std::uint32_t id) const {
-        const Aabb clipped = prims_.isSphere(id) ? clippedBounds(prims_.sphere(id), child.voxel)
-                                                 : clippedBounds(prims_.triangle(id), child.voxel);
+        const Aabb clipped = prims_.visit(id, [&](const auto& p) { return clippedBounds(p, child.voxel); });
         if (!clipped.empty()) add(child, id, toFloatBox(clipped, child.voxel));
     }
 
@@ -192,15 +191,14 @@ private:
     int maxDepth_;
 };
 
-// A sphere test costs the trees about 0.4 of a triangle test (thesis 2.1.2: a miss needs
-// no square root; measured as the best C_T/C_I ratio on each kind of scene, docs/trees.md).
-// C_I is a triangle's cost, and the SAH uses the mean over the scene's primitives.
-constexpr double kSphereTestWeight = 0.4;
-
+// C_I is a triangle's cost, and the SAH uses the mean over the scene's primitives of each
+// kind's test cost relative to it.
 KdSettings withSceneCosts(const Primitives& prims, const KdSettings& settings) {
     KdSettings s = settings;
-    if (prims.size() > 0)
-        s.intersectionCost *= (prims.triangleCount() + kSphereTestWeight * prims.sphereCount()) / prims.size();
+    if (prims.size() == 0) return s;
+    double weight = 0;
+    forEachKind([&]<class K>(std::type_identity<K>) { weight += K::kTestCost * prims.count<K>(); });
+    s.intersectionCost *= weight / prims.size();
     return s;
 }
 

@@ -16,11 +16,10 @@ bool NaiveAccelerator::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounter
 }
 
 bool NaiveAccelerator::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
-    Hit hit;
     const std::uint32_t n = prims_.size();
     for (std::uint32_t id = 0; id < n; ++id) {
         ++counters.intersectionTests;
-        if (prims_.intersect(id, ray, tMax, hit)) return true;
+        if (prims_.intersectsAny(id, ray, tMax)) return true;
     }
     return false;
 }

@@ -108,10 +108,9 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     bool found = false;
     traverse(ray, tMax, tMax, counters, [&](const std::uint32_t* ids, std::uint32_t count) {
-        Hit scratch;
         for (std::uint32_t i = 0; i < count; ++i) {
             ++counters.intersectionTests;
-            if (prims_.intersect(ids[i], ray, tMax, scratch)) return found = true;
+            if (prims_.intersectsAny(ids[i], ray, tMax)) return found = true;
         }
         return false;
     });

@@ -2,39 +2,41 @@
 
 namespace rt {
 
-void Primitives::addTriangle(const Triangle& t, std::uint32_t material) {
-    triangles_.push_back(t);
-    triangleMaterials_.push_back(material);
-}
-
-void Primitives::addSphere(const Sphere& s, std::uint32_t material) {
-    spheres_.push_back(s);
-    sphereMaterials_.push_back(material);
-}
-
 void Primitives::append(const Primitives& other) {
-    triangles_.insert(triangles_.end(), other.triangles_.begin(), other.triangles_.end());
-    triangleMaterials_.insert(triangleMaterials_.end(), other.triangleMaterials_.begin(),
-                              other.triangleMaterials_.end());
-    spheres_.insert(spheres_.end(), other.spheres_.begin(), other.spheres_.end());
-    sphereMaterials_.insert(sphereMaterials_.end(), other.sphereMaterials_.begin(), other.sphereMaterials_.end());
+    forEachKind([&]<class K>(std::type_identity<K>) {
+        KindArray<K>& to = array<K>();
+        const KindArray<K>& from = other.array<K>();
+        to.items.insert(to.items.end(), from.items.begin(), from.items.end());
+        to.materials.insert(to.materials.end(), from.materials.begin(), from.materials.end());
+    });
 }
 
-void Primitives::reserveTriangles(std::size_t n) {
-    triangles_.reserve(n);
-    triangleMaterials_.reserve(n);
+std::uint32_t Primitives::size() const {
+    std::size_t n = 0;
+    forEachArray([&](const auto& a) { n += a.items.size(); });
+    return std::uint32_t(n);
+}
+
+std::vector<KindCount> Primitives::countsPerKind() const {
+    std::vector<KindCount> counts;
+    forEachKind([&]<class K>(std::type_identity<K>) { counts.push_back({std::string(K::kName) + "s", count<K>()}); });
+    return counts;
 }
 
 Aabb Primitives::bounds() const {
     Aabb b;
-    for (const Triangle& t : triangles_) b.extend(t.bounds());
-    for (const Sphere& s : spheres_) b.extend(s.bounds());
+    forEachArray([&](const auto& a) {
+        for (const auto& p : a.items) b.extend(p.bounds());
+    });
     return b;
 }
 
 std::size_t Primitives::memoryBytes() const {
-    return triangles_.capacity() * sizeof(Triangle) + triangleMaterials_.capacity() * sizeof(std::uint32_t) +
-           spheres_.capacity() * sizeof(Sphere) + sphereMaterials_.capacity() * sizeof(std::uint32_t);
+    std::size_t bytes = 0;
+    forEachArray([&](const auto& a) {
+        bytes += a.items.capacity() * sizeof(a.items[0]) + a.materials.capacity() * sizeof(std::uint32_t);
+    });
+    return bytes;
 }
 
 }  // namespace rt

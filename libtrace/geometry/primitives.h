@@ -1,65 +1,111 @@
 // The scene's geometry in world space, flat and compact: one array per primitive kind
-// and a parallel array of material indices, no heap object per primitive (as Embree
-// keeps its geometry). Primitive ids run over triangles first, then spheres:
-// id < triangleCount() is a triangle, the rest are spheres.
+// (geometry/primitive_kinds.h) and a parallel array of material indices, no heap object
+// per primitive (as Embree keeps its geometry). Primitive ids run over the kinds in list
+// order, so an id maps to (kind, index) by comparing it with the arrays' sizes: no table.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
-#include "geometry/sphere.h"
-#include "geometry/triangle.h"
+#include "geometry/primitive_kinds.h"
 
 namespace rt {
 
+// How many primitives of one kind a scene holds, for statistics.
+struct KindCount {
+    std::string name;  // plural: "triangles"
+    std::uint32_t count = 0;
+};
+
 class Primitives {
-public:
-    void addTriangle(const Triangle& t, std::uint32_t material);
-    void addSphere(const Sphere& s, std::uint32_t material);
-    void append(const Primitives& other);
-    void reserveTriangles(std::size_t n);
+    template <class K>
+    struct KindArray {
+        std::vector<K> items;
+        std::vector<std::uint32_t> materials;
+    };
+    template <class Kinds>
+    struct ArraysOf;
+    template <class... K>
+    struct ArraysOf<std::tuple<K...>> {
+        using type = std::tuple<KindArray<K>...>;
+    };
 
-    std::uint32_t size() const { return std::uint32_t(triangles_.size() + spheres_.size()); }
-    std::uint32_t triangleCount() const { return std::uint32_t(triangles_.size()); }
-    std::uint32_t sphereCount() const { return std::uint32_t(spheres_.size()); }
-    bool isSphere(std::uint32_t id) const { return id >= triangles_.size(); }
+    template <class K>
+    KindArray<K>& array() { return std::get<KindArray<K>>(arrays_); }
+    template <class K>
+    const KindArray<K>& array() const { return std::get<KindArray<K>>(arrays_); }
 
-    const std::vector<Triangle>& triangles() const { return triangles_; }
-    const std::vector<Sphere>& spheres() const { return spheres_; }
-    const Triangle& triangle(std::uint32_t id) const { return triangles_[id]; }
-    const Sphere& sphere(std::uint32_t id) const { return spheres_[id - triangles_.size()]; }
-    std::uint32_t material(std::uint32_t id) const {
-        return isSphere(id) ? sphereMaterials_[id - triangles_.size()] : triangleMaterials_[id];
+    // Finds the kind array holding `index` (counted from the I-th kind on) and calls f(array, index in it).
+    template <std::size_t I, class F>
+    decltype(auto) visitFrom(std::uint32_t index, F&& f) const {
+        const auto& a = std::get<I>(arrays_);
+        if constexpr (I + 1 < kKindCount) {
+            if (index >= a.items.size()) return visitFrom<I + 1>(index - std::uint32_t(a.items.size()), f);
+        }
+        return f(a, index);
     }
 
-    Aabb bounds(std::uint32_t id) const { return isSphere(id) ? sphere(id).bounds() : triangle(id).bounds(); }
+    // Calls f(array) for each kind's array.
+    template <class F>
+    void forEachArray(F&& f) const {
+        std::apply([&](const auto&... a) { (f(a), ...); }, arrays_);
+    }
+
+public:
+    template <class K>
+    void add(const K& primitive, std::uint32_t material) {
+        array<K>().items.push_back(primitive);
+        array<K>().materials.push_back(material);
+    }
+    template <class K>
+    void reserve(std::size_t n) {
+        array<K>().items.reserve(n);
+        array<K>().materials.reserve(n);
+    }
+    void append(const Primitives& other);
+
+    std::uint32_t size() const;
+    template <class K>
+    std::uint32_t count() const { return std::uint32_t(array<K>().items.size()); }
+    template <class K>
+    const std::vector<K>& all() const { return array<K>().items; }
+    std::vector<KindCount> countsPerKind() const;
+
+    // Calls f(primitive) with primitive `id` as its own type, and returns what f returns.
+    template <class F>
+    decltype(auto) visit(std::uint32_t id, F&& f) const {
+        return visitFrom<0>(id, [&](const auto& a, std::uint32_t i) -> decltype(auto) { return f(a.items[i]); });
+    }
+
+    std::uint32_t material(std::uint32_t id) const {
+        return visitFrom<0>(id, [](const auto& a, std::uint32_t i) { return a.materials[i]; });
+    }
+    Aabb bounds(std::uint32_t id) const {
+        return visit(id, [](const auto& p) { return p.bounds(); });
+    }
     Aabb bounds() const;  // of everything
 
     // Nearest hit of primitive `id` closer than tMax; updates `hit` and returns true if found.
     bool intersect(std::uint32_t id, const Ray& ray, Real tMax, Hit& hit) const {
-        if (isSphere(id)) {
-            if (!intersectSphere(sphere(id), ray, tMax, hit.t)) return false;
-            hit.u = hit.v = 0;
-        } else if (!intersectTriangle(triangle(id), ray, tMax, hit.t, hit.u, hit.v)) {
-            return false;
-        }
+        if (!visit(id, [&](const auto& p) { return rt::intersect(p, ray, tMax, hit); })) return false;
         hit.prim = id;
         return true;
     }
-
+    // Whether primitive `id` is hit closer than tMax (shadow rays).
+    bool intersectsAny(std::uint32_t id, const Ray& ray, Real tMax) const {
+        return visit(id, [&](const auto& p) { return rt::intersectsAny(p, ray, tMax); });
+    }
     // Unit geometric normal at a point on primitive `id`.
     Vec3 normal(std::uint32_t id, const Vec3& point) const {
-        return isSphere(id) ? sphere(id).normal(point) : triangle(id).normal();
+        return visit(id, [&](const auto& p) { return p.normal(point); });
     }
 
     // Bytes held per primitive (geometry plus material index), for the statistics.
     std::size_t memoryBytes() const;
 
 private:
-    std::vector<Triangle> triangles_;
-    std::vector<std::uint32_t> triangleMaterials_;
-    std::vector<Sphere> spheres_;
-    std::vector<std::uint32_t> sphereMaterials_;
+    typename ArraysOf<PrimitiveKinds>::type arrays_;
 };
 
 }  // namespace rt

@@ -1,6 +1,7 @@
 // Sphere primitive: centre and radius, stored flat in Primitives::spheres.
 #pragma once
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -10,6 +11,10 @@
 namespace rt {
 
 struct Sphere {
+    static constexpr const char* kName = "sphere";
+    // A sphere test costs the trees about 0.4 of a triangle test (thesis 2.1.2: a miss needs
+    // no square root; measured as the best C_T/C_I ratio on each kind of scene, docs/trees.md).
+    static constexpr double kTestCost = 0.4;
     Vec3 center;
     Real radius = 0;
 
@@ -21,7 +26,14 @@ struct Sphere {
     // radius: a computed hit point lies off a small sphere by rounding, and a normal that is
     // not unit would make reflected directions that are not unit either (see intersectSphere).
     Vec3 normal(const Vec3& point) const { return normalize(point - center); }
+    Real area() const { return 4 * kPi * radius * radius; }
     bool degenerate() const { return !(radius > 0) || !std::isfinite(radius) || !isFinite(center); }
+    // Latitude and longitude from u and v (not uniform over the area: test rays need no more).
+    Vec3 surfacePoint(Real u, Real v) const {
+        const Real cosTheta = 1 - 2 * u, sinTheta = std::sqrt(std::max(Real(0), 1 - cosTheta * cosTheta));
+        const Real phi = 2 * kPi * v;
+        return center + Vec3{sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta} * radius;
+    }
 };
 
 // The geometric test of thesis 2.1.2 (Glassner, thesis [3]); the ray direction must be
@@ -44,6 +56,16 @@ inline bool intersectSphere(const Sphere& s, const Ray& ray, Real tMax, Real& t)
     if (!(tt > 0 && tt < tMax)) return false;
     t = tt;
     return true;
+}
+
+inline bool intersect(const Sphere& s, const Ray& ray, Real tMax, Hit& hit) {
+    if (!intersectSphere(s, ray, tMax, hit.t)) return false;
+    hit.u = hit.v = 0;
+    return true;
+}
+inline bool intersectsAny(const Sphere& s, const Ray& ray, Real tMax) {
+    Real t;
+    return intersectSphere(s, ray, tMax, t);
 }
 
 }  // namespace rt

@@ -7,6 +7,8 @@
 namespace rt {
 
 struct Triangle {
+    static constexpr const char* kName = "triangle";
+    static constexpr double kTestCost = 1;  // the unit the SAH's C_I is given in
     Vec3 p0, p1, p2;
 
     Aabb bounds() const {
@@ -18,8 +20,14 @@ struct Triangle {
     }
     // Geometric normal, unit length, oriented by the winding p0 -> p1 -> p2.
     Vec3 normal() const { return normalize(cross(p1 - p0, p2 - p0)); }
+    Vec3 normal(const Vec3& /*point*/) const { return normal(); }
     Real area() const { return Real(0.5) * length(cross(p1 - p0, p2 - p0)); }
     bool degenerate() const { return !(area() > 0) || !isFinite(p0) || !isFinite(p1) || !isFinite(p2); }
+    // Folds the unit square onto the triangle.
+    Vec3 surfacePoint(Real u, Real v) const {
+        if (u + v > 1) u = 1 - u, v = 1 - v;
+        return p0 + (p1 - p0) * u + (p2 - p0) * v;
+    }
 };
 
 // Moller-Trumbore (thesis [5]): a hit with 0 < t < tMax sets t, u and v and returns true.
@@ -44,6 +52,14 @@ inline bool intersectTriangle(const Triangle& tri, const Ray& ray, Real tMax, Re
     u = uu;
     v = vv;
     return true;
+}
+
+inline bool intersect(const Triangle& tri, const Ray& ray, Real tMax, Hit& hit) {
+    return intersectTriangle(tri, ray, tMax, hit.t, hit.u, hit.v);
+}
+inline bool intersectsAny(const Triangle& tri, const Ray& ray, Real tMax) {
+    Real t, u, v;
+    return intersectTriangle(tri, ray, tMax, t, u, v);
 }
 
 }  // namespace rt

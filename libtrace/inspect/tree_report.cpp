@@ -128,8 +128,7 @@ void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::op
     json.key("scene");
     json.beginObject();
     json.member("file", scene.file);
-    json.member("triangles", scene.triangles);
-    json.member("spheres", scene.spheres);
+    for (const KindCount& k : scene.primitives) json.member(k.name, k.count);
     json.member("lights", scene.lights);
     json.endObject();
     if (picture) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel/settings.h"
+#include "geometry/primitives.h"
 #include "inspect/depth_histogram.h"
 #include "inspect/ray_statistics.h"
 
@@ -24,8 +25,7 @@ struct TreeReport {
 
 struct SceneSummary {
     std::string file;
-    std::uint32_t triangles = 0;
-    std::uint32_t spheres = 0;
+    std::vector<KindCount> primitives;  // per kind, in the list's order
     std::uint32_t lights = 0;
 };
 

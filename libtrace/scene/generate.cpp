@@ -74,16 +74,16 @@ Scene generateScene(const SceneRecipe& recipe) {
     const double size = recipe.placement == Placement::Clustered ? spacing * 0.5 : spacing;
     Random random(recipe.seed);
     CentrePicker centres(recipe.placement, total, random);
-    scene.looseObjects.reserveTriangles(recipe.triangles);
-    while (scene.looseObjects.triangleCount() < recipe.triangles) {
+    scene.looseObjects.reserve<Triangle>(recipe.triangles);
+    while (scene.looseObjects.count<Triangle>() < recipe.triangles) {
         const Vec3 c = centres.next();
         const auto half = Real(size / 2);
         const Triangle t{c + random.inCube(half), c + random.inCube(half), c + random.inCube(half)};
-        if (t.area() > Real(1e-3) * half * half) scene.looseObjects.addTriangle(t, 0);  // no slivers
+        if (t.area() > Real(1e-3) * half * half) scene.looseObjects.add<Triangle>(t, 0);  // no slivers
     }
     for (std::size_t i = 0; i < recipe.spheres; ++i) {
         const Vec3 c = centres.next();
-        scene.looseObjects.addSphere({c, Real(size * random.uniform(0.2, 0.5))}, 1);
+        scene.looseObjects.add<Sphere>({c, Real(size * random.uniform(0.2, 0.5))}, 1);
     }
     scene.droppedDegenerate = scene.flatten();
     return scene;

@@ -30,7 +30,7 @@ std::size_t addInstance(const Model& model, const Instance& inst, Primitives& ou
         if (t.degenerate())
             ++dropped;
         else
-            out.addTriangle(t, inst.material);
+            out.add<Triangle>(t, inst.material);
     }
     const std::vector<float>& s = model.sphereData;
     const Real radiusScale = xf.maxScale();
@@ -39,7 +39,7 @@ std::size_t addInstance(const Model& model, const Instance& inst, Primitives& ou
         if (sp.degenerate())
             ++dropped;
         else
-            out.addSphere(sp, inst.material);
+            out.add<Sphere>(sp, inst.material);
     }
     return dropped;
 }
@@ -48,9 +48,9 @@ std::size_t addInstance(const Model& model, const Instance& inst, Primitives& ou
 
 std::size_t Scene::flatten() {
     primitives = Primitives();
-    std::size_t triangles = looseObjects.triangleCount();
+    std::size_t triangles = looseObjects.count<Triangle>();
     for (const Instance& inst : instances) triangles += models[inst.model].triangleCount();
-    primitives.reserveTriangles(triangles);
+    primitives.reserve<Triangle>(triangles);
     primitives.append(looseObjects);
     std::size_t dropped = 0;
     for (const Instance& inst : instances) dropped += addInstance(models[inst.model], inst, primitives);

@@ -50,8 +50,8 @@ void place(Scene& scene, Model model, std::uint32_t material, const Transform& t
 void addFloor(Scene& scene, Real half, Real height, std::uint32_t material) {
     Primitives& loose = scene.looseObjects;
     const Vec3 a{half, half, height}, b{-half, half, height}, c{-half, -half, height}, d{half, -half, height};
-    loose.addTriangle({a, b, c}, material);
-    loose.addTriangle({a, c, d}, material);
+    loose.add<Triangle>({a, b, c}, material);
+    loose.add<Triangle>({a, c, d}, material);
 }
 
 // The SPD's viewpoints have a 45 degree angle of view for a square picture; the thesis
@@ -303,7 +303,7 @@ Scene thesisShips() {
     scene.lights.push_back({{6, 8, -10}, {0.5f, 0.5f, 0.5f}, Real(0.1)});
     const auto blue = addMaterial(scene, {.name = "blue", .color = {0.7f, 0.7f, 1.0f}, .diffuse = 0.4f, .reflection = 0.4f});
     const auto steel = addMaterial(scene, {.name = "red_steel", .color = {1, 0, 0}, .diffuse = 0.6f, .specular = 0.3f});
-    scene.looseObjects.addSphere({{0, -1, 12}, Real(1.2)}, blue);
+    scene.looseObjects.add<Sphere>({{0, -1, 12}, Real(1.2)}, blue);
     Model hulls = namedModel("ships"), parts = namedModel("ship_parts");
     for (const Vec3& at : {Vec3{0, 0, 0}, Vec3{-100, -25, 90}, Vec3{100, 15, 90}, Vec3{0, 45, 180}})
         addShip(hulls, parts, Transform::translate(at) * Transform::scale({kShipSize, kShipSize, kShipSize}));

@@ -321,7 +321,7 @@ void SceneBuilder::addSphere(const XmlElement& e, const Transform& toWorld) {
     if (sphere.degenerate())
         ++dropped_;
     else
-        scene_.looseObjects.addSphere(sphere, material);
+        scene_.looseObjects.add<Sphere>(sphere, material);
 }
 
 // A quad is added as two triangles sharing the diagonal from its first to its third vertex.
@@ -337,7 +337,7 @@ void SceneBuilder::addPolygon(const XmlElement& e, const Transform& toWorld, std
         if (t.degenerate())
             ++dropped_;
         else
-            scene_.looseObjects.addTriangle(t, material);
+            scene_.looseObjects.add<Triangle>(t, material);
     }
 }
 

@@ -40,6 +40,20 @@ void setRgb(pugi::xml_node node, const Color& c) {
     setNumber(node, "b", c.b);
 }
 
+// A loose object as its element, one overload per primitive kind (the loader reads them back).
+pugi::xml_node addObject(pugi::xml_node parent, const Triangle& t) {
+    pugi::xml_node node = parent.append_child("triangle");
+    for (const Vec3& p : {t.p0, t.p1, t.p2}) setXyz(node.append_child("vertex"), p);
+    return node;
+}
+
+pugi::xml_node addObject(pugi::xml_node parent, const Sphere& s) {
+    pugi::xml_node node = parent.append_child("sphere");
+    setXyz(node, s.center);
+    setNumber(node, "r", s.radius);
+    return node;
+}
+
 // Names as written: non-empty and unique (case-insensitively when `caseless`, for file
 // names on case-insensitive file systems), so that every reference finds its target.
 std::vector<std::string> uniqueNames(std::vector<std::string> names, const std::string& fallback, bool caseless) {
@@ -157,17 +171,8 @@ void SceneXmlWriter::addModels(pugi::xml_node parent) const {
 void SceneXmlWriter::addObjects(pugi::xml_node parent) const {
     const Primitives& loose = scene_.looseObjects;
     for (std::uint32_t id = 0; id < loose.size(); ++id) {
-        if (loose.isSphere(id)) {
-            pugi::xml_node node = parent.append_child("sphere");
-            setXyz(node, loose.sphere(id).center);
-            setNumber(node, "r", loose.sphere(id).radius);
-            setMaterial(node, loose.material(id));
-            continue;
-        }
-        pugi::xml_node node = parent.append_child("triangle");
+        pugi::xml_node node = loose.visit(id, [&](const auto& p) { return addObject(parent, p); });
         setMaterial(node, loose.material(id));
-        const Triangle& t = loose.triangle(id);
-        for (const Vec3& p : {t.p0, t.p1, t.p2}) setXyz(node.append_child("vertex"), p);
     }
     for (const Instance& inst : scene_.instances) {
         pugi::xml_node at = parent;

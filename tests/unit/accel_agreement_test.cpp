@@ -45,14 +45,8 @@ struct TestRandom {
 
 // A point on primitive `id`: rays starting on a surface.
 Vec3 pointOn(const Primitives& prims, std::uint32_t id, TestRandom& random) {
-    if (prims.isSphere(id)) {
-        const Sphere& s = prims.sphere(id);
-        return s.center + random.direction() * s.radius;
-    }
-    const Triangle& t = prims.triangle(id);
-    Real u = random.uniform(0, 1), v = random.uniform(0, 1);
-    if (u + v > 1) u = 1 - u, v = 1 - v;
-    return t.p0 + (t.p1 - t.p0) * u + (t.p2 - t.p0) * v;
+    const Real u = random.uniform(0, 1), v = random.uniform(0, 1);
+    return prims.visit(id, [&](const auto& p) { return p.surfacePoint(u, v); });
 }
 
 Ray makeRay(const Primitives& prims, int i, TestRandom& random) {
@@ -141,20 +135,20 @@ Primitives hardCases() {
             v = {random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)};
             v[axis] = plane;
         }
-        prims.addTriangle({p[0], p[1], p[2]}, 0);
+        prims.add<Triangle>({p[0], p[1], p[2]}, 0);
     }
-    prims.addTriangle({{-5, -5, -0.9f}, {5, -5, -0.9f}, {0, 5, 0.9f}}, 0);  // huge, slanted
-    prims.addTriangle({{-4, 0.3f, -4}, {4, 0.3f, -4}, {0, 0.3f, 4}}, 0);    // huge, in a plane
+    prims.add<Triangle>({{-5, -5, -0.9f}, {5, -5, -0.9f}, {0, 5, 0.9f}}, 0);  // huge, slanted
+    prims.add<Triangle>({{-4, 0.3f, -4}, {4, 0.3f, -4}, {0, 0.3f, 4}}, 0);    // huge, in a plane
     for (int i = 0; i < 40; ++i) {                                          // tiny
         const Vec3 c{random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)};
-        prims.addTriangle({c, c + Vec3{Real(1e-4), 0, 0}, c + Vec3{0, Real(1e-4), Real(1e-5)}}, 0);
-        prims.addSphere({c, Real(1e-4)}, 0);
+        prims.add<Triangle>({c, c + Vec3{Real(1e-4), 0, 0}, c + Vec3{0, Real(1e-4), Real(1e-5)}}, 0);
+        prims.add<Sphere>({c, Real(1e-4)}, 0);
     }
-    const std::uint32_t n = prims.triangleCount();
-    for (std::uint32_t id = 0; id < n; id += 7) prims.addTriangle(prims.triangle(id), 0);  // coincident
-    prims.addSphere({{0.2f, 0.1f, 0}, Real(0.3)}, 0);
-    prims.addSphere({{0.2f, 0.1f, 0}, Real(0.3)}, 0);
-    prims.addSphere({{0, 0, 0}, Real(4)}, 0);  // everything is inside
+    const std::uint32_t n = prims.count<Triangle>();
+    for (std::uint32_t id = 0; id < n; id += 7) prims.add<Triangle>(prims.all<Triangle>()[id], 0);  // coincident
+    prims.add<Sphere>({{0.2f, 0.1f, 0}, Real(0.3)}, 0);
+    prims.add<Sphere>({{0.2f, 0.1f, 0}, Real(0.3)}, 0);
+    prims.add<Sphere>({{0, 0, 0}, Real(4)}, 0);  // everything is inside
     return prims;
 }
 

@@ -58,7 +58,7 @@ void expectBoundedAndCorrect(const Primitives& prims, int rays) {
 
 TEST(AccelPathological, HundredThousandIdenticalTriangles) {
     Primitives prims;
-    for (int i = 0; i < 100000; ++i) prims.addTriangle({{0, 0, 0}, {1, 0, 0}, {0, 1, Real(0.5)}}, 0);
+    for (int i = 0; i < 100000; ++i) prims.add<Triangle>({{0, 0, 0}, {1, 0, 0}, {0, 1, Real(0.5)}}, 0);
     expectBoundedAndCorrect(prims, 20);  // every tree is one leaf of 100,000: few rays
 }
 
@@ -69,20 +69,20 @@ TEST(AccelPathological, AllPrimitivesAtOnePoint) {
     std::uniform_real_distribution<Real> tiny(-1e-6f, 1e-6f);
     const Vec3 p{Real(0.3), Real(0.3), Real(0.3)};
     for (int i = 0; i < 20000; ++i)
-        prims.addTriangle({p, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}}, 0);
-    for (int i = 0; i < 1000; ++i) prims.addSphere({p, Real(1e-6)}, 0);
+        prims.add<Triangle>({p, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}}, 0);
+    for (int i = 0; i < 1000; ++i) prims.add<Sphere>({p, Real(1e-6)}, 0);
     expectBoundedAndCorrect(prims, 50);
 }
 
 TEST(AccelPathological, NestedSpheres) {
     // A thousand concentric shells: every plane near the centre cuts most of them.
     Primitives prims;
-    for (int i = 1; i <= 1000; ++i) prims.addSphere({{Real(0.3), Real(0.3), Real(0.3)}, Real(1e-3) * Real(i)}, 0);
+    for (int i = 1; i <= 1000; ++i) prims.add<Sphere>({{Real(0.3), Real(0.3), Real(0.3)}, Real(1e-3) * Real(i)}, 0);
     expectBoundedAndCorrect(prims, 500);
 }
 
 TEST(AccelPathological, OneHugeTriangleAmongManyTinyOnes) {
     Primitives prims = generateScene({20000, 0, Placement::Uniform, 12}).primitives;
-    prims.addTriangle({{-100, -100, -0.3f}, {100, -100, 0.2f}, {0, 100, 0.1f}}, 0);
+    prims.add<Triangle>({{-100, -100, -0.3f}, {100, -100, 0.2f}, {0, 100, 0.1f}}, 0);
     expectBoundedAndCorrect(prims, 200);
 }

@@ -19,8 +19,8 @@ std::vector<TreeNodeInfo> nodesOf(const Accelerator& tree) {
 // Scene bounds [0, 4] x [0, 2] x [0, 1], set by two small spheres in opposite corners.
 Primitives longBox() {
     Primitives prims;
-    prims.addSphere({{Real(0.1), Real(0.1), Real(0.1)}, Real(0.1)}, 0);
-    prims.addSphere({{Real(3.9), Real(1.9), Real(0.9)}, Real(0.1)}, 0);
+    prims.add<Sphere>({{Real(0.1), Real(0.1), Real(0.1)}, Real(0.1)}, 0);
+    prims.add<Sphere>({{Real(3.9), Real(1.9), Real(0.9)}, Real(0.1)}, 0);
     return prims;
 }
 
@@ -81,9 +81,9 @@ TEST(BspTree, SortsPrimitivesByExactOverlapNotBoundingBoxes) {
     // Scene [0, 2] x [0, 2] x [0, 1]. The triangle x + y >= 2.5 has bounds [0.5, 2]^2, which
     // reach into the voxel [0, 1]^2 of depth 2; the triangle itself does not.
     Primitives prims;
-    prims.addSphere({{Real(0.05), Real(0.05), Real(0.05)}, Real(0.05)}, 0);
-    prims.addSphere({{Real(1.95), Real(1.95), Real(0.95)}, Real(0.05)}, 0);
-    prims.addTriangle({{Real(0.5), 2, Real(0.5)}, {2, Real(0.5), Real(0.5)}, {2, 2, Real(0.5)}}, 0);
+    prims.add<Sphere>({{Real(0.05), Real(0.05), Real(0.05)}, Real(0.05)}, 0);
+    prims.add<Sphere>({{Real(1.95), Real(1.95), Real(0.95)}, Real(0.05)}, 0);
+    prims.add<Triangle>({{Real(0.5), 2, Real(0.5)}, {2, Real(0.5), Real(0.5)}, {2, 2, Real(0.5)}}, 0);
     BspSettings settings;
     settings.minPrimitives = 0;
     settings.maxDepth = 2;

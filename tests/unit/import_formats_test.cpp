@@ -230,7 +230,7 @@ TEST(ImportFormats, ColladaMeshPlacedTwiceIsOneModelWithTwoInstances) {
     expectNear(origins[0], {-3, 0, 0});
     expectNear(origins[1], {4, 2, 1});
     r.scene.flatten();
-    EXPECT_EQ(r.scene.primitives.triangleCount(), 2u);
+    EXPECT_EQ(r.scene.primitives.count<Triangle>(), 2u);
 }
 
 // A Collada file says its up axis itself, and Assimp applies it; --up-axis, when given, takes

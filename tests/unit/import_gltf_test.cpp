@@ -147,7 +147,7 @@ TEST(ImportGltf, HierarchyComposesParentTimesLocal) {
     ImportResult r = importScene(dir.write("h.gltf", f.json()));
     ASSERT_EQ(r.scene.instances.size(), 1u);
     r.scene.flatten();
-    const Triangle t = r.scene.primitives.triangle(0);
+    const Triangle t = r.scene.primitives.all<Triangle>()[0];
     expectNear(t.p0, {1, 0, 0}, kLoose);
     expectNear(t.p1, {1, 0, -2}, kLoose);
     expectNear(t.p2, {1, 2, 0}, kLoose);
@@ -161,7 +161,7 @@ TEST(ImportGltf, ScaleAndUpAxisApplyAtTheRoot) {
     o.upAxis = UpAxis::Z;
     ImportResult r = importScene(path, o);
     r.scene.flatten();
-    const Triangle t = r.scene.primitives.triangle(0);
+    const Triangle t = r.scene.primitives.all<Triangle>()[0];
     expectNear(t.p1, {3, 0, 0}, kLoose);
     expectNear(t.p2, {0, 0, -3}, kLoose);  // +y of a Z-up file points away from the viewer
 }
@@ -275,7 +275,7 @@ TEST(ImportGltf, SparseAccessorsReplaceTheirElements) {
         R"( "values": {"bufferView": 0, "byteOffset": 36}}})");
     ImportResult r = importScene(dir.write("sparse.gltf", json));
     r.scene.flatten();
-    expectNear(r.scene.primitives.triangle(0).p0, {5, 5, 5}, kLoose);
+    expectNear(r.scene.primitives.all<Triangle>()[0].p0, {5, 5, 5}, kLoose);
 }
 
 // Debian's Assimp aborts on these two files; they must reach tinygltf whatever their name.

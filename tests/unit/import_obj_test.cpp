@@ -100,9 +100,9 @@ TEST(ImportObj, RelativeIndicesAndPolygons) {
     const ImportResult r = importScene(dir.write("m.obj", std::string(kSquare) + "f -4 -3 -2 -1\nv 0.5 2 0\nf 1 2 3 5 4\n"));
     ImportResult copy = r;
     copy.scene.flatten();
-    ASSERT_EQ(copy.scene.primitives.triangleCount(), 5u);
+    ASSERT_EQ(copy.scene.primitives.count<Triangle>(), 5u);
     double area = 0;
-    for (std::size_t i = 0; i < 5; ++i) area += triangleArea(copy.scene.primitives.triangle(i));
+    for (std::size_t i = 0; i < 5; ++i) area += triangleArea(copy.scene.primitives.all<Triangle>()[i]);
     EXPECT_NEAR(area, 1 + 1.5, 1e-6);  // the unit square, then the square with a roof
 }
 
@@ -149,8 +149,8 @@ TEST(ImportObj, ZUpModelsAreTurnedToYUp) {
     ImportResult turned = importScene(path, o);
     plain.scene.flatten();
     turned.scene.flatten();
-    ASSERT_EQ(plain.scene.primitives.triangleCount(), turned.scene.primitives.triangleCount());
-    const Triangle a = plain.scene.primitives.triangle(0), b = turned.scene.primitives.triangle(0);
+    ASSERT_EQ(plain.scene.primitives.count<Triangle>(), turned.scene.primitives.count<Triangle>());
+    const Triangle a = plain.scene.primitives.all<Triangle>()[0], b = turned.scene.primitives.all<Triangle>()[0];
     expectNear(b.p0, {a.p0.x, a.p0.z, -a.p0.y}, Real(1e-5));  // (x, y, z) -> (x, z, -y)
 }
 
@@ -208,9 +208,9 @@ TEST(ImportObj, RepeatedCornersAreDropped) {
     ImportResult r = importScene(dir.write("m.obj", "v 0 0 0\nv 2 1 0\nv 0 2 0\nv 1 1 0\nf 1 2 2 3 4\n"));
     EXPECT_EQ(r.report.droppedDegenerate, 1u);
     r.scene.flatten();
-    ASSERT_EQ(r.scene.primitives.triangleCount(), 2u);
+    ASSERT_EQ(r.scene.primitives.count<Triangle>(), 2u);
     double area = 0;
-    for (std::size_t i = 0; i < 2; ++i) area += triangleArea(r.scene.primitives.triangle(i));
+    for (std::size_t i = 0; i < 2; ++i) area += triangleArea(r.scene.primitives.all<Triangle>()[i]);
     EXPECT_NEAR(area, 1, 1e-6);  // the arrowhead's area, not more
 }
 

@@ -25,10 +25,10 @@ std::size_t rawFilesIn(const std::string& folder) {
 }
 
 void expectSameTriangles(const Primitives& a, const Primitives& b) {
-    ASSERT_EQ(a.triangleCount(), b.triangleCount());
-    for (std::uint32_t i = 0; i < a.triangleCount(); ++i) {
-        expectNear(a.triangle(i).p0, b.triangle(i).p0, Real(1e-5));
-        expectNear(a.triangle(i).p2, b.triangle(i).p2, Real(1e-5));
+    ASSERT_EQ(a.count<Triangle>(), b.count<Triangle>());
+    for (std::uint32_t i = 0; i < a.count<Triangle>(); ++i) {
+        expectNear(a.all<Triangle>()[i].p0, b.all<Triangle>()[i].p0, Real(1e-5));
+        expectNear(a.all<Triangle>()[i].p2, b.all<Triangle>()[i].p2, Real(1e-5));
         EXPECT_EQ(a.material(i), b.material(i));
     }
 }
@@ -64,7 +64,7 @@ INSTANTIATE_TEST_SUITE_P(Models, ImportRoundTrip,
 TEST(ImportLoadScene, ReadsModelFilesDirectly) {
     SKIP_WITHOUT_SHARED_MODELS();
     const Scene scene = loadScene(sharedModels() + "/glb/2CylinderEngine/2CylinderEngine.glb");
-    EXPECT_EQ(scene.primitives.triangleCount(), 121496u - scene.droppedDegenerate);
+    EXPECT_EQ(scene.primitives.count<Triangle>(), 121496u - scene.droppedDegenerate);
     EXPECT_FALSE(scene.warnings.empty());  // the generated light is reported
 }
 
@@ -72,7 +72,7 @@ TEST(ImportLoadScene, ReadsXmlThroughTheSceneLoader) {
     SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     saveSceneXml(importScene(sharedModels() + "/gltf/Box/Box.gltf").scene, dir.path("box.xml"));
-    EXPECT_EQ(loadScene(dir.path("box.xml")).primitives.triangleCount(), 12u);
+    EXPECT_EQ(loadScene(dir.path("box.xml")).primitives.count<Triangle>(), 12u);
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ private:
 Scene clusterAndLoneSphere() {
     Scene scene = sceneLookingDownZ();
     addSphereCluster(scene, {-4, -0.75, 10}, 6, Real(0.3), Real(0.12));
-    scene.looseObjects.addSphere({{3, 0, 10}, 1}, 0);
+    scene.looseObjects.add<Sphere>({{3, 0, 10}, 1}, 0);
     scene.flatten();
     return scene;
 }

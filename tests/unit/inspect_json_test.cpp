@@ -141,7 +141,7 @@ Json parse(const std::string& text) { return JsonReader(text).document(); }
 
 Scene oneSphereScene() {
     Scene scene = sceneLookingDownZ();
-    scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
+    scene.looseObjects.add<Sphere>({{0, 0, 5}, 1}, 0);
     scene.lights.push_back({{0, 0, 0}});
     scene.flatten();
     return scene;
@@ -202,7 +202,7 @@ TEST(ReportJson, OneSphereWithTheNaiveList) {
     report.depths = depthHistogram(naive);
 
     std::ostringstream out;
-    writeReportJson(out, {"one \"sphere\".xml", 0, 1, 1}, rays, {report});
+    writeReportJson(out, {"one \"sphere\".xml", {{"triangles", 0}, {"spheres", 1}}, 1}, rays, {report});
     const Json j = parse(out.str());
     EXPECT_EQ(j["scene"]["file"].str(), "one \"sphere\".xml");
     EXPECT_EQ(j["scene"]["spheres"].num(), 1);

@@ -30,8 +30,8 @@ std::uint64_t cameraHits(const Scene& scene, const Accelerator& accel, const Ren
 
 TEST(RayStatistics, CameraRaysOnly) {
     Scene scene = sceneLookingDownZ();
-    scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
-    scene.looseObjects.addSphere({{1, 0, 9}, 1}, 0);
+    scene.looseObjects.add<Sphere>({{0, 0, 5}, 1}, 0);
+    scene.looseObjects.add<Sphere>({{1, 0, 9}, 1}, 0);
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
     RenderSettings options;
@@ -47,7 +47,7 @@ TEST(RayStatistics, CameraRaysOnly) {
 
 TEST(RayStatistics, OneShadowRayPerHitAndLightInFront) {
     Scene scene = sceneLookingDownZ();
-    scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
+    scene.looseObjects.add<Sphere>({{0, 0, 5}, 1}, 0);
     scene.lights.push_back({{0, 0, 0}});     // at the camera: in front of every visible point
     scene.lights.push_back({{0, 0, 100}});  // behind the sphere: in front of no visible point
     scene.flatten();
@@ -74,7 +74,7 @@ TEST(RayStatistics, ReflectionsBounceUpToTheDepth) {
     scene.materials = {mirror};
     const Real s = 1000;
     for (const Real z : {Real(5), Real(-5)}) {
-        scene.looseObjects.addTriangle({{-s, -s, z}, {s, -s, z}, {0, s, z}}, 0);
+        scene.looseObjects.add<Triangle>({{-s, -s, z}, {s, -s, z}, {0, s, z}}, 0);
     }
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
@@ -92,7 +92,7 @@ TEST(RayStatistics, ReflectionsBounceUpToTheDepth) {
 
 TEST(RayStatistics, MatteSurfacesDoNotReflect) {
     Scene scene = sceneLookingDownZ();
-    scene.looseObjects.addSphere({{0, 0, 5}, 1}, 0);
+    scene.looseObjects.add<Sphere>({{0, 0, 5}, 1}, 0);
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
     RenderSettings options;
@@ -107,7 +107,7 @@ TEST(RayStatistics, SameCountsWithOneOrTwoThreads) {
     Material mirror;
     mirror.reflection = 0.5f;
     scene.materials = {mirror};
-    for (int i = 0; i < 5; ++i) scene.looseObjects.addSphere({{Real(i) - 2, 0, 6}, Real(0.6)}, 0);
+    for (int i = 0; i < 5; ++i) scene.looseObjects.add<Sphere>({{Real(i) - 2, 0, 6}, Real(0.6)}, 0);
     scene.lights.push_back({{3, 3, 0}});
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
@@ -128,7 +128,7 @@ TEST(RayStatistics, SameCountsWithOneOrTwoThreads) {
 
 TEST(RayStatistics, CameraRayWorkPerPixel) {
     Scene scene = sceneLookingDownZ();
-    for (int i = 0; i < 3; ++i) scene.looseObjects.addSphere({{0, 0, Real(5 + 3 * i)}, 1}, 0);
+    for (int i = 0; i < 3; ++i) scene.looseObjects.add<Sphere>({{0, 0, Real(5 + 3 * i)}, 1}, 0);
     scene.lights.push_back({{0, 0, 0}});
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);
@@ -148,7 +148,7 @@ TEST(RayStatistics, CameraRayWorkPerPixel) {
 // of the picture stays at its camera ray's 3.
 TEST(RayStatistics, AllRaysWorkPerPixelAddsShadowRays) {
     Scene scene = sceneLookingDownZ();
-    for (int i = 0; i < 3; ++i) scene.looseObjects.addSphere({{0, 0, Real(5 + 3 * i)}, 1}, 0);
+    for (int i = 0; i < 3; ++i) scene.looseObjects.add<Sphere>({{0, 0, Real(5 + 3 * i)}, 1}, 0);
     scene.lights.push_back({{0, 0, 0}});
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);

@@ -21,7 +21,7 @@ inline void addSphereCluster(Scene& scene, const Vec3& corner, int n, Real spaci
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j)
             for (int k = 0; k < n; ++k)
-                scene.looseObjects.addSphere({corner + Vec3(Real(i), Real(j), Real(k)) * spacing, radius}, 0);
+                scene.looseObjects.add<Sphere>({corner + Vec3(Real(i), Real(j), Real(k)) * spacing, radius}, 0);
 }
 
 }  // namespace rt

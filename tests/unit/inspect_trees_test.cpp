@@ -40,7 +40,7 @@ protected:
 
 TEST_P(InspectTrees, OneSphereIsOneLeaf) {
     Scene scene = sceneLookingDownZ(90);
-    scene.looseObjects.addSphere({{0, 0, 10}, 2}, 0);
+    scene.looseObjects.add<Sphere>({{0, 0, 10}, 2}, 0);
     scene.flatten();
     const auto accel = build(scene);
     const AccelStats s = accel->stats();
@@ -91,7 +91,7 @@ TEST_P(InspectTrees, TwoClustersSplitBetweenThem) {
 TEST_P(InspectTrees, DenseClusterIsHottest) {
     Scene scene = sceneLookingDownZ(60);
     addCluster(scene, {3.25, -1.75, 20}, 8);  // 512 spheres, on the left of the picture (+x is left)
-    for (const Real x : {Real(-8), Real(-4), Real(0)}) scene.looseObjects.addSphere({{x, 0, 20}, Real(1.5)}, 0);
+    for (const Real x : {Real(-8), Real(-4), Real(0)}) scene.looseObjects.add<Sphere>({{x, 0, 20}, Real(1.5)}, 0);
     scene.flatten();
     const auto accel = build(scene);
     const int w = 120, h = 90;

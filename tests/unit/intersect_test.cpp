@@ -130,11 +130,11 @@ TEST(Triangle, DegenerateTriangles) {
 
 TEST(Primitives, IdsRunOverTrianglesThenSpheres) {
     Primitives prims;
-    prims.addSphere(kUnitSphere, 7);
-    prims.addTriangle(kTriangle, 3);
+    prims.add<Sphere>(kUnitSphere, 7);
+    prims.add<Triangle>(kTriangle, 3);
     ASSERT_EQ(prims.size(), 2u);
-    EXPECT_FALSE(prims.isSphere(0));
-    EXPECT_TRUE(prims.isSphere(1));
+    EXPECT_EQ(prims.visit(0, [](const auto& p) { return std::string(p.kName); }), "triangle");
+    EXPECT_EQ(prims.visit(1, [](const auto& p) { return std::string(p.kName); }), "sphere");
     EXPECT_EQ(prims.material(0), 3u);
     EXPECT_EQ(prims.material(1), 7u);
     EXPECT_EQ(prims.bounds(), (Aabb{{-1, -1, -1}, {1, 1, 1}}));
@@ -142,7 +142,7 @@ TEST(Primitives, IdsRunOverTrianglesThenSpheres) {
 
 TEST(Primitives, StoreUnderHundredBytesPerTriangle) {
     Primitives prims;
-    prims.reserveTriangles(1000);
-    for (int i = 0; i < 1000; ++i) prims.addTriangle(kTriangle, 0);
+    prims.reserve<Triangle>(1000);
+    for (int i = 0; i < 1000; ++i) prims.add<Triangle>(kTriangle, 0);
     EXPECT_LT(prims.memoryBytes() / prims.size(), 100u);
 }

@@ -161,7 +161,7 @@ TEST(KdTree, DepthLimitGrowsWithLogN) {
 
 TEST(KdTree, LeafWhenNoSplitBeatsIt) {
     Primitives one;
-    one.addTriangle({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 0);
+    one.add<Triangle>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 0);
     EXPECT_EQ(buildKdTree(one, KdSettings{})->stats().nodes, 1u);
     const Primitives prims = generateScene({500, 0, Placement::Uniform, 8}).primitives;
     KdSettings costlyTraversal;
@@ -175,7 +175,7 @@ TEST(KdTree, CutsOffEmptySpaceFirst) {
     // tiny sphere): the first planes wrap the cluster, leaving large empty leaves.
     Primitives prims = generateScene({2000, 0, Placement::Uniform, 9}).primitives;
     const Aabb cluster = prims.bounds();
-    prims.addSphere({{20, 20, 20}, Real(0.01)}, 0);
+    prims.add<Sphere>({{20, 20, 20}, Real(0.01)}, 0);
     const auto tree = buildKdTree(prims, KdSettings{});
     std::vector<TreeNodeInfo> nodes;
     tree->forEachNode([&](const TreeNodeInfo& n) { nodes.push_back(n); });

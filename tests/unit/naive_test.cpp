@@ -6,9 +6,9 @@ using namespace rt;
 
 TEST(NaiveAccelerator, FindsTheNearestOfSeveral) {
     Primitives prims;
-    prims.addSphere({{0, 0, 10}, 1}, 0);
-    prims.addSphere({{0, 0, 5}, 1}, 0);
-    prims.addTriangle({{-1, -1, 7}, {1, -1, 7}, {0, 1, 7}}, 0);
+    prims.add<Sphere>({{0, 0, 10}, 1}, 0);
+    prims.add<Sphere>({{0, 0, 5}, 1}, 0);
+    prims.add<Triangle>({{-1, -1, 7}, {1, -1, 7}, {0, 1, 7}}, 0);
     NaiveAccelerator naive(prims);
     RayCounters counters;
     Hit hit;
@@ -20,7 +20,7 @@ TEST(NaiveAccelerator, FindsTheNearestOfSeveral) {
 
 TEST(NaiveAccelerator, OccludedOnlyCloserThanTMax) {
     Primitives prims;
-    prims.addSphere({{0, 0, 10}, 1}, 0);
+    prims.add<Sphere>({{0, 0, 10}, 1}, 0);
     NaiveAccelerator naive(prims);
     RayCounters counters;
     EXPECT_TRUE(naive.occluded({{0, 0, 0}, {0, 0, 1}}, 20, counters));

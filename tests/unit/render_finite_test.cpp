@@ -89,7 +89,7 @@ Scene smallReflectiveSphereField() {
         for (int j = 0; j < n; ++j)
             for (int k = 0; k < n; ++k) {
                 const Vec3 lattice = Vec3{Real(i), Real(j), Real(k)} * spacing - Vec3{half, half, half};
-                s.looseObjects.addSphere({lattice + Vec3{jitter(), jitter(), jitter()}, Real(0.006)}, chrome);
+                s.looseObjects.add<Sphere>({lattice + Vec3{jitter(), jitter(), jitter()}, Real(0.006)}, chrome);
             }
     s.lights.push_back({{2, 1, 3}, {0.6f, 0.6f, 0.6f}, 0});
     s.lights.push_back({{-1, 2, 1}, {0.5f, 0.4f, 0.3f}, 0});
@@ -118,7 +118,7 @@ Scene sphereUnderAnInfiniteLight() {
     s.camera.destination = {0, 0, 0};
     s.camera.fovDegrees = 20;
     test::addMaterial(s, {.name = "magenta", .color = {1, 0, 1}, .ambient = 0.1f, .diffuse = 0.8f});
-    s.looseObjects.addSphere({{0, 0, 0}, 1}, 0);
+    s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, 0);
     const float inf = std::numeric_limits<float>::infinity();
     s.lights.push_back({{0, 5, -10}, {inf, inf, inf}, 0});
     s.flatten();
@@ -146,7 +146,7 @@ TEST(RenderFinite, SmallReflectiveSpheresStayWithinThePhongBoundAtDepth10) {
 
 TEST(RenderFinite, BallsSceneIsFiniteAtDepth10) {
     const Scene balls = ballsScene();
-    ASSERT_EQ(balls.primitives.sphereCount(), 7381u);
+    ASSERT_EQ(balls.primitives.count<Sphere>(), 7381u);
     expectFiniteAndBounded(balls, 100, 75, 10);
 }
 

@@ -22,8 +22,8 @@ inline std::uint32_t addMaterial(Scene& s, Material m) {
 
 // A quad as two triangles, corners in order around its edge.
 inline void addQuad(Scene& s, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, std::uint32_t material) {
-    s.looseObjects.addTriangle({a, b, c}, material);
-    s.looseObjects.addTriangle({a, c, d}, material);
+    s.looseObjects.add<Triangle>({a, b, c}, material);
+    s.looseObjects.add<Triangle>({a, c, d}, material);
 }
 
 // Three spheres (diffuse with a highlight, mirror, glossy) on a floor, two lights with a
@@ -43,9 +43,9 @@ inline Scene spheresOnFloor() {
     const auto glossy = addMaterial(s, {.name = "glossy", .color = {0.3f, 0.5f, 0.9f}, .ambient = 0.1f,
                                         .diffuse = 0.5f, .reflection = 0.5f, .spread = 0.15f});
     addQuad(s, {-6, 0, -6}, {-6, 0, 6}, {6, 0, 6}, {6, 0, -6}, floor);
-    s.looseObjects.addSphere({{-1.8, 0.8, 0.5}, 0.8}, red);
-    s.looseObjects.addSphere({{0.2, 1.1, 1.2}, 1.1}, mirror);
-    s.looseObjects.addSphere({{2.0, 0.6, -0.3}, 0.6}, glossy);
+    s.looseObjects.add<Sphere>({{-1.8, 0.8, 0.5}, 0.8}, red);
+    s.looseObjects.add<Sphere>({{0.2, 1.1, 1.2}, 1.1}, mirror);
+    s.looseObjects.add<Sphere>({{2.0, 0.6, -0.3}, 0.6}, glossy);
     s.lights.push_back({{-4, 6, -4}, {0.7f, 0.7f, 0.65f}, 0.8});
     s.lights.push_back({{5, 4, -2}, {0.3f, 0.3f, 0.35f}, 0.4});
     s.flatten();

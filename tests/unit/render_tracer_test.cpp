@@ -19,7 +19,7 @@ Scene litSphere() {
     s.camera.destination = {0, 0, 0};
     s.camera.fovDegrees = 30;
     test::addMaterial(s, {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .ambient = 0.2f, .diffuse = 0.6f});
-    s.looseObjects.addSphere({{0, 0, 0}, 1}, 0);
+    s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, 0);
     s.lights.push_back({{0, 0, -10}, {0.5f, 0.5f, 0.5f}, 0});
     s.lights.push_back({{0, 0, 10}, {0.25f, 0.25f, 0.25f}, 0});  // behind the sphere: ambient only
     s.flatten();
@@ -61,7 +61,7 @@ TEST(Tracer, ShadowsDarkenTheFloorUnderASphere) {
     Scene s;
     test::addMaterial(s, {.name = "grey", .color = {1, 1, 1}, .ambient = 0.1f, .diffuse = 0.9f});
     test::addQuad(s, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);
-    s.looseObjects.addSphere({{0, 5, 0}, 1}, 0);
+    s.looseObjects.add<Sphere>({{0, 5, 0}, 1}, 0);
     s.lights.push_back({{0, 8, 0}, {1, 1, 1}, 0});
     s.flatten();
     const NaiveAccelerator accel(s.primitives);
@@ -88,7 +88,7 @@ TEST(Tracer, SoftShadowsGiveAPenumbra) {
     Scene s;
     test::addMaterial(s, {.name = "grey", .color = {1, 1, 1}, .ambient = 0, .diffuse = 1});
     test::addQuad(s, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);
-    s.looseObjects.addSphere({{0, 5, 0}, 1}, 0);
+    s.looseObjects.add<Sphere>({{0, 5, 0}, 1}, 0);
     s.lights.push_back({{0, 8, 0}, {1, 1, 1}, 1});
     s.flatten();
     const NaiveAccelerator accel(s.primitives);
@@ -157,7 +157,7 @@ TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
 TEST(Tracer, EpsilonScalesWithTheScene) {
     Scene a = litSphere();
     Scene b = litSphere();
-    b.looseObjects.addSphere({{1000, 0, 0}, 1}, 0);
+    b.looseObjects.add<Sphere>({{1000, 0, 0}, 1}, 0);
     b.flatten();
     const NaiveAccelerator accelA(a.primitives), accelB(b.primitives);
     const Tracer ta(a, accelA, test::picture(4, 4)), tb(b, accelB, test::picture(4, 4));

@@ -17,8 +17,8 @@ Scene bundled(const std::string& name) { return loadSceneXml(RT_SOURCE_DIR "/sce
 
 TEST(SceneBundled, Spheres) {
     const Scene scene = bundled("spheres.xml");
-    EXPECT_EQ(scene.primitives.triangleCount(), 2u);  // the floor quad
-    EXPECT_EQ(scene.primitives.sphereCount(), 6u);
+    EXPECT_EQ(scene.primitives.count<Triangle>(), 2u);  // the floor quad
+    EXPECT_EQ(scene.primitives.count<Sphere>(), 6u);
     EXPECT_EQ(scene.materials.size(), 5u);            // four named and the default
     EXPECT_EQ(scene.lights.size(), 2u);
     EXPECT_TRUE(scene.warnings.empty());
@@ -28,15 +28,15 @@ TEST(SceneBundled, Transforms) {
     const Scene scene = bundled("transforms.xml");
     EXPECT_EQ(scene.models.size(), 2u);
     EXPECT_EQ(scene.instances.size(), 8u);
-    EXPECT_EQ(scene.primitives.triangleCount(), 2u + 6 * 8);  // floor and six octahedra
-    EXPECT_EQ(scene.primitives.sphereCount(), 2u * 6);       // two atoms
+    EXPECT_EQ(scene.primitives.count<Triangle>(), 2u + 6 * 8);  // floor and six octahedra
+    EXPECT_EQ(scene.primitives.count<Sphere>(), 2u * 6);       // two atoms
     EXPECT_TRUE(scene.warnings.empty());
 }
 
 TEST(SceneBundled, Inline) {
     const Scene scene = bundled("inline.xml");
     EXPECT_EQ(scene.models.at(0).triangleCount(), 8u);
-    EXPECT_EQ(scene.primitives.triangleCount(), 2u + 1 + 2 * 8);
+    EXPECT_EQ(scene.primitives.count<Triangle>(), 2u + 1 + 2 * 8);
     EXPECT_NEAR(scene.camera.focalPixels(800), 630, 1e-3);  // f in pixels, zoom in percent
     EXPECT_TRUE(scene.warnings.empty());
 }
@@ -61,5 +61,5 @@ TEST(Scene, DropDescriptionKeepsThePrimitives) {
     EXPECT_TRUE(scene.models.empty());
     EXPECT_TRUE(scene.instances.empty());
     ASSERT_EQ(scene.primitives.size(), 1u);
-    EXPECT_EQ(scene.primitives.triangle(0).p0.z, 5);
+    EXPECT_EQ(scene.primitives.all<Triangle>()[0].p0.z, 5);
 }

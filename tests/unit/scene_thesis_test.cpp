@@ -27,8 +27,8 @@ TEST(ThesisScenes, HaveTheCountsOfTable41) {
     for (const Table41Row& row : kTable41) {
         SCOPED_TRACE(row.name);
         const rt::Scene scene = rt::thesisScene(row.name);
-        EXPECT_EQ(scene.primitives.triangleCount(), row.triangles);
-        EXPECT_EQ(scene.primitives.sphereCount(), row.spheres);
+        EXPECT_EQ(scene.primitives.count<rt::Triangle>(), row.triangles);
+        EXPECT_EQ(scene.primitives.count<rt::Sphere>(), row.spheres);
         EXPECT_EQ(scene.lights.size(), row.lights);
         EXPECT_EQ(scene.droppedDegenerate, 0u);
     }
@@ -52,7 +52,7 @@ TEST(ThesisScenes, UnknownNameIsAnInputError) {
 // the first sphere's nine children are three above its equator and six on it.
 TEST(ThesisScenes, SphereflakeChildrenTouchTheirParent) {
     const rt::Scene scene = rt::thesisBalls();
-    const auto& spheres = scene.primitives.spheres();
+    const auto& spheres = scene.primitives.all<rt::Sphere>();
     const rt::Sphere& root = spheres[0];
     EXPECT_NEAR(root.radius, 0.5, kTol);
     int above = 0, onEquator = 0;

@@ -13,8 +13,8 @@ struct TwoSpheres {
     std::unique_ptr<SplitTree> tree;
 
     TwoSpheres() {
-        prims.addSphere({{0, 0, Real(-1.5)}, Real(0.5)}, 0);
-        prims.addSphere({{0, 0, Real(0.5)}, Real(0.5)}, 0);
+        prims.add<Sphere>({{0, 0, Real(-1.5)}, Real(0.5)}, 0);
+        prims.add<Sphere>({{0, 0, Real(0.5)}, Real(0.5)}, 0);
         FlatTree flat;
         flat.nodes.push_back(SplitNode::inner(2, 0.0f, 2));
         flat.addLeaf({0});

@@ -103,9 +103,9 @@ TEST(XmlLoader, ThesisExampleLoadsAsWritten) {
     EXPECT_EQ(scene.models[0].format, Model::Format::Max3ds);
     EXPECT_EQ(scene.models[0].triangleCount(), 768u);  // MANIFEST.md: fels.3ds has 768 triangles
 
-    ASSERT_EQ(scene.looseObjects.sphereCount(), 1u);
-    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(0, -1, 12));
-    EXPECT_EQ(scene.looseObjects.sphere(0).radius, Real(1.2));
+    ASSERT_EQ(scene.looseObjects.count<Sphere>(), 1u);
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].center, Vec3(0, -1, 12));
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].radius, Real(1.2));
     EXPECT_EQ(scene.looseObjects.material(0), 0u);
 
     // "first scaled by 0.025, then rotated about y by pi, and finally translated by -3 on x and 4.5 on z"
@@ -120,8 +120,8 @@ TEST(XmlLoader, ThesisExampleLoadsAsWritten) {
     EXPECT_EQ(scene.lights[0].color, Color(0.8f, 0.8f, 0.8f));
     EXPECT_EQ(scene.lights[0].size, Real(0.1));
 
-    EXPECT_EQ(scene.primitives.sphereCount(), 1u);
-    EXPECT_EQ(scene.primitives.triangleCount() + scene.droppedDegenerate, 768u);
+    EXPECT_EQ(scene.primitives.count<Sphere>(), 1u);
+    EXPECT_EQ(scene.primitives.count<Triangle>() + scene.droppedDegenerate, 768u);
 }
 
 TEST(XmlLoader, ModelPathsResolveAgainstTheSceneFolder) {
@@ -134,7 +134,7 @@ TEST(XmlLoader, ModelPathsResolveAgainstTheSceneFolder) {
     const Scene scene = loadSceneXml(path);
     EXPECT_EQ(scene.models[0].file, "models/tri.raw");
     EXPECT_EQ(scene.models[0].format, Model::Format::Raw);  // from the extension
-    EXPECT_EQ(scene.primitives.triangleCount(), 1u);
+    EXPECT_EQ(scene.primitives.count<Triangle>(), 1u);
 }
 
 TEST(XmlLoader, NestedTransformsApplyOuterFirst) {
@@ -142,70 +142,70 @@ TEST(XmlLoader, NestedTransformsApplyOuterFirst) {
     const Scene scene = load(R"(<objects><translate x="1"><scale factor="2">
         <sphere x="0" y="0" z="0" r="1"/>
         </scale></translate></objects>)");
-    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(2, 0, 0));
-    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 2);
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].center, Vec3(2, 0, 0));
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].radius, 2);
     // The other way round, the translation is not scaled.
     const Scene inner = load(R"(<objects><scale factor="2"><translate x="1">
         <sphere x="0" y="0" z="0" r="1"/></translate></scale></objects>)");
-    EXPECT_EQ(inner.looseObjects.sphere(0).center, Vec3(1, 0, 0));
+    EXPECT_EQ(inner.looseObjects.all<Sphere>()[0].center, Vec3(1, 0, 0));
 }
 
 TEST(XmlLoader, RotateAppliesXThenYThenZ) {
     // X first takes +Y to +Z, then Y takes +Z to +X; the other order would give +Z.
     const Scene scene = load(R"(<objects><rotate x="90" y="90"><sphere y="1" r="1"/></rotate></objects>)");
-    expectNear(scene.looseObjects.sphere(0).center, {1, 0, 0});
+    expectNear(scene.looseObjects.all<Sphere>()[0].center, {1, 0, 0});
     const Scene z = load(R"(<objects><rotate z="90"><sphere x="1" r="1"/></rotate></objects>)");
-    expectNear(z.looseObjects.sphere(0).center, {0, 1, 0});  // right-handed
+    expectNear(z.looseObjects.all<Sphere>()[0].center, {0, 1, 0});  // right-handed
 }
 
 TEST(XmlLoader, RotateInMultiplesOfPiMatchesDegrees) {
     const Scene scene = load(R"(<objects>
         <rotate rx="0.5" ry="-0.25" rz="1.5"><sphere x="1" y="2" z="3" r="1"/></rotate>
         <rotate x="90" y="-45" z="270"><sphere x="1" y="2" z="3" r="1"/></rotate></objects>)");
-    expectNear(scene.looseObjects.sphere(0).center, scene.looseObjects.sphere(1).center);
+    expectNear(scene.looseObjects.all<Sphere>()[0].center, scene.looseObjects.all<Sphere>()[1].center);
 }
 
 TEST(XmlLoader, ScaleByFactorOrPerAxis) {
     const Scene scene = load(R"(<objects>
         <scale x="2" y="3"><sphere x="1" y="1" z="1" r="1"/></scale>
         <scale factor="-0.5"><sphere x="1" y="1" z="1" r="1"/></scale></objects>)");
-    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(2, 3, 1));
-    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 3);  // the largest stretch
-    EXPECT_EQ(scene.looseObjects.sphere(1).center, Vec3(-0.5, -0.5, -0.5));
-    EXPECT_EQ(scene.looseObjects.sphere(1).radius, 0.5);
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].center, Vec3(2, 3, 1));
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].radius, 3);  // the largest stretch
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[1].center, Vec3(-0.5, -0.5, -0.5));
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[1].radius, 0.5);
 }
 
 TEST(XmlLoader, TranslateAndTheThesisAliasTransform) {
     const Scene scene = load(R"(<objects><translate x="1" y="2" z="3"><transform y="-2">
         <sphere r="1"/></transform></translate></objects>)");
-    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(1, 0, 3));
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].center, Vec3(1, 0, 3));
 }
 
 TEST(XmlLoader, NumbersTooSmallForRealRoundToZero) {
     const Scene scene = load(R"(<objects><sphere x="1e-400" y="-1e-500" r="+2.5e0"/></objects>)");
-    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(0, 0, 0));
-    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 2.5);
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].center, Vec3(0, 0, 0));
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].radius, 2.5);
 }
 
 TEST(XmlLoader, MatrixIsRowMajorThreeByFour) {
     const Scene scene = load(R"(<objects><matrix m="0 -1 0 10  1 0 0 20  0 0 2 30">
         <sphere x="1" y="2" z="3" r="1"/></matrix></objects>)");
-    EXPECT_EQ(scene.looseObjects.sphere(0).center, Vec3(10 - 2, 20 + 1, 30 + 6));
-    EXPECT_EQ(scene.looseObjects.sphere(0).radius, 2);
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].center, Vec3(10 - 2, 20 + 1, 30 + 6));
+    EXPECT_EQ(scene.looseObjects.all<Sphere>()[0].radius, 2);
 }
 
 TEST(XmlLoader, TrianglesAndQuads) {
     const Scene scene = load(R"(<materials><material name="m"/></materials><objects>
         <triangle material="m"><vertex x="0" y="0" z="0"/><vertex x="1"/><vertex y="1"/></triangle>
         <quad><vertex/><vertex x="2"/><vertex x="2" y="2"/><vertex y="2"/></quad></objects>)");
-    ASSERT_EQ(scene.looseObjects.triangleCount(), 3u);
-    EXPECT_EQ(scene.looseObjects.triangle(0).p1, Vec3(1, 0, 0));
-    EXPECT_EQ(scene.looseObjects.triangle(0).p2, Vec3(0, 1, 0));
+    ASSERT_EQ(scene.looseObjects.count<Triangle>(), 3u);
+    EXPECT_EQ(scene.looseObjects.all<Triangle>()[0].p1, Vec3(1, 0, 0));
+    EXPECT_EQ(scene.looseObjects.all<Triangle>()[0].p2, Vec3(0, 1, 0));
     // The quad is split along the diagonal from its first to its third corner.
-    EXPECT_EQ(scene.looseObjects.triangle(1).p2, Vec3(2, 2, 0));
-    EXPECT_EQ(scene.looseObjects.triangle(2).p1, Vec3(2, 2, 0));
-    EXPECT_EQ(scene.looseObjects.triangle(2).p2, Vec3(0, 2, 0));
-    EXPECT_NEAR(scene.looseObjects.triangle(1).area() + scene.looseObjects.triangle(2).area(), 4, kTol);
+    EXPECT_EQ(scene.looseObjects.all<Triangle>()[1].p2, Vec3(2, 2, 0));
+    EXPECT_EQ(scene.looseObjects.all<Triangle>()[2].p1, Vec3(2, 2, 0));
+    EXPECT_EQ(scene.looseObjects.all<Triangle>()[2].p2, Vec3(0, 2, 0));
+    EXPECT_NEAR(scene.looseObjects.all<Triangle>()[1].area() + scene.looseObjects.all<Triangle>()[2].area(), 4, kTol);
     EXPECT_EQ(scene.looseObjects.material(0), 0u);
     EXPECT_EQ(scene.materials[scene.looseObjects.material(1)].name, "default");
 }
@@ -281,8 +281,8 @@ TEST(XmlLoader, ModelInstancesShareOneModel) {
     ASSERT_EQ(scene.instances.size(), 2u);
     EXPECT_EQ(scene.instances[0].material, 1u);  // "default", added after "m"
     EXPECT_EQ(scene.instances[1].material, 0u);
-    ASSERT_EQ(scene.primitives.triangleCount(), 2u);
-    EXPECT_EQ(scene.primitives.triangle(1).p1, Vec3(6, 0, 0));
+    ASSERT_EQ(scene.primitives.count<Triangle>(), 2u);
+    EXPECT_EQ(scene.primitives.all<Triangle>()[1].p1, Vec3(6, 0, 0));
 }
 
 TEST(XmlLoader, InlineBase64Model) {
@@ -291,9 +291,9 @@ TEST(XmlLoader, InlineBase64Model) {
         cmF3M2RTAQAAAAAAgD8AAABA
         AABAQAAAAD8=
         </model></models><objects><model name="s"/></objects>)");
-    ASSERT_EQ(scene.primitives.sphereCount(), 1u);
-    EXPECT_EQ(scene.primitives.sphere(0).center, Vec3(1, 2, 3));
-    EXPECT_EQ(scene.primitives.sphere(0).radius, 0.5);
+    ASSERT_EQ(scene.primitives.count<Sphere>(), 1u);
+    EXPECT_EQ(scene.primitives.all<Sphere>()[0].center, Vec3(1, 2, 3));
+    EXPECT_EQ(scene.primitives.all<Sphere>()[0].radius, 0.5);
     EXPECT_EQ(scene.models[0].file, "");
 }
 
@@ -305,7 +305,7 @@ TEST(XmlLoader, DegeneratePrimitivesAreDroppedAndCounted) {
         <model name="s"/>
         <sphere r="0"/><sphere r="-1"/><sphere r="1"/>
         <triangle><vertex/><vertex x="1"/><vertex x="2"/></triangle></objects>)");
-    EXPECT_EQ(scene.looseObjects.sphereCount(), 1u);
+    EXPECT_EQ(scene.looseObjects.count<Sphere>(), 1u);
     EXPECT_EQ(scene.primitives.size(), 2u);
     EXPECT_EQ(scene.droppedDegenerate, 4u);
     ASSERT_EQ(scene.warnings.size(), 1u);

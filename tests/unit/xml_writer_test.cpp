@@ -53,8 +53,7 @@ bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 void expectSamePrimitives(const Primitives& a, const Primitives& b) {
-    EXPECT_TRUE(sameBits(a.triangles(), b.triangles()));
-    EXPECT_TRUE(sameBits(a.spheres(), b.spheres()));
+    forEachKind([&]<class K>(std::type_identity<K>) { EXPECT_TRUE(sameBits(a.all<K>(), b.all<K>())) << K::kName; });
     ASSERT_EQ(a.size(), b.size());
     for (std::uint32_t id = 0; id < a.size(); ++id) EXPECT_EQ(a.material(id), b.material(id)) << id;
 }
@@ -122,7 +121,7 @@ TEST(XmlWriter, LoadSaveLoadGivesTheSameScene) {
     TempDir dir;
     const Scene first = loadTestScene(dir);
     ASSERT_EQ(first.instances.size(), 3u);
-    ASSERT_TRUE(std::signbit(first.looseObjects.sphere(first.looseObjects.triangleCount()).center.y));
+    ASSERT_TRUE(std::signbit(first.looseObjects.all<Sphere>()[0].center.y));
 
     saveSceneXml(first, dir.path("out/scene.xml"));
     EXPECT_TRUE(std::filesystem::is_regular_file(dir.path("out/scene/ship_one.raw")));

@@ -97,8 +97,9 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
         writeReportJson(std::cout, summary, o.rays ? std::optional(o.picture) : std::nullopt, reports);
         return;
     }
-    std::cout << "scene " << summary.file << ": " << summary.triangles << " triangles, " << summary.spheres
-              << " spheres, " << summary.lights << " lights\n";
+    std::cout << "scene " << summary.file << ": ";
+    for (const KindCount& k : summary.primitives) std::cout << k.count << ' ' << k.name << ", ";
+    std::cout << summary.lights << " lights\n";
     if (o.rays) {
         const RenderSettings& p = o.picture;
         std::cout << "rays: " << p.width << "x" << p.height << ", " << p.pixelSamples << " per pixel, shadows "
@@ -135,8 +136,8 @@ int runInspection(const InspectOptions& o) {
     scene.dropDescription();
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-inspect: warning: " << w << '\n';
-    const SceneSummary summary{o.scenePath == "-" ? "<stdin>" : o.scenePath, scene.primitives.triangleCount(),
-                               scene.primitives.sphereCount(), std::uint32_t(scene.lights.size())};
+    const SceneSummary summary{o.scenePath == "-" ? "<stdin>" : o.scenePath, scene.primitives.countsPerKind(),
+                               std::uint32_t(scene.lights.size())};
 
     std::vector<InspectedTree> trees;
     for (const AccelKind kind : o.trees) {
