@@ -2,6 +2,7 @@
 // and float keeps framebuffers half the size.
 #pragma once
 
+#include <cmath>
 #include <ostream>
 
 namespace rt {
@@ -24,6 +25,8 @@ constexpr Color operator*(float s, const Color& a) { return a * s; }
 
 // Rec.709 luminance of a linear colour.
 constexpr float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+inline bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 
 inline std::ostream& operator<<(std::ostream& os, const Color& c) {
     return os << '(' << c.r << ", " << c.g << ", " << c.b << ')';

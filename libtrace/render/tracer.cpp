@@ -38,8 +38,6 @@ Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
     return c + t * (radius * std::cos(angle)) + b * (radius * std::sin(angle));
 }
 
-bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
-
 }  // namespace
 
 Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings)

@@ -112,13 +112,7 @@ Scene ballsScene() {
 // One sphere lit by a light of infinite intensity: every sample that hits the sphere is
 // infinite in red and blue and NaN in green (infinity times the colour's zero).
 Scene sphereUnderAnInfiniteLight() {
-    Scene s;
-    s.background = {0.1f, 0.2f, 0.3f};
-    s.camera.origin = {0, 0, -10};
-    s.camera.destination = {0, 0, 0};
-    s.camera.fovDegrees = 20;
-    test::addMaterial(s, {.name = "magenta", .color = {1, 0, 1}, .ambient = 0.1f, .diffuse = 0.8f});
-    s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, 0);
+    Scene s = test::sphereSeenFromMinusZ({.name = "magenta", .color = {1, 0, 1}, .ambient = 0.1f, .diffuse = 0.8f}, 20);
     const float inf = std::numeric_limits<float>::infinity();
     s.lights.push_back({{0, 5, -10}, {inf, inf, inf}, 0});
     s.flatten();

@@ -20,6 +20,17 @@ inline std::uint32_t addMaterial(Scene& s, Material m) {
     return std::uint32_t(s.materials.size() - 1);
 }
 
+// A unit sphere at the origin in one material, seen from (0, 0, -10); no lights yet.
+inline Scene sphereSeenFromMinusZ(Material m, Real fovDegrees) {
+    Scene s;
+    s.background = {0.1f, 0.2f, 0.3f};
+    s.camera.origin = {0, 0, -10};
+    s.camera.destination = {0, 0, 0};
+    s.camera.fovDegrees = fovDegrees;
+    s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, addMaterial(s, std::move(m)));
+    return s;
+}
+
 // A quad as two triangles, corners in order around its edge.
 inline void addQuad(Scene& s, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, std::uint32_t material) {
     s.looseObjects.add<Triangle>({a, b, c}, material);

@@ -13,13 +13,8 @@ namespace {
 
 // One white diffuse sphere at the origin seen from -z, one light at the camera.
 Scene litSphere() {
-    Scene s;
-    s.background = {0.1f, 0.2f, 0.3f};
-    s.camera.origin = {0, 0, -10};
-    s.camera.destination = {0, 0, 0};
-    s.camera.fovDegrees = 30;
-    test::addMaterial(s, {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .ambient = 0.2f, .diffuse = 0.6f});
-    s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, 0);
+    Scene s = test::sphereSeenFromMinusZ(
+        {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .ambient = 0.2f, .diffuse = 0.6f}, 30);
     s.lights.push_back({{0, 0, -10}, {0.5f, 0.5f, 0.5f}, 0});
     s.lights.push_back({{0, 0, 10}, {0.25f, 0.25f, 0.25f}, 0});  // behind the sphere: ambient only
     s.flatten();
