@@ -1,5 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rt builds with, if any is missing. Needs root (or sudo).
+#   scripts/install-deps.sh           what rt builds, tests and runs with
+#   scripts/install-deps.sh --bench   also what only the benchmarks use: Intel Embree 3 for
+#                                     bench/vs_embree, clang 14 and its OpenMP for the compiler
+#                                     table of bench/thesis_tables.sh (CI installs neither)
 set -euo pipefail
 packages=(
     cmake ninja-build g++ pkg-config ccache
@@ -7,6 +11,7 @@ packages=(
     libpugixml-dev libgtest-dev libbenchmark-dev
     openimageio-tools opencolorio-tools
 )
+[ "${1:-}" = "--bench" ] && packages+=(libembree-dev clang-14 libomp-14-dev)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -1,0 +1,200 @@
+#!/usr/bin/env bash
+# Regenerates the measured side of docs/thesis-results.md: thesis Tables 4.1-4.5 with rt's
+# figures beside the thesis's (issue 15). About 15 minutes on two cores once ccache is warm.
+#
+#   bench/thesis_tables.sh                      print the tables (Markdown) on stdout
+#   bench/thesis_tables.sh --update docs/thesis-results.md
+#                                               replace the part between the
+#                                               <!-- tables:begin --> and <!-- tables:end --> lines
+#
+# Options: --runs N (10, as the thesis: the mean of N runs; a cell stops early once it has
+# spent --budget seconds, default 20, and then says how many runs it had), --no-compilers
+# (skip Table 4.5 and its six builds), --no-embree (skip the Embree column).
+#
+# Method, as thesis 4.3: 800x600, shadows on, reflections to depth 3 (-s -d 3), no output
+# (-o null). Times are rt-render's own -b figures (wall clock of the tree build and of the
+# render): with --threads 1 on an otherwise idle machine that is the CPU time the thesis
+# measured. The builds of Table 4.5 go to build/thesis-tables/.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+runs=10 budget=20 compilers=1 embree=1 update=""
+while [[ $# -gt 0 ]]; do
+    case "$1" in
+        --runs) runs="$2"; shift 2 ;;
+        --budget) budget="$2"; shift 2 ;;
+        --no-compilers) compilers=0; shift ;;
+        --no-embree) embree=0; shift ;;
+        --update) update="$2"; shift 2 ;;
+        -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+        *) echo "thesis_tables.sh ERROR: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+    esac
+done
+[[ "$runs" =~ ^[1-9][0-9]*$ && "$budget" =~ ^[0-9]+$ ]] ||
+    { echo "thesis_tables.sh ERROR: --runs needs a positive integer and --budget seconds" >&2; exit 2; }
+
+scenes=(balls balls2 ships tree pyramid5)
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+log() { echo "thesis_tables: $*" >&2; }
+
+cd "$here"
+log "building release and release-float"
+for preset in release release-float; do
+    cmake --preset "$preset" >/dev/null
+    cmake --build --preset "$preset" --target rt-render rt-convert >/dev/null
+done
+render_d=build/release/tools/render/rt-render
+render_f=build/release-float/tools/render/rt-render
+for s in "${scenes[@]}"; do
+    build/release/tools/convert/rt-convert --generate "$s" -o "$work/$s.xml" -q
+done
+
+# measure RENDERER SCENE ARGS...: the mean of the -b line's fields over the runs, as
+# "build render total objects lights nodes tests runs".
+measure() {
+    local renderer="$1" scene="$2"; shift 2
+    local n=0 start=$SECONDS lines=""
+    while (( n < runs )); do
+        lines+="$("$renderer" "$work/$scene.xml" -s -d 3 -x 800 -y 600 -o null -b -q "$@")"$'\n'
+        n=$((n + 1))
+        (( SECONDS - start >= budget )) && break
+    done
+    awk 'NF { b += $1; r += $2; n++; rest = $3 " " $4 " " $5 " " $6 }
+         END { printf "%.2f %.2f %.2f %s %d\n", b / n, r / n, (b + r) / n, rest, n }' <<<"$lines"
+}
+
+declare -A m  # m[renderer/scene/tree/threads] = the measure line
+for s in "${scenes[@]}"; do
+    for tree in bsp kd; do
+        for threads in 1 2; do
+            log "$s $tree, $threads thread(s)"
+            m[d/$s/$tree/$threads]="$(measure "$render_d" "$s" --accel "$tree" --threads "$threads")"
+        done
+    done
+    log "$s kd, float"
+    m[f/$s/kd/1]="$(measure "$render_f" "$s" --accel kd --threads 1)"
+done
+field() { awk -v i="$2" '{print $i}' <<<"${m[$1]}"; }
+
+# The thesis's S1 (Core 2 Duo E6420, 2.13 GHz, one thread), Tables 4.2-4.4, per scene:
+# BSP build render total, KD build render total / BSP nodes, KD nodes, BSP tests, KD tests /
+# double build render, float build render.
+declare -A thesis42=([balls]="0.40 0.41 0.82 0.29 0.40 0.69" [balls2]="0.01 3.90 3.90 0.09 2.90 2.99"
+    [ships]="0.01 2.40 2.40 0.01 1.90 1.91" [tree]="0.96 148.95 149.92 2.63 2.75 5.37"
+    [pyramid5]="0.69 55.29 55.98 4.73 6.87 11.59")
+declare -A thesis43=([balls]="3951 12423 27.46 10.19" [balls2]="4379 100157 1101.21 50.37"
+    [ships]="1497 1785 11.04 8.67" [tree]="435 7699 1378.85 21.48" [pyramid5]="136363 25391 5.59 10.91")
+declare -A thesis44=([balls]="0.29 0.40 0.38 0.55" [balls2]="0.08 2.75 0.08 3.40" [ships]="0.02 2.30 0.02 2.91"
+    [tree]="2.67 2.83 2.88 3.50" [pyramid5]="4.78 7.07 3.93 8.27")
+declare -A thesis41=([balls]="7383 3" [balls2]="597873 3" [ships]="1017 2" [tree]="180182 7" [pyramid5]="18750 1")
+word() { awk -v i="$2" '{print $i}' <<<"$1"; }
+ratio() { echo "$1 $2" | awk '{ if ($2 > 0) printf "%.2f", $1 / $2; else printf "-" }'; }
+
+tables() {
+    echo "Measured $(date -u +%Y-%m-%d) on $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores), rt $(git rev-parse --short HEAD),"
+    echo "$(c++ --version | head -1); each cell the mean of up to $runs runs (fewer where a cell passed ${budget} s: the runs column)."
+    echo
+    echo "#### Table 4.1: the scenes (objects = triangles + spheres)"
+    echo
+    echo "| scene | objects, thesis | objects, rt | lights, thesis | lights, rt |"
+    echo "|---|---:|---:|---:|---:|"
+    for s in "${scenes[@]}"; do
+        echo "| $s | $(word "${thesis41[$s]}" 1) | $(field "d/$s/kd/1" 4) | $(word "${thesis41[$s]}" 2) | $(field "d/$s/kd/1" 5) |"
+    done
+    echo
+    echo "#### Table 4.2: BSP and KD, seconds (build / render / total) and KD's speed-up of the total"
+    echo
+    echo "| scene | tree | thesis S1 | rt, 1 thread | rt, 2 threads | runs |"
+    echo "|---|---|---:|---:|---:|---:|"
+    for s in "${scenes[@]}"; do
+        local t="${thesis42[$s]}"
+        for tree in bsp kd; do
+            local o=0; [[ $tree == kd ]] && o=3
+            echo "| $s | ${tree^^} | $(word "$t" $((o + 1))) / $(word "$t" $((o + 2))) / $(word "$t" $((o + 3))) |" \
+                "$(field "d/$s/$tree/1" 1) / $(field "d/$s/$tree/1" 2) / $(field "d/$s/$tree/1" 3) |" \
+                "$(field "d/$s/$tree/2" 1) / $(field "d/$s/$tree/2" 2) / $(field "d/$s/$tree/2" 3) |" \
+                "$(field "d/$s/$tree/1" 8), $(field "d/$s/$tree/2" 8) |"
+        done
+        echo "| $s | BSP / KD | $(ratio "$(word "$t" 3)" "$(word "$t" 6)") |" \
+            "$(ratio "$(field "d/$s/bsp/1" 3)" "$(field "d/$s/kd/1" 3)") |" \
+            "$(ratio "$(field "d/$s/bsp/2" 3)" "$(field "d/$s/kd/2" 3)") | |"
+    done
+    echo
+    echo "#### Table 4.3: tree quality: nodes, and intersection tests per ray"
+    echo
+    echo "| scene | BSP nodes, thesis | BSP nodes, rt | KD nodes, thesis | KD nodes, rt | BSP tests/ray, thesis | BSP tests/ray, rt | KD tests/ray, thesis | KD tests/ray, rt |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+    for s in "${scenes[@]}"; do
+        local t="${thesis43[$s]}"
+        echo "| $s | $(word "$t" 1) | $(field "d/$s/bsp/1" 6) | $(word "$t" 2) | $(field "d/$s/kd/1" 6) |" \
+            "$(word "$t" 3) | $(field "d/$s/bsp/1" 7) | $(word "$t" 4) | $(field "d/$s/kd/1" 7) |"
+    done
+    echo
+    echo "#### Table 4.4: double (D) against float (F), KD, one thread, seconds (build / render) and F / D of the total"
+    echo
+    echo "| scene | D, thesis S1 | F, thesis S1 | F / D, thesis | D, rt | F, rt | F / D, rt |"
+    echo "|---|---:|---:|---:|---:|---:|---:|"
+    for s in "${scenes[@]}"; do
+        local t="${thesis44[$s]}"
+        echo "| $s | $(word "$t" 1) / $(word "$t" 2) | $(word "$t" 3) / $(word "$t" 4) |" \
+            "$(awk '{ printf "%.2f", ($3 + $4) / ($1 + $2) }' <<<"$t") |" \
+            "$(field "d/$s/kd/1" 1) / $(field "d/$s/kd/1" 2) | $(field "f/$s/kd/1" 1) / $(field "f/$s/kd/1" 2) |" \
+            "$(ratio "$(field "f/$s/kd/1" 3)" "$(field "d/$s/kd/1" 3)") |"
+    done
+    if (( compilers )); then compiler_table; fi
+    if (( embree )); then embree_table; fi
+}
+
+# Table 4.5: ships, KD, one thread, rendered by rt-render built with each compiler and flag set.
+compiler_table() {
+    echo
+    echo "#### Table 4.5: compilers, ships, KD, one thread, total seconds (the thesis: GCC 3.4 / 4.1 / 4.2 / 4.3 on S1)"
+    echo
+    echo "Thesis: double 2.51 / 2.02 / 1.98 / 2.18, float 2.36 / 2.41 / 2.37 / 2.53."
+    echo
+    echo "| compiler | flags | double | float | F / D |"
+    echo "|---|---|---:|---:|---:|"
+    local cc flags name real
+    for cc in g++-12 clang++-14; do
+        for flags in "-O2" "-O3" "-O3 -march=native"; do
+            declare -A total=()
+            for real in double float; do
+                name="build/thesis-tables/${cc}${flags// /}-$real"
+                log "building $name"
+                cmake -S . -B "$name" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cc" \
+                    -DCMAKE_C_COMPILER="${cc/++/}" -DCMAKE_CXX_FLAGS_RELEASE="$flags -DNDEBUG" -DRT_REAL="$real" \
+                    -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DRT_BUILD_TESTS=OFF -DRT_BUILD_BENCH=OFF >/dev/null
+                cmake --build "$name" --target rt-render >/dev/null
+                total[$real]="$(measure "$name/tools/render/rt-render" ships --accel kd --threads 1 | awk '{print $3}')"
+            done
+            echo "| $($cc --version | head -1 | sed 's/ (Debian[^)]*)//') | $flags | ${total[double]} | ${total[float]} |" \
+                "$(ratio "${total[float]}" "${total[double]}") |"
+        done
+    done
+}
+
+# The Embree column: bench/vs_embree's rays per second, rt's KD tree against Embree, on the
+# thesis scenes (built only where Embree is installed: scripts/install-bench-deps.sh).
+embree_table() {
+    if ! cmake --build --preset release --target vs_embree >/dev/null 2>&1; then
+        log "Embree not installed: no Embree column (scripts/install-bench-deps.sh)"
+        return
+    fi
+    log "vs_embree on the thesis scenes"
+    echo
+    echo "#### Beside Embree (bench/vs_embree, one pass; see docs/benchmarks.md for its method)"
+    build/release/bench/vs_embree --scenes "${scenes[@]}" --passes 1 2>/dev/null | sed -n '/^### /,$p' | sed 's/^### /##### /'
+}
+
+out="$(tables)"
+if [[ -z "$update" ]]; then
+    echo "$out"
+else
+    grep -q '^<!-- tables:begin -->$' "$update" && grep -q '^<!-- tables:end -->$' "$update" ||
+        { echo "thesis_tables.sh ERROR: $update: no <!-- tables:begin --> / <!-- tables:end --> lines" >&2; exit 2; }
+    tmp="$update.tmp.$$"
+    awk -v tables="$out" '/^<!-- tables:end -->$/ { print tables; skip = 0 } !skip { print } /^<!-- tables:begin -->$/ { skip = 1 }' \
+        "$update" >"$tmp" && mv "$tmp" "$update"
+    log "updated $update"
+fi
