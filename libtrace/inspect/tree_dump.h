@@ -12,8 +12,9 @@ namespace rt {
 
 void writeTreeDot(std::ostream& out, const Accelerator& accel, const TreeCut& cut);
 
-// {"tree": name, "root": {"id", "depth", "bounds": {"lo", "hi"}, then either "leaf": true and
-// "primitives", or "axis", "split" and "children" (or "cutOff": true at the cut depth)}}.
+// {"version", "structure": name, "cutDepth" (with a cut), "root": {"id", "depth", "bounds":
+// {"lo", "hi"}, then either "leaf": true and "primitives", or "axis", "split" and "children"
+// (or "cutOff": true at the cut depth)}} (docs/json.md).
 void writeTreeJson(std::ostream& out, const Accelerator& accel, const TreeCut& cut);
 
 }  // namespace rt

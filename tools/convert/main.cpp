@@ -48,9 +48,9 @@ int convert(Options& o) {
     const rt::ImportResult result =
         o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
     if (!o.output.empty()) rt::saveSceneXml(result.scene, o.output);  // all or nothing (core/atomic_file.h)
-    const rt::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
-    if (!o.quiet) rt::convert::printSummary(std::cerr, summary);
-    if (o.json) rt::convert::printSummaryJson(std::cout, summary);
+    const rt::tool::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
+    if (!o.quiet) rt::tool::convert::printSummary(std::cerr, summary);
+    if (o.json) rt::tool::convert::printSummaryJson(std::cout, summary);
     return rt::tool::kExitOk;
 }
 

@@ -17,7 +17,7 @@
 #include "tool.h"
 #include "version.h"
 
-namespace rt::tool {
+namespace rt::tool::inspect {
 
 namespace {
 
@@ -103,7 +103,7 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
     if (o.rays) {
         const RenderSettings& p = o.picture;
         std::cout << "rays: " << p.width << "x" << p.height << ", " << p.pixelSamples << " per pixel, shadows "
-                  << (p.softShadows ? "soft" : p.shadows ? "on" : "off") << ", reflection depth " << p.maxDepth
+                  << (p.softShadows ? "soft" : p.shadows ? "on" : "off") << ", reflection depth " << p.reflectionDepth
                   << (p.glossyReflections ? " (glossy)" : "");
         if (p.softShadows || p.glossyReflections) std::cout << ", " << p.distributedSamples << " rays per bundle";
         std::cout << "\n";
@@ -136,8 +136,7 @@ int runInspection(const InspectOptions& o) {
     scene.dropDescription();
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-inspect: warning: " << w << '\n';
-    const SceneSummary summary{o.scenePath == "-" ? "<stdin>" : o.scenePath, scene.primitives.countsPerKind(),
-                               std::uint32_t(scene.lights.size())};
+    const SceneSummary summary = summarizeScene(o.scenePath, scene);
 
     std::vector<InspectedTree> trees;
     for (const AccelKind kind : o.trees) {
@@ -157,4 +156,4 @@ int runInspection(const InspectOptions& o) {
     return kExitOk;
 }
 
-}  // namespace rt::tool
+}  // namespace rt::tool::inspect

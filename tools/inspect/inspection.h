@@ -12,7 +12,7 @@
 #include "inspect/ray_statistics.h"
 #include "inspect/tree_cut.h"
 
-namespace rt::tool {
+namespace rt::tool::inspect {
 
 struct InspectOptions {
     std::string scenePath;             // "-" reads standard input
@@ -35,4 +35,4 @@ struct InspectOptions {
 // Returns the exit code. Throws rt::InputError for bad input, other exceptions for failures.
 int runInspection(const InspectOptions& options);
 
-}  // namespace rt::tool
+}  // namespace rt::tool::inspect

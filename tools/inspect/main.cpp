@@ -21,7 +21,7 @@ std::vector<rt::AccelKind> treesNamed(const std::string& name) {
 int main(int argc, char** argv) {
     CLI::App app{"Shows how the KD and BSP trees of a scene look and perform."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-inspect"));
-    rt::tool::InspectOptions o;
+    rt::tool::inspect::InspectOptions o;
     std::string tree = "kd", leaves = "all", scale = "linear", heatmapRays = "camera";
     std::optional<std::uint32_t> maxDepth;
     std::optional<float> heatmapMax;
@@ -63,5 +63,5 @@ int main(int argc, char** argv) {
     o.heatmap.scale = scale == "log" ? rt::HeatScale::Log : rt::HeatScale::Linear;
     o.heatmapRays = heatmapRays == "all" ? rt::PixelRays::All : rt::PixelRays::Camera;
     o.heatmap.maximum = heatmapMax;
-    return rt::tool::run("rt-inspect", [&] { return rt::tool::runInspection(o); });
+    return rt::tool::run("rt-inspect", [&] { return rt::tool::inspect::runInspection(o); });
 }

@@ -10,7 +10,7 @@
 
 namespace {
 
-using rt::render_tool::RenderOptions;
+using rt::tool::render::RenderOptions;
 
 void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName) {
     const char* group = "Rendering options";
@@ -75,5 +75,5 @@ int main(int argc, char** argv) {
     addOtherOptions(app, options);
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-render", argc, argv)) return *exitCode;
     options.accel.kind = *rt::parseAccelKind(accelName);
-    return rt::tool::run("rt-render", [&] { return rt::render_tool::runRender(options); });
+    return rt::tool::run("rt-render", [&] { return rt::tool::render::runRender(options); });
 }

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-namespace rt::render_tool {
+namespace rt::tool::render {
 
 namespace {
 constexpr int kBarWidth = 40;
@@ -74,4 +74,4 @@ void Progress::printLine(std::uint64_t done, std::uint64_t total, double elapsed
     std::fflush(stderr);
 }
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render

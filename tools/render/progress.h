@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-namespace rt::render_tool {
+namespace rt::tool::render {
 
 enum class ProgressMode { None, Bar, Lines };
 
@@ -39,4 +39,4 @@ private:
     std::chrono::steady_clock::time_point start_, lastOutput_;
 };
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render

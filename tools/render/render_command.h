@@ -9,7 +9,7 @@
 #include "image/image_output.h"
 #include "render/render_settings.h"
 
-namespace rt::render_tool {
+namespace rt::tool::render {
 
 struct RenderOptions {
     std::string scenePath;                // a file, or "-" for standard input
@@ -35,4 +35,4 @@ PixelWindow parseRegion(const std::string& text);
 // Returns the exit code; throws rt::InputError for bad input (exit 2), others for failures (exit 1).
 int runRender(RenderOptions options);
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render
