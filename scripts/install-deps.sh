@@ -6,6 +6,7 @@ packages=(
     libassimp-dev libtinygltf-dev libtinyobjloader-dev libopenimageio-dev libopencolorio-dev libcli11-dev
     libpugixml-dev libgtest-dev libbenchmark-dev
     openimageio-tools opencolorio-tools
+    python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
 )
 missing=()
 for p in "${packages[@]}"; do
