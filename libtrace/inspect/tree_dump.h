@@ -6,9 +6,14 @@
 #include <ostream>
 
 #include "accel/accelerator.h"
+#include "core/names.h"
 #include "inspect/tree_cut.h"
 
 namespace rt {
+
+enum class TreeDumpFormat { Dot, Json };
+inline constexpr NamedValues<TreeDumpFormat, 2> kTreeDumpFormatNames{
+    {{"dot", TreeDumpFormat::Dot}, {"json", TreeDumpFormat::Json}}};
 
 void writeTreeDot(std::ostream& out, const Accelerator& accel, const TreeCut& cut);
 

@@ -179,7 +179,9 @@ TEST(RenderSettings, OutOfRangeSettingsAreInputErrors) {
         EXPECT_THROW(validate(s), InputError);
     };
     bad([](RenderSettings& s) { s.width = 0; });
-    bad([](RenderSettings& s) { s.reflectionDepth = 11; });
+    bad([](RenderSettings& s) { s.height = kMaxImageSide + 1; });
+    bad([](RenderSettings& s) { s.reflectionDepth = kMaxReflectionDepth + 1; });
+    bad([](RenderSettings& s) { s.distributedSamples = kMaxSamples + 1; });
     bad([](RenderSettings& s) { s.reflectionDepth = -1; });
     bad([](RenderSettings& s) { s.pixelSamples = 0; });
     bad([](RenderSettings& s) { s.width = s.height = 65536; });  // 48 GB of framebuffer
@@ -187,6 +189,10 @@ TEST(RenderSettings, OutOfRangeSettingsAreInputErrors) {
     bad([](RenderSettings& s) { s.region = PixelWindow{0, 0, 801, 600}; });
     RenderSettings ok;
     ok.region = PixelWindow{0, 0, 800, 600};
+    EXPECT_NO_THROW(validate(ok));
+    // The limits the tools' options check are the ones validate() accepts.
+    ok.reflectionDepth = kMaxReflectionDepth;
+    ok.pixelSamples = ok.distributedSamples = kMaxSamples;
     EXPECT_NO_THROW(validate(ok));
     ok.width = ok.height = 65536;
     ok.region = PixelWindow{0, 0, 4096, 4096};  // a tile of a huge image is fine

@@ -35,7 +35,7 @@ std::string pathFor(const std::string& path, const std::string& treeName, bool s
 
 void checkOptions(const InspectOptions& o) {
     const bool several = o.trees.size() > 1;
-    if (several && (o.dumpPath == "-" && !o.dumpFormat.empty()))
+    if (several && (o.dumpPath == "-" && o.dumpFormat))
         throw InputError("--dump with several trees needs a file (-f FILE); each tree gets its own");
     if (several && o.leavesPath == "-") throw InputError("--dump-leaves - (standard output) needs a single tree");
     if (o.heatmapPath == "-") throw InputError("--heatmap needs a file name; a PNG is not written to standard output");
@@ -47,7 +47,7 @@ void checkOptions(const InspectOptions& o) {
 
 // Whether something other than the report goes to standard output.
 bool dumpsToStdout(const InspectOptions& o) {
-    return o.leavesPath == "-" || (!o.dumpFormat.empty() && o.dumpPath == "-");
+    return o.leavesPath == "-" || (o.dumpFormat && o.dumpPath == "-");
 }
 
 void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
@@ -57,11 +57,11 @@ void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
         writeFileAtomically(pathFor(o.leavesPath, name, several),
                             [&](std::ostream& out) { writeLeafBoxesObj(out, *tree.accel, o.cut); });
     }
-    if (!o.dumpFormat.empty()) {
+    if (o.dumpFormat) {
         TreeCut cut = o.cut;
         cut.nonEmptyOnly = false;  // the structure dump shows every node
         writeFileAtomically(pathFor(o.dumpPath, name, several), [&](std::ostream& out) {
-            if (o.dumpFormat == "dot")
+            if (*o.dumpFormat == TreeDumpFormat::Dot)
                 writeTreeDot(out, *tree.accel, cut);
             else
                 writeTreeJson(out, *tree.accel, cut);

@@ -11,6 +11,7 @@
 #include "inspect/heatmap.h"
 #include "inspect/ray_statistics.h"
 #include "inspect/tree_cut.h"
+#include "inspect/tree_dump.h"
 
 namespace rt::tool::inspect {
 
@@ -24,7 +25,7 @@ struct InspectOptions {
     RenderSettings picture;            // whose rays --rays traces (on picture.threads); its size is the heat map's
     bool depthHistogram = false;
     std::string leavesPath;            // --dump-leaves
-    std::string dumpFormat;            // "dot" or "json"; empty: no dump
+    std::optional<TreeDumpFormat> dumpFormat;  // --dump dot|json; nullopt: no dump
     std::string dumpPath = "-";
     TreeCut cut;                       // --max-depth and --leaves
     std::string heatmapPath;

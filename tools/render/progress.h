@@ -10,13 +10,23 @@
 #include <cstdint>
 #include <string>
 
+#include "core/names.h"
+
 namespace rt::tool::render {
 
-enum class ProgressMode { None, Bar, Lines };
+enum class ProgressMode {
+    None,
+    Bar,
+    Lines,
+    Auto,  // what --progress asks for by default: progressMode() makes it Bar or Lines
+};
+inline constexpr NamedValues<ProgressMode, 4> kProgressModeNames{{{"auto", ProgressMode::Auto},
+                                                                {"bar", ProgressMode::Bar},
+                                                                {"lines", ProgressMode::Lines},
+                                                                {"none", ProgressMode::None}}};
 
-// --progress auto|bar|lines|none: auto is the bar on a terminal and lines otherwise;
-// quiet (-q) is none.
-ProgressMode progressMode(const std::string& name, bool quiet);
+// The mode to show: auto is the bar on a terminal and lines otherwise; quiet (-q) is none.
+ProgressMode progressMode(ProgressMode requested, bool quiet);
 
 // A step such as the tree build's start and end, "rt-render: MESSAGE" printed at once (unless None).
 void announce(ProgressMode mode, const std::string& message);

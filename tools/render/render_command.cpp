@@ -31,7 +31,7 @@ namespace {
 ImageOutputSettings outputSettings(const RenderOptions& o) {
     ImageOutputSettings s;
     s.color = o.color;
-    s.exrHalf = o.exrPixels == "half";
+    s.exrPixels = o.exrPixels;
     s.pngBits = o.pngBits;
     s.path = o.outputPath.value_or("");
     if (o.preprocessOnly) return s;
