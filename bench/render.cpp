@@ -38,7 +38,7 @@ void BM_RenderDemo800x600(benchmark::State& state) {
     settings.width = 800;
     settings.height = 600;
     settings.shadows = true;
-    settings.maxDepth = 3;
+    settings.reflectionDepth = 3;
     settings.threads = int(state.range(0));
     std::uint64_t rays = 0;
     for (auto _ : state) {

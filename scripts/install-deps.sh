@@ -10,6 +10,7 @@ packages=(
     libassimp-dev libtinygltf-dev libtinyobjloader-dev libopenimageio-dev libopencolorio-dev libcli11-dev
     libpugixml-dev libgtest-dev libbenchmark-dev
     openimageio-tools opencolorio-tools
+    python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
 )
 [ "${1:-}" = "--bench" ] && packages+=(libembree-dev clang-14 libomp-14-dev)
 missing=()

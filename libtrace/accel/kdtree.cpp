@@ -16,6 +16,10 @@ int defaultKdMaxDepth(std::size_t primitives) {
     return int(std::lround(8 + 1.3 * std::log2(double(std::max<std::size_t>(primitives, 1)))));
 }
 
+int kdMaxDepth(const KdSettings& settings, std::size_t primitives) {
+    return std::clamp(settings.maxDepth.value_or(defaultKdMaxDepth(primitives)), 0, kMaxTreeDepth);
+}
+
 namespace {
 
 // Below this many primitives a node finds its split by sorting its own events, as the
@@ -70,7 +74,7 @@ public:
     KdSplitter(const Primitives& prims, const KdSettings& settings)
         : prims_(prims),
           settings_(settings),
-          maxDepth_(std::clamp(settings.maxDepth.value_or(defaultKdMaxDepth(prims.size())), 0, kMaxTreeDepth)) {}
+          maxDepth_(kdMaxDepth(settings, prims.size())) {}
 
     std::optional<Partition<KdNode>> operator()(KdNode& node) const {
         const std::size_t n = node.primitives.size();

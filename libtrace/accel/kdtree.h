@@ -13,6 +13,10 @@ namespace rt {
 // The depth limit when KdSettings::maxDepth is unset: 8 + 1.3 log2(N) (pbrt, Havran).
 int defaultKdMaxDepth(std::size_t primitives);
 
+// The depth limit a KD tree over `primitives` is built with: settings.maxDepth, or the
+// default, within 0 and the traversal's stack depth (what rt-inspect reports).
+int kdMaxDepth(const KdSettings& settings, std::size_t primitives);
+
 // The primitives must outlive the tree. The build runs on all OpenMP threads; the tree
 // does not depend on their number.
 std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& settings);

@@ -5,9 +5,20 @@
 #include <optional>
 #include <string>
 
+#include "core/names.h"
+
 namespace rt {
 
 enum class AccelKind { Naive, Bsp, Kd };
+
+inline constexpr NamedValues<AccelKind, 3> kAccelKindNames{
+    {{"naive", AccelKind::Naive}, {"bsp", AccelKind::Bsp}, {"kd", AccelKind::Kd}}};
+
+// The deepest a tree may be: the traversal's stack holds one entry per level.
+inline constexpr int kMaxTreeDepth = 64;
+// The ranges the tools accept for the tunables below.
+inline constexpr int kMaxLeafPrimitives = 1 << 20;  // BspSettings::minPrimitives
+inline constexpr int kMaxKdSamples = 1024;          // KdSettings::samples
 
 struct BspSettings {
     int maxDepth = 20;         // stop subdividing below this depth (thesis 2.4.1)
@@ -20,6 +31,9 @@ enum class KdSplitMethod {
     Sort,    // the thesis's sort per node, O(N log^2 N) (thesis 2.5.1)
     Sample,  // the thesis's sampling of a fixed number of candidate planes per axis
 };
+
+inline constexpr NamedValues<KdSplitMethod, 3> kKdSplitMethodNames{
+    {{"sweep", KdSplitMethod::Sweep}, {"sort", KdSplitMethod::Sort}, {"sample", KdSplitMethod::Sample}}};
 
 struct KdSettings {
     double traversalCost = 2.0;     // C_T of the SAH (thesis 2.5.1); measured, see docs/trees.md
@@ -36,10 +50,12 @@ struct AccelSettings {
     KdSettings kd;
 };
 
-// "naive", "bsp", "kd" (and the split methods "sweep", "sort", "sample"); nullopt if unknown.
-std::optional<AccelKind> parseAccelKind(const std::string& name);
-const char* accelKindName(AccelKind kind);
-std::optional<KdSplitMethod> parseKdSplitMethod(const std::string& name);
-const char* kdSplitMethodName(KdSplitMethod method);
+// By the tables above: "naive", "bsp", "kd" and "sweep", "sort", "sample"; nullopt if unknown.
+inline std::optional<AccelKind> parseAccelKind(const std::string& name) { return parseNamed(kAccelKindNames, name); }
+inline const char* accelKindName(AccelKind kind) { return nameOf(kAccelKindNames, kind); }
+inline std::optional<KdSplitMethod> parseKdSplitMethod(const std::string& name) {
+    return parseNamed(kKdSplitMethodNames, name);
+}
+inline const char* kdSplitMethodName(KdSplitMethod method) { return nameOf(kKdSplitMethodNames, method); }
 
 }  // namespace rt

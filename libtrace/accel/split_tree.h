@@ -18,9 +18,6 @@
 
 namespace rt {
 
-// The deepest tree any builder makes; it bounds the traversal stack.
-constexpr int kMaxTreeDepth = 64;
-
 // One node in 8 bytes. The split position is a float even when Real is double: the
 // builders round every plane to float before they sort primitives against it, so the
 // tree is exact for the planes it stores.

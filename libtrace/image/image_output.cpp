@@ -56,7 +56,7 @@ OIIO::ImageSpec specFor(const Framebuffer& image, OIIO::TypeDesc type) {
 
 void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
     const ColorPipeline color(s.color);  // resolves and checks the colour space name
-    OIIO::ImageSpec spec = specFor(image, s.exrHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+    OIIO::ImageSpec spec = specFor(image, s.exrPixels == ExrPixelType::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
     spec.attribute("compression", "zip");
     spec.attribute("Software", meta.software);
     spec.attribute("oiio:ColorSpace", color.colorspace());
@@ -69,7 +69,8 @@ void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const Imag
 }
 
 void writeDisplayImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
-    if (s.pngBits != 8 && s.pngBits != 16) throw std::invalid_argument("PNG bits must be 8 or 16");
+    if (std::find(kPngBits.begin(), kPngBits.end(), s.pngBits) == kPngBits.end())
+        throw std::invalid_argument("PNG bits must be 8 or 16");
     const ColorPipeline color(s.color);
     std::vector<float> rgb = packedRgb(image);
     color.toDisplay(rgb);
@@ -105,9 +106,19 @@ std::optional<ImageFormat> imageFormatFromPath(const std::string& path) {
 
 const char* imageFormatName(ImageFormat format) { return formatName(format).name; }
 
+std::vector<std::string> imageFormatNames() {
+    std::vector<std::string> names;
+    for (const FormatName& f : kFormats) names.emplace_back(f.name);
+    return names;
+}
+
 ImageFormat chooseImageFormat(const std::optional<std::string>& type, const std::optional<std::string>& path) {
     const std::optional<ImageFormat> named = type ? parseImageFormat(*type) : std::nullopt;
-    if (type && !named) throw InputError("-o " + *type + ": unknown output type (null png exr tga text)");
+    if (type && !named) {
+        std::string known;
+        for (const std::string& name : imageFormatNames()) known += (known.empty() ? "" : " ") + name;
+        throw InputError("-o " + *type + ": unknown output type (" + known + ")");
+    }
     if (!path) return named.value_or(ImageFormat::Null);
     const std::optional<ImageFormat> byExtension = imageFormatFromPath(*path);
     if (!named && *path == "-") throw InputError("-f -: give -o to say what to write to standard output");

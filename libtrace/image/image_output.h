@@ -6,7 +6,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "core/names.h"
 #include "image/color_pipeline.h"
 #include "render/framebuffer.h"
 
@@ -18,6 +20,15 @@ std::optional<ImageFormat> parseImageFormat(const std::string& name);  // null p
 // From a file name's extension (.png .exr .tga .txt), case-insensitive.
 std::optional<ImageFormat> imageFormatFromPath(const std::string& path);
 const char* imageFormatName(ImageFormat format);
+// "null", "png", "exr", "tga", "text": the names parseImageFormat knows.
+std::vector<std::string> imageFormatNames();
+
+// The pixel type of EXR files: half (16-bit float, the default) or float (32-bit).
+enum class ExrPixelType { Half, Float };
+inline constexpr NamedValues<ExrPixelType, 2> kExrPixelTypeNames{
+    {{"half", ExrPixelType::Half}, {"float", ExrPixelType::Float}}};
+// The bits per channel PNG files may have.
+inline constexpr std::array<int, 2> kPngBits{8, 16};
 
 // rt-render's rule for -o `type` and -f `path`: the extension picks the format unless `type`
 // names one; neither gives null. Throws rt::InputError if the two contradict each other
@@ -28,7 +39,7 @@ ImageFormat chooseImageFormat(const std::optional<std::string>& type, const std:
 struct ImageOutputSettings {
     ImageFormat format = ImageFormat::Null;
     std::string path;     // "-" is standard output
-    bool exrHalf = true;  // EXR pixels as half (else float)
+    ExrPixelType exrPixels = ExrPixelType::Half;
     int pngBits = 8;      // 8 or 16
     ColorSettings color;
 };

@@ -16,11 +16,13 @@
 #include <string_view>
 #include <vector>
 
+#include "core/names.h"
 #include "scene/scene.h"
 
 namespace rt {
 
 enum class UpAxis { Y, Z };
+inline constexpr NamedValues<UpAxis, 2> kUpAxisNames{{{"y", UpAxis::Y}, {"z", UpAxis::Z}}};
 
 struct ImportOptions {
     std::optional<int> scene;   // glTF scene index; default: the file's default scene, else 0

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "accel/accelerator.h"
-#include "inspect/json_writer.h"
+#include "core/json_writer.h"
 
 namespace rt {
 

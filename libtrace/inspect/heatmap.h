@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/names.h"
 #include "core/rgb_image.h"
 
 namespace rt {
@@ -16,6 +17,7 @@ enum class HeatScale {
     Linear,  // colour proportional to the work
     Log,     // colour proportional to log(1 + work): for scenes where a few pixels cost 100x the rest
 };
+inline constexpr NamedValues<HeatScale, 2> kHeatScaleNames{{{"linear", HeatScale::Linear}, {"log", HeatScale::Log}}};
 
 struct HeatmapOptions {
     HeatScale scale = HeatScale::Linear;

@@ -22,7 +22,7 @@ std::vector<float> pixelWork(const Scene& scene, const Accelerator& accel, const
     traced.region.reset();
     if (rays == PixelRays::Camera) {
         traced.shadows = traced.softShadows = traced.glossyReflections = false;
-        traced.maxDepth = 0;
+        traced.reflectionDepth = 0;
     }
     validate(traced);
     const Tracer tracer(scene, accel, traced);

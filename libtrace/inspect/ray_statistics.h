@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "accel/accelerator.h"
+#include "core/names.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
 #include "scene/scene.h"
@@ -25,6 +26,7 @@ RenderCounters traceRayStatistics(const Scene& scene, const Accelerator& accel, 
 
 // Which rays a pixel's work counts: its camera rays alone, or every ray they spawn.
 enum class PixelRays { Camera, All };
+inline constexpr NamedValues<PixelRays, 2> kPixelRaysNames{{{"camera", PixelRays::Camera}, {"all", PixelRays::All}}};
 
 // The work of each pixel of the whole settings.width x settings.height picture (traversal
 // steps plus intersection tests, summed over its rays), row-major with row 0 at the top:

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "inspect/json_writer.h"
+#include "core/json_writer.h"
 
 namespace rt {
 
@@ -54,9 +54,9 @@ void writeTreeDot(std::ostream& out, const Accelerator& accel, const TreeCut& cu
 
 void writeTreeJson(std::ostream& out, const Accelerator& accel, const TreeCut& cut) {
     JsonWriter json(out);
-    json.beginObject();
-    json.member("tree", accel.stats().name);
-    if (cut.maxDepth) json.member("maxDepth", *cut.maxDepth);
+    json.beginDocument();
+    json.member("structure", accel.stats().name);
+    if (cut.maxDepth) json.member("cutDepth", *cut.maxDepth);
     json.key("root");
     // Pre-order with depths: a node at depth d closes every open node at depth >= d.
     std::vector<std::uint32_t> open;

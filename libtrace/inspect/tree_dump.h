@@ -6,14 +6,20 @@
 #include <ostream>
 
 #include "accel/accelerator.h"
+#include "core/names.h"
 #include "inspect/tree_cut.h"
 
 namespace rt {
 
+enum class TreeDumpFormat { Dot, Json };
+inline constexpr NamedValues<TreeDumpFormat, 2> kTreeDumpFormatNames{
+    {{"dot", TreeDumpFormat::Dot}, {"json", TreeDumpFormat::Json}}};
+
 void writeTreeDot(std::ostream& out, const Accelerator& accel, const TreeCut& cut);
 
-// {"tree": name, "root": {"id", "depth", "bounds": {"lo", "hi"}, then either "leaf": true and
-// "primitives", or "axis", "split" and "children" (or "cutOff": true at the cut depth)}}.
+// {"version", "structure": name, "cutDepth" (with a cut), "root": {"id", "depth", "bounds":
+// {"lo", "hi"}, then either "leaf": true and "primitives", or "axis", "split" and "children"
+// (or "cutOff": true at the cut depth)}} (docs/json.md).
 void writeTreeJson(std::ostream& out, const Accelerator& accel, const TreeCut& cut);
 
 }  // namespace rt

@@ -2,32 +2,35 @@
 
 #include <functional>
 
-#include "inspect/json_writer.h"
+#include "accel/kdtree.h"
+#include "core/json_writer.h"
 #include "inspect/text_table.h"
 
 namespace rt {
 
 namespace {
 
-// One statistic: its label in the table, its key in JSON, how it is printed, and its value.
+// One statistic of a T (a TreeReport, or the RenderCounters of its rays): its label in the
+// table, its key in JSON, how it is printed, and its value.
+template <class T>
 struct Statistic {
     const char* label;
     const char* key;
     int decimals;  // 0: an integer count
-    std::function<double(const TreeReport&)> value;
+    std::function<double(const T&)> value;
 };
 
 double bytesPerPrimitive(const TreeReport& t) {
     return t.scenePrimitives ? double(t.stats.memoryBytes) / t.scenePrimitives : 0.0;
 }
 
-const std::vector<Statistic>& treeStatistics() {
-    static const std::vector<Statistic> rows = {
+const std::vector<Statistic<TreeReport>>& treeStatistics() {
+    static const std::vector<Statistic<TreeReport>> rows = {
         {"build time (s)", "buildSeconds", 3, [](const TreeReport& t) { return t.stats.buildSeconds; }},
         {"nodes", "nodes", 0, [](const TreeReport& t) { return double(t.stats.nodes); }},
         {"leaves", "leaves", 0, [](const TreeReport& t) { return double(t.stats.leaves); }},
         {"empty leaves", "emptyLeaves", 0, [](const TreeReport& t) { return double(t.stats.emptyLeaves); }},
-        {"max depth", "maxDepth", 0, [](const TreeReport& t) { return double(t.stats.maxDepth); }},
+        {"depth", "depth", 0, [](const TreeReport& t) { return double(t.stats.maxDepth); }},
         {"average leaf depth", "averageLeafDepth", 2, [](const TreeReport& t) { return t.stats.averageLeafDepth; }},
         {"primitives per non-empty leaf", "averagePrimitivesPerLeaf", 2,
          [](const TreeReport& t) { return t.stats.averagePrimitivesPerLeaf; }},
@@ -40,46 +43,49 @@ const std::vector<Statistic>& treeStatistics() {
     return rows;
 }
 
-const std::vector<Statistic>& rayStatistics() {
-    static const std::vector<Statistic> rows = {
-        {"camera rays", "cameraRays", 0, [](const TreeReport& t) { return double(t.rays->camera.rays); }},
-        {"shadow rays", "shadowRays", 0, [](const TreeReport& t) { return double(t.rays->shadow.rays); }},
-        {"reflection rays", "reflectionRays", 0, [](const TreeReport& t) { return double(t.rays->reflection.rays); }},
-        {"rays", "rays", 0, [](const TreeReport& t) { return double(t.rays->total().rays); }},
-        {"traversal steps", "traversalSteps", 0,
-         [](const TreeReport& t) { return double(t.rays->total().traversalSteps); }},
+const std::vector<Statistic<RenderCounters>>& rayStatistics() {
+    using C = RenderCounters;
+    static const std::vector<Statistic<C>> rows = {
+        {"camera rays", "cameraRays", 0, [](const C& c) { return double(c.camera.rays); }},
+        {"shadow rays", "shadowRays", 0, [](const C& c) { return double(c.shadow.rays); }},
+        {"reflection rays", "reflectionRays", 0, [](const C& c) { return double(c.reflection.rays); }},
+        {"rays", "rays", 0, [](const C& c) { return double(c.total().rays); }},
+        {"traversal steps", "traversalSteps", 0, [](const C& c) { return double(c.total().traversalSteps); }},
         {"intersection tests", "intersectionTests", 0,
-         [](const TreeReport& t) { return double(t.rays->total().intersectionTests); }},
-        {"traversal steps per ray", "traversalStepsPerRay", 2,
-         [](const TreeReport& t) { return stepsPerRay(t.rays->total()); }},
+         [](const C& c) { return double(c.total().intersectionTests); }},
+        {"traversal steps per ray", "traversalStepsPerRay", 2, [](const C& c) { return stepsPerRay(c.total()); }},
         {"intersection tests per ray", "intersectionTestsPerRay", 2,
-         [](const TreeReport& t) { return testsPerRay(t.rays->total()); }},
+         [](const C& c) { return testsPerRay(c.total()); }},
         {"traversal steps per camera ray", "cameraTraversalStepsPerRay", 2,
-         [](const TreeReport& t) { return stepsPerRay(t.rays->camera); }},
+         [](const C& c) { return stepsPerRay(c.camera); }},
         {"intersection tests per camera ray", "cameraIntersectionTestsPerRay", 2,
-         [](const TreeReport& t) { return testsPerRay(t.rays->camera); }},
+         [](const C& c) { return testsPerRay(c.camera); }},
     };
     return rows;
 }
 
-void addRows(TextTable& table, const std::vector<Statistic>& statistics, const std::vector<TreeReport>& trees) {
-    for (const Statistic& s : statistics) {
+// One row per statistic of what `subject` picks from each tree.
+template <class T>
+void addRows(TextTable& table, const std::vector<Statistic<T>>& statistics, const std::vector<TreeReport>& trees,
+             const std::function<const T&(const TreeReport&)>& subject) {
+    for (const Statistic<T>& s : statistics) {
         std::vector<std::string> cells{s.label};
-        for (const TreeReport& t : trees) cells.push_back(formatFixed(s.value(t), s.decimals));
+        for (const TreeReport& t : trees) cells.push_back(formatFixed(s.value(subject(t)), s.decimals));
         table.addRow(std::move(cells));
     }
 }
 
-void writeMembers(JsonWriter& json, const std::vector<Statistic>& statistics, const TreeReport& t) {
-    for (const Statistic& s : statistics) {
+template <class T>
+void writeMembers(JsonWriter& json, const std::vector<Statistic<T>>& statistics, const T& subject) {
+    for (const Statistic<T>& s : statistics) {
         if (s.decimals == 0)
-            json.member(s.key, std::uint64_t(s.value(t)));
+            json.member(s.key, std::uint64_t(s.value(subject)));
         else
-            json.member(s.key, s.value(t));
+            json.member(s.key, s.value(subject));
     }
 }
 
-void writeSettingsJson(JsonWriter& json, const AccelSettings& settings) {
+void writeSettingsJson(JsonWriter& json, const AccelSettings& settings, std::uint32_t primitives) {
     json.beginObject();
     if (settings.kind == AccelKind::Bsp) {
         json.member("maxDepth", settings.bsp.maxDepth);
@@ -89,11 +95,8 @@ void writeSettingsJson(JsonWriter& json, const AccelSettings& settings) {
         json.member("traversalCost", settings.kd.traversalCost);
         json.member("intersectionCost", settings.kd.intersectionCost);
         json.member("emptyBonus", settings.kd.emptyBonus);
-        json.key("maxDepth");
-        if (settings.kd.maxDepth)
-            json.value(*settings.kd.maxDepth);
-        else
-            json.value("auto");
+        json.member("maxDepth", kdMaxDepth(settings.kd, primitives));
+        json.member("maxDepthAuto", !settings.kd.maxDepth.has_value());
         json.member("split", kdSplitMethodName(settings.kd.splitMethod));
         json.member("samples", settings.kd.samples);
     }
@@ -106,9 +109,11 @@ void printTreeTable(std::ostream& out, const std::vector<TreeReport>& trees) {
     std::vector<std::string> header{"statistic"};
     for (const TreeReport& t : trees) header.push_back(t.stats.name);
     TextTable table(std::move(header));
-    addRows(table, treeStatistics(), trees);
+    addRows<TreeReport>(table, treeStatistics(), trees, [](const TreeReport& t) -> const TreeReport& { return t; });
     const bool withRays = !trees.empty() && trees.front().rays.has_value();
-    if (withRays) addRows(table, rayStatistics(), trees);
+    if (withRays)
+        addRows<RenderCounters>(table, rayStatistics(), trees,
+                                [](const TreeReport& t) -> const RenderCounters& { return t.rays.value(); });
     table.print(out);
 }
 
@@ -121,50 +126,73 @@ void printThesisTable43(std::ostream& out, const std::string& sceneName, const T
     table.print(out);
 }
 
-void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RenderSettings>& picture,
-                     const std::vector<TreeReport>& trees) {
-    JsonWriter json(out);
-    json.beginObject();
-    json.key("scene");
+SceneSummary summarizeScene(const std::string& path, const Scene& scene) {
+    return {path == "-" ? "<stdin>" : path, scene.primitives.countsPerKind(), std::uint32_t(scene.lights.size())};
+}
+
+void writeSceneJson(JsonWriter& json, const SceneSummary& scene) {
     json.beginObject();
     json.member("file", scene.file);
     for (const KindCount& k : scene.primitives) json.member(k.name, k.count);
     json.member("lights", scene.lights);
     json.endObject();
-    if (picture) {
+}
+
+void writePictureJson(JsonWriter& json, const RenderSettings& picture) {
+    const PixelWindow w = picture.window();
+    json.beginObject();
+    json.member("width", picture.width);
+    json.member("height", picture.height);
+    json.key("region");
+    json.beginArray();
+    for (const int corner : {w.x0, w.y0, w.x1, w.y1}) json.value(corner);
+    json.endArray();
+    json.member("pixelSamples", picture.pixelSamples);
+    json.member("reflectionDepth", picture.reflectionDepth);
+    json.member("shadows", picture.shadows);
+    json.member("softShadows", picture.softShadows);
+    json.member("glossyReflections", picture.glossyReflections);
+    json.member("distributedSamples", picture.distributedSamples);
+    json.endObject();
+}
+
+void writeRaysJson(JsonWriter& json, const RenderCounters& rays) {
+    json.beginObject();
+    writeMembers(json, rayStatistics(), rays);
+    json.endObject();
+}
+
+void writeTreeReportJson(JsonWriter& json, const TreeReport& tree) {
+    json.beginObject();
+    json.member("name", accelKindName(tree.settings.kind));
+    json.member("structure", tree.stats.name);  // as the accelerator names itself, e.g. "kd-sweep"
+    json.key("settings");
+    writeSettingsJson(json, tree.settings, tree.scenePrimitives);
+    writeMembers(json, treeStatistics(), tree);
+    if (tree.rays) {
         json.key("rays");
-        json.beginObject();
-        json.member("width", picture->width);
-        json.member("height", picture->height);
-        json.member("shadows", picture->shadows);
-        json.member("reflectionDepth", picture->maxDepth);
-        json.member("pixelSamples", picture->pixelSamples);
-        json.member("softShadows", picture->softShadows);
-        json.member("glossyReflections", picture->glossyReflections);
-        json.member("distributedSamples", picture->distributedSamples);
-        json.endObject();
+        writeRaysJson(json, *tree.rays);
+    }
+    if (tree.depths) {
+        json.key("depthHistogram");
+        writeDepthHistogramJson(json, *tree.depths);
+    }
+    json.endObject();
+}
+
+void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RenderSettings>& picture,
+                     const std::vector<TreeReport>& trees) {
+    JsonWriter json(out);
+    json.beginDocument();
+    json.key("scene");
+    writeSceneJson(json, scene);
+    if (picture) {
+        json.key("picture");
+        writePictureJson(json, *picture);
     }
     json.key("trees");
     json.beginArray();
-    for (const TreeReport& t : trees) {
-        json.beginObject();
-        json.member("name", accelKindName(t.settings.kind));
-        json.member("structure", t.stats.name);  // as the accelerator names itself, e.g. "kd-sweep"
-        json.key("settings");
-        writeSettingsJson(json, t.settings);
-        writeMembers(json, treeStatistics(), t);
-        if (t.rays) {
-            json.key("rays");
-            json.beginObject();
-            writeMembers(json, rayStatistics(), t);
-            json.endObject();
-        }
-        if (t.depths) {
-            json.key("depthHistogram");
-            writeDepthHistogramJson(json, *t.depths);
-        }
-        json.endObject();
-    }
+    for (const TreeReport& t : trees) writeTreeReportJson(json, t);
     json.endArray();
     json.endObject();
 }

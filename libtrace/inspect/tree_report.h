@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "accel/settings.h"
+#include "core/json_writer.h"
 #include "geometry/primitives.h"
 #include "inspect/depth_histogram.h"
 #include "inspect/ray_statistics.h"
+#include "scene/scene.h"
 
 namespace rt {
 
@@ -29,6 +31,9 @@ struct SceneSummary {
     std::uint32_t lights = 0;
 };
 
+// The summary of `scene`, read from `path` ("-" is reported as "<stdin>").
+SceneSummary summarizeScene(const std::string& path, const Scene& scene);
+
 // Every statistic in rows, one column per tree.
 void printTreeTable(std::ostream& out, const std::vector<TreeReport>& trees);
 
@@ -36,9 +41,21 @@ void printTreeTable(std::ostream& out, const std::vector<TreeReport>& trees);
 // Both reports must have ray statistics.
 void printThesisTable43(std::ostream& out, const std::string& sceneName, const TreeReport& bsp, const TreeReport& kd);
 
-// {"scene": {...}, "rays": {width, height, shadows, reflectionDepth, pixelSamples, softShadows,
-// glossyReflections, distributedSamples} (when traced), "trees": [...]}.
+// The JSON of rt-inspect --json (docs/json.md): {"version", "scene", "picture" (when the
+// rays were traced), "trees": [...]}.
 void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::optional<RenderSettings>& picture,
                      const std::vector<TreeReport>& trees);
+
+// The objects rt-inspect --json and rt-render --stats-json share, so that a quantity has one
+// name and one shape in both (docs/json.md):
+// {"file", one count per primitive kind ("triangles", ...), "lights"}
+void writeSceneJson(JsonWriter& json, const SceneSummary& scene);
+// {"width", "height", "region", "pixelSamples", "reflectionDepth", "shadows", "softShadows",
+// "glossyReflections", "distributedSamples"}
+void writePictureJson(JsonWriter& json, const RenderSettings& picture);
+// {"name", "structure", "settings", the statistics, and "rays", "depthHistogram" when the report has them}
+void writeTreeReportJson(JsonWriter& json, const TreeReport& tree);
+// {"cameraRays", "shadowRays", ..., "cameraIntersectionTestsPerRay"}
+void writeRaysJson(JsonWriter& json, const RenderCounters& rays);
 
 }  // namespace rt

@@ -7,10 +7,8 @@
 namespace rt {
 
 namespace {
-// Large enough for any real image; the framebuffer (12 bytes a pixel) stays below 3.3 GB.
-constexpr int kMaxImageSide = 65536;
+// The most pixels rendered at once: the framebuffer (12 bytes a pixel) stays below 3.3 GB.
 constexpr long long kMaxPixels = 1ll << 28;
-constexpr int kMaxSamples = 1 << 20;
 }  // namespace
 
 void validate(const RenderSettings& s) {
@@ -20,8 +18,9 @@ void validate(const RenderSettings& s) {
     if (const PixelWindow w = s.window(); (long long)w.width() * w.height() > kMaxPixels)
         throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
                          " pixels at once needs more than 3 GB; render it in regions (--region)");
-    if (s.maxDepth < 0 || s.maxDepth > 10)
-        throw InputError("recursion depth " + std::to_string(s.maxDepth) + " is outside 0-10");
+    if (s.reflectionDepth < 0 || s.reflectionDepth > kMaxReflectionDepth)
+        throw InputError("reflection depth " + std::to_string(s.reflectionDepth) + " is outside 0-" +
+                         std::to_string(kMaxReflectionDepth));
     if (s.pixelSamples < 1 || s.pixelSamples > kMaxSamples)
         throw InputError("samples per pixel must be 1-" + std::to_string(kMaxSamples));
     if (s.distributedSamples < 1 || s.distributedSamples > kMaxSamples)

@@ -7,11 +7,16 @@
 
 namespace rt {
 
+// The limits validate() enforces; the tools' options check the same numbers.
+inline constexpr int kMaxImageSide = 65536;  // width and height: larger than any real image
+inline constexpr int kMaxReflectionDepth = 10;
+inline constexpr int kMaxSamples = 1 << 20;  // -S and -r
+
 struct RenderSettings {
     int width = 800;   // -x
     int height = 600;  // -y
     std::optional<PixelWindow> region;  // --region: render only this window
-    int maxDepth = 5;      // -d: reflection rays that may follow one camera ray (0-10)
+    int reflectionDepth = 5;  // -d: reflection rays that may follow one camera ray (0-kMaxReflectionDepth)
     bool shadows = false;  // -s: a shadow ray to each light (the thesis's default is off)
     // -S: camera rays per pixel on a jittered grid (thesis 2.6.1); 1 shoots one ray through the centre.
     int pixelSamples = 1;
@@ -25,7 +30,7 @@ struct RenderSettings {
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
 };
 
-// Throws rt::InputError when a setting is out of range (sizes, depth 1-10, samples, region).
+// Throws rt::InputError when a setting is out of range (sizes, depth 0-10, samples, region).
 void validate(const RenderSettings& settings);
 
 }  // namespace rt

@@ -86,7 +86,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, Sa
         if (seen > 0) c += phongLight(m, n, toLight, toViewer, light.color) * seen;
     }
     // Thesis 2.1, step 6: the reflected intensity is added to the local one.
-    if (m.reflection > 0 && depth < settings_.maxDepth)
+    if (m.reflection > 0 && depth < settings_.reflectionDepth)
         c += reflection(p, n, ray.direction, m, depth, inBundle, rng, counters) * m.reflection;
     return c;
 }

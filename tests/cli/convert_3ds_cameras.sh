@@ -9,10 +9,12 @@ MODELS="$RT_SHARED_DIR/models/3ds"
 for name in TargetCameraAnim CameraRollAnim; do
     model="$MODELS/$name/$name.3ds"
     expect_exit 0 "$RT_CONVERT" "$model" --json
-    grep -q '"cameras": {"inFile": 1, "used": "Camera01", "generated": false}' "$WORK/stdout" ||
+    python3 -c 'import json,sys; assert json.load(sys.stdin)["cameras"] == {"inFile": 1, "used": "Camera01", "generated": False}' \
+        <"$WORK/stdout" ||
         fail "$name: the file's camera is not used: $(cat "$WORK/stdout")"
     expect_exit 0 "$RT_CONVERT" "$model" --camera auto --json
-    grep -q '"cameras": {"inFile": 1, "used": null, "generated": true}' "$WORK/stdout" ||
+    python3 -c 'import json,sys; assert json.load(sys.stdin)["cameras"] == {"inFile": 1, "used": None, "generated": True}' \
+        <"$WORK/stdout" ||
         fail "$name: --camera auto did not frame the scene: $(cat "$WORK/stdout")"
 
     # The box covers part of the 40x15 text picture (one character per pixel, blank where no

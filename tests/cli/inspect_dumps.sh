@@ -57,7 +57,7 @@ expect_exit 0 "$RT_INSPECT" --tree all --dump json -f "$WORK/tree.json" --dump-l
     "$WORK/two_clusters.xml"
 for t in bsp kd; do
     [ -s "$WORK/tree-$t.json" ] || fail "no tree-$t.json"
-    grep -q "\"tree\": \"$t" "$WORK/tree-$t.json" || fail "tree-$t.json is not the $t tree"
+    grep -q "\"structure\": \"$t" "$WORK/tree-$t.json" || fail "tree-$t.json is not the $t tree"
     check_obj "$WORK/l-$t.obj" >/dev/null || fail "l-$t.obj is not a wireframe OBJ"
 done
 echo "inspect_dumps: ok"

@@ -11,19 +11,19 @@ grep -Eq '^[0-9]+\.[0-9]{2} [0-9]+\.[0-9]{2} [1-9][0-9]* [1-9][0-9]* [1-9][0-9]*
 # The same with long names; the summary goes to stderr, nothing but the line to stdout.
 expect_exit 0 "$RT_RENDER" "$scene" --width 32 --height 24 --shadows --depth 3 --batch-stats --output null
 [ "$(wc -l <"$WORK/stdout")" = 1 ] || fail "stdout has more than the -b line"
-grep -q "primary" "$WORK/stderr" || fail "no summary on stderr"
+grep -q "camera, .* shadow, .* reflection rays" "$WORK/stderr" || fail "no summary on stderr"
 
-# --stats-json is JSON with the counters; its primary rays are width x height x samples.
+# --stats-json is JSON with the counters; its camera rays are width x height x samples.
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -S 4 --stats-json -
-python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["primaryRays"]==32*24*4, d; assert d["testsPerRay"]>0' \
+python3 -c 'import json,sys; d=json.load(sys.stdin); r=d["rays"]; assert r["cameraRays"]==32*24*4, d; assert r["intersectionTestsPerRay"]>0' \
     <"$WORK/stdout" || fail "bad --stats-json: $(cat "$WORK/stdout")"
 
 # -D s implies shadows; -D d alone does not.
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -D s -r 2 --stats-json -
-python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["shadows"] and d["shadowRays"]>0, d' <"$WORK/stdout" ||
+python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["picture"]["shadows"] and d["rays"]["shadowRays"]>0, d' <"$WORK/stdout" ||
     fail "-D s without shadows: $(cat "$WORK/stdout")"
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -D d -r 2 --stats-json -
-python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["shadowRays"]==0, d' <"$WORK/stdout" ||
+python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["rays"]["shadowRays"]==0, d' <"$WORK/stdout" ||
     fail "-D d cast shadow rays: $(cat "$WORK/stdout")"
 
 # -p builds the tree only: no render time, no output file.

@@ -101,7 +101,7 @@ TEST_F(ImageOutputTest, OutputTypeWritesFilesWithoutTheExtension) {
 TEST_F(ImageOutputTest, ExrKeepsLinearValuesAndMetadata) {
     for (const bool half : {true, false}) {
         ImageOutputSettings s = settings(ImageFormat::Exr, file("a.exr"));
-        s.exrHalf = half;
+        s.exrPixels = half ? ExrPixelType::Half : ExrPixelType::Float;
         writeImage(ramp(), s, metadata());
         OIIO::ImageSpec spec;
         const std::vector<float> px = readPixels(s.path, spec);

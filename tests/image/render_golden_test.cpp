@@ -78,20 +78,20 @@ RenderSettings golden() {
 TEST(RenderGolden, WhittedWithShadowsAndReflections) {
     RenderSettings s = golden();
     s.shadows = true;
-    s.maxDepth = 3;
+    s.reflectionDepth = 3;
     expectMatchesGolden(renderTestScene(s), "whitted");
 }
 
 TEST(RenderGolden, NoShadowsOneReflection) {
     RenderSettings s = golden();
-    s.maxDepth = 1;
+    s.reflectionDepth = 1;
     expectMatchesGolden(renderTestScene(s), "no_shadows_depth1");
 }
 
 TEST(RenderGolden, DistributedSoftShadowsGlossyReflectionsSupersampling) {
     RenderSettings s = golden();
     s.shadows = true;
-    s.maxDepth = 3;
+    s.reflectionDepth = 3;
     s.pixelSamples = 4;
     s.softShadows = s.glossyReflections = true;
     s.distributedSamples = 8;

@@ -1,13 +1,15 @@
-// rt-inspect's JSON: the writer, the report and the tree dump, each parsed back by a
-// strict little reader so that the tests catch malformed output, not just missing text.
+// The JSON writer and the documents built with it: the report and the tree dump, each
+// parsed back by a strict little reader so that the tests catch malformed output, not just
+// missing text. The tools' documents are checked against docs/schema by tests/cli/json_schema.sh.
 #include <cctype>
 #include <map>
 #include <memory>
 #include <sstream>
 #include <variant>
 
+#include "accel/kdtree.h"
 #include "accel/naive.h"
-#include "inspect/json_writer.h"
+#include "core/json_writer.h"
 #include "inspect/tree_dump.h"
 #include "inspect/tree_report.h"
 #include "inspect_fixed_tree.h"
@@ -185,6 +187,15 @@ TEST(JsonWriter, RejectsMisuse) {
     json.beginObject();
     EXPECT_THROW(json.value(1), std::logic_error);  // a value without a key
     EXPECT_THROW(json.endArray(), std::logic_error);
+    EXPECT_THROW(json.beginDocument(), std::logic_error);  // a document is never nested
+}
+
+TEST(JsonWriter, DocumentOpensWithItsVersion) {
+    std::ostringstream out;
+    JsonWriter json(out);
+    json.beginDocument();
+    json.endObject();
+    EXPECT_EQ(out.str(), "{\n  \"version\": " + std::to_string(kJsonSchemaVersion) + "\n}\n");
 }
 
 TEST(ReportJson, OneSphereWithTheNaiveList) {
@@ -204,9 +215,12 @@ TEST(ReportJson, OneSphereWithTheNaiveList) {
     std::ostringstream out;
     writeReportJson(out, {"one \"sphere\".xml", {{"triangles", 0}, {"spheres", 1}}, 1}, rays, {report});
     const Json j = parse(out.str());
+    EXPECT_EQ(j["version"].num(), kJsonSchemaVersion);
     EXPECT_EQ(j["scene"]["file"].str(), "one \"sphere\".xml");
     EXPECT_EQ(j["scene"]["spheres"].num(), 1);
-    EXPECT_EQ(j["rays"]["width"].num(), 16);
+    EXPECT_EQ(j["picture"]["width"].num(), 16);
+    EXPECT_EQ(j["picture"]["region"][2].num(), 16);  // the whole picture, x1 exclusive
+    EXPECT_EQ(j["picture"]["reflectionDepth"].num(), 5);
     ASSERT_EQ(j["trees"].size(), 1u);
     const Json& t = j["trees"][0];
     EXPECT_EQ(t["name"].str(), "naive");
@@ -234,18 +248,34 @@ TEST(ReportJson, SettingsOfEachKind) {
     std::ostringstream out;
     writeReportJson(out, {}, std::nullopt, {bsp, kd});
     const Json j = parse(out.str());
-    EXPECT_FALSE(j.has("rays"));
+    EXPECT_FALSE(j.has("picture"));
     EXPECT_EQ(j["trees"][0]["settings"]["maxDepth"].num(), 7);
     EXPECT_EQ(j["trees"][1]["settings"]["split"].str(), "sample");
-    EXPECT_EQ(j["trees"][1]["settings"]["maxDepth"].str(), "auto");
     EXPECT_FALSE(j["trees"][1].has("rays"));
+}
+
+// The KD depth limit is a number even when the tree chose it (8 + 1.3 log2 N), with a
+// flag saying so; it once was the string "auto".
+TEST(ReportJson, KdDepthLimitIsTheNumberTheTreeUsed) {
+    TreeReport chosen, given;
+    chosen.settings.kind = given.settings.kind = AccelKind::Kd;
+    chosen.scenePrimitives = given.scenePrimitives = 1024;
+    given.settings.kd.maxDepth = 12;
+    std::ostringstream out;
+    writeReportJson(out, {}, std::nullopt, {chosen, given});
+    const Json j = parse(out.str());
+    EXPECT_EQ(j["trees"][0]["settings"]["maxDepth"].num(), defaultKdMaxDepth(1024));
+    EXPECT_TRUE(std::get<bool>(j["trees"][0]["settings"]["maxDepthAuto"].v));
+    EXPECT_EQ(j["trees"][1]["settings"]["maxDepth"].num(), 12);
+    EXPECT_FALSE(std::get<bool>(j["trees"][1]["settings"]["maxDepthAuto"].v));
 }
 
 TEST(TreeJson, NestedLikeTheTree) {
     std::ostringstream out;
     writeTreeJson(out, FixedTree::sample(), {});
     const Json j = parse(out.str());
-    EXPECT_EQ(j["tree"].str(), "fixed");
+    EXPECT_EQ(j["version"].num(), kJsonSchemaVersion);
+    EXPECT_EQ(j["structure"].str(), "fixed");
     const Json& root = j["root"];
     EXPECT_EQ(root["axis"].str(), "x");
     ASSERT_EQ(root["children"].size(), 2u);
@@ -264,7 +294,7 @@ TEST(TreeJson, CutAtDepth) {
     std::ostringstream out;
     writeTreeJson(out, FixedTree::sample(), cut);
     const Json j = parse(out.str());
-    EXPECT_EQ(j["maxDepth"].num(), 1);
+    EXPECT_EQ(j["cutDepth"].num(), 1);
     const Json& right = j["root"]["children"][1];
     EXPECT_FALSE(right.has("children"));
     EXPECT_TRUE(std::get<bool>(right["cutOff"].v));

@@ -82,7 +82,7 @@ TEST(RayStatistics, ReflectionsBounceUpToTheDepth) {
     options.width = 8;
     options.height = 6;
     for (const int depth : {0, 1, 3}) {
-        options.maxDepth = depth;
+        options.reflectionDepth = depth;
         const RenderCounters st = traceRayStatistics(scene, naive, options);
         EXPECT_EQ(st.camera.rays, 48u);
         EXPECT_EQ(st.reflection.rays, 48u * depth) << "depth " << depth;
@@ -98,7 +98,7 @@ TEST(RayStatistics, MatteSurfacesDoNotReflect) {
     RenderSettings options;
     options.width = 8;
     options.height = 6;
-    options.maxDepth = 5;
+    options.reflectionDepth = 5;
     EXPECT_EQ(traceRayStatistics(scene, naive, options).reflection.rays, 0u);
 }
 
@@ -115,7 +115,7 @@ TEST(RayStatistics, SameCountsWithOneOrTwoThreads) {
     options.width = 40;
     options.height = 30;
     options.shadows = true;
-    options.maxDepth = 3;
+    options.reflectionDepth = 3;
     omp_set_num_threads(1);
     const RenderCounters one = traceRayStatistics(scene, naive, options);
     omp_set_num_threads(2);

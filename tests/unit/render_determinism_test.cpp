@@ -16,7 +16,7 @@ RenderSettings distributed() {
     r.width = 70;  // not a multiple of the block size
     r.height = 40;
     r.shadows = true;
-    r.maxDepth = 3;
+    r.reflectionDepth = 3;
     r.pixelSamples = 2;
     r.softShadows = r.glossyReflections = true;
     r.distributedSamples = 3;

@@ -22,29 +22,29 @@ namespace {
 // fraction are at most 1, and, below the deepest reflection, its reflection coefficient
 // times what the reflected ray sees; a miss sees the background. Averages of samples or
 // of a glossy bundle stay below their largest member.
-float channelBound(const Scene& s, int maxDepth, float Color::*channel) {
+float channelBound(const Scene& s, int reflectionDepth, float Color::*channel) {
     float ambientLight = 0;
     for (const Light& l : s.lights) ambientLight += l.color.*channel;
     std::vector<Material> materials = s.materials;
     materials.push_back(Material{});  // what the tracer uses for a primitive without one
     float seen = 0;  // what a ray reflected at the current depth sees at most; none below the deepest
-    for (int depth = maxDepth; depth >= 0; --depth) {
+    for (int depth = reflectionDepth; depth >= 0; --depth) {
         float deepest = s.background.*channel;
         for (const Material& m : materials) {
             float local = m.ambient * (m.color.*channel) * ambientLight;
             for (const Light& l : s.lights) local += (m.diffuse * (m.color.*channel) + m.specular) * (l.color.*channel);
-            deepest = std::max(deepest, local + (depth < maxDepth ? m.reflection * seen : 0.0f));
+            deepest = std::max(deepest, local + (depth < reflectionDepth ? m.reflection * seen : 0.0f));
         }
         seen = deepest;
     }
     return seen;
 }
 
-// Renders with shadows and reflections to `maxDepth`, then checks every pixel: finite, not
+// Renders with shadows and reflections to `reflectionDepth`, then checks every pixel: finite, not
 // negative, within the Phong bound (with room for float rounding), and no sample replaced.
-void expectFiniteAndBounded(const Scene& scene, const Accelerator& accel, int width, int height, int maxDepth) {
+void expectFiniteAndBounded(const Scene& scene, const Accelerator& accel, int width, int height, int reflectionDepth) {
     RenderSettings settings = test::picture(width, height);
-    settings.maxDepth = maxDepth;
+    settings.reflectionDepth = reflectionDepth;
     settings.shadows = true;
     RenderStats stats;
     const Framebuffer image = render(scene, accel, settings, stats);
@@ -52,7 +52,7 @@ void expectFiniteAndBounded(const Scene& scene, const Accelerator& accel, int wi
                                                   << stats.counters.nonFinite.firstY << ")";
     int reported = 0;
     for (float Color::*channel : {&Color::r, &Color::g, &Color::b}) {
-        const float bound = channelBound(scene, maxDepth, channel) * 1.0001f;
+        const float bound = channelBound(scene, reflectionDepth, channel) * 1.0001f;
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
                 const float v = image.at(x, y).*channel;
@@ -63,9 +63,9 @@ void expectFiniteAndBounded(const Scene& scene, const Accelerator& accel, int wi
     }
 }
 
-void expectFiniteAndBounded(const Scene& scene, int width, int height, int maxDepth) {
+void expectFiniteAndBounded(const Scene& scene, int width, int height, int reflectionDepth) {
     const std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, AccelSettings{});
-    expectFiniteAndBounded(scene, *accel, width, height, maxDepth);
+    expectFiniteAndBounded(scene, *accel, width, height, reflectionDepth);
 }
 
 // A lattice of 12^3 small mirror spheres (radius 0.006, as the smallest of the balls scene),

@@ -112,7 +112,7 @@ TEST(Tracer, GlossyReflectionsSpreadAroundTheMirrorDirection) {
     for (Material& m : sharpScene.materials) m.spread = 0;
     const NaiveAccelerator accel(s.primitives);  // the same geometry serves both
     RenderSettings settings = test::picture(64, 48);
-    settings.maxDepth = 2;
+    settings.reflectionDepth = 2;
     settings.glossyReflections = true;
     settings.distributedSamples = 16;
     const Tracer tracer(s, accel, settings);
@@ -140,7 +140,7 @@ TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
     const NaiveAccelerator accel(s.primitives);
     for (int depth : {1, 3, 10}) {
         RenderSettings settings = test::picture(8, 6);
-        settings.maxDepth = depth;
+        settings.reflectionDepth = depth;
         RenderStats stats;
         render(s, accel, settings, stats);
         EXPECT_EQ(stats.counters.camera.rays, 48u);
@@ -179,14 +179,20 @@ TEST(RenderSettings, OutOfRangeSettingsAreInputErrors) {
         EXPECT_THROW(validate(s), InputError);
     };
     bad([](RenderSettings& s) { s.width = 0; });
-    bad([](RenderSettings& s) { s.maxDepth = 11; });
-    bad([](RenderSettings& s) { s.maxDepth = -1; });
+    bad([](RenderSettings& s) { s.height = kMaxImageSide + 1; });
+    bad([](RenderSettings& s) { s.reflectionDepth = kMaxReflectionDepth + 1; });
+    bad([](RenderSettings& s) { s.distributedSamples = kMaxSamples + 1; });
+    bad([](RenderSettings& s) { s.reflectionDepth = -1; });
     bad([](RenderSettings& s) { s.pixelSamples = 0; });
     bad([](RenderSettings& s) { s.width = s.height = 65536; });  // 48 GB of framebuffer
     bad([](RenderSettings& s) { s.region = PixelWindow{10, 10, 10, 20}; });
     bad([](RenderSettings& s) { s.region = PixelWindow{0, 0, 801, 600}; });
     RenderSettings ok;
     ok.region = PixelWindow{0, 0, 800, 600};
+    EXPECT_NO_THROW(validate(ok));
+    // The limits the tools' options check are the ones validate() accepts.
+    ok.reflectionDepth = kMaxReflectionDepth;
+    ok.pixelSamples = ok.distributedSamples = kMaxSamples;
     EXPECT_NO_THROW(validate(ok));
     ok.width = ok.height = 65536;
     ok.region = PixelWindow{0, 0, 4096, 4096};  // a tile of a huge image is fine

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "core/names.h"
+
 namespace rt::tool {
 
 // Parses the command line. Returns the exit code when the tool must stop (0 after --help or
@@ -33,6 +35,18 @@ CLI::Validator numberIn(T lowest, T highest) {
             return {};
         },
         CLI::Range(lowest, highest).get_description());
+}
+
+// --option NAME with one of `table`'s names (core/names.h), stored as the value it names; the
+// check and --help list the names, and --help shows the current value as the default.
+template <class E, std::size_t N>
+CLI::Option* addNamedOption(CLI::App& app, const std::string& flags, E& value, const NamedValues<E, N>& table,
+                            const std::string& help) {
+    return app
+        .add_option_function<std::string>(
+            flags, [&value, &table](const std::string& name) { value = *parseNamed(table, name); }, help)
+        ->check(CLI::IsMember(namesOf(table)))
+        ->default_str(nameOf(table, value));
 }
 
 // A validator for a finite number above zero.

@@ -44,13 +44,13 @@ int convert(Options& o) {
     if (!o.output.empty() && o.output != "-" && rt::lowerCaseExtension(o.output) != ".xml")
         throw rt::InputError(o.output +
                              ": rt-convert writes rt's XML scene only: name it .xml, or - for standard output");
-    if (!o.upAxis.empty()) o.import.upAxis = o.upAxis == "z" ? rt::UpAxis::Z : rt::UpAxis::Y;
+    if (!o.upAxis.empty()) o.import.upAxis = rt::parseNamed(rt::kUpAxisNames, o.upAxis);
     const rt::ImportResult result =
         o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
     if (!o.output.empty()) rt::saveSceneXml(result.scene, o.output);  // all or nothing (core/atomic_file.h)
-    const rt::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
-    if (!o.quiet) rt::convert::printSummary(std::cerr, summary);
-    if (o.json) rt::convert::printSummaryJson(std::cout, summary);
+    const rt::tool::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
+    if (!o.quiet) rt::tool::convert::printSummary(std::cerr, summary);
+    if (o.json) rt::tool::convert::printSummaryJson(std::cout, summary);
     return rt::tool::kExitOk;
 }
 
@@ -66,7 +66,8 @@ int main(int argc, char** argv) {
                    "Model file: .gltf, .glb, .obj, .3ds, .ply, .stl, .fbx, .dae, .raw, ...; - reads a glTF 2.0 model "
                    "(GLB or JSON) from standard input");
     app.add_option("--generate", o.generate,
-                   "Instead of a model file, a test scene of the thesis: balls, balls2, ships, tree or pyramid5");
+                   "Instead of a model file, a test scene of the thesis: " +
+                       CLI::detail::join(rt::thesisSceneNames(), ", "));
     app.add_option("-o,--output", o.output,
                    "Scene file to write, .xml (RAW models go in a folder named after it), or - for standard "
                    "output with the geometry inline");
@@ -80,7 +81,7 @@ int main(int argc, char** argv) {
     app.add_option("--up-axis", o.upAxis,
                    "The file's up axis as its author knows it (3DS, FBX, CAD: usually z); the model is turned to "
                    "stand in rt's Y-up world (default: the format's convention, docs/conversion.md)")
-        ->check(CLI::IsMember({"y", "z"}));
+        ->check(CLI::IsMember(rt::namesOf(rt::kUpAxisNames)));
     app.add_option("--aspect", o.import.aspect,
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")
         ->check(rt::tool::positiveNumber());

@@ -1,8 +1,8 @@
 #include "summary.h"
 
-#include <cstdio>
+#include "core/json_writer.h"
 
-namespace rt::convert {
+namespace rt::tool::convert {
 namespace {
 
 struct Counts {
@@ -15,24 +15,6 @@ Counts countTriangles(const Scene& scene) {
     for (const Model& m : scene.models) c.modelTriangles += m.triangleCount();
     for (const Instance& i : scene.instances) c.sceneTriangles += scene.models[i.model].triangleCount();
     return c;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (const char ch : s) {
-        const auto c = static_cast<unsigned char>(ch);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += ch;
-        } else if (c < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-        } else {
-            out += ch;
-        }
-    }
-    return out + "\"";
 }
 
 }  // namespace
@@ -57,20 +39,43 @@ void printSummaryJson(std::ostream& out, const Summary& s) {
     const Scene& scene = s.result->scene;
     const ImportReport& r = s.result->report;
     const Counts c = countTriangles(scene);
-    out << "{\"input\": " << jsonString(s.input)
-        << ", \"output\": " << (s.output.empty() ? "null" : jsonString(s.output))
-        << ", \"format\": " << jsonString(r.format) << ", \"meshes\": " << r.meshes
-        << ", \"models\": " << scene.models.size() << ", \"modelTriangles\": " << c.modelTriangles
-        << ", \"sceneTriangles\": " << c.sceneTriangles << ", \"instances\": " << scene.instances.size()
-        << ", \"materials\": " << scene.materials.size() << ", \"cameras\": {\"inFile\": " << r.camerasInFile
-        << ", \"used\": " << (r.cameraGenerated ? "null" : jsonString(r.cameraUsed))
-        << ", \"generated\": " << std::boolalpha << r.cameraGenerated
-        << "}, \"lights\": {\"inFile\": " << r.lightsInFile << ", \"written\": " << scene.lights.size()
-        << ", \"generated\": " << r.lightGenerated << "}, \"dropped\": {\"points\": " << r.droppedPoints
-        << ", \"lines\": " << r.droppedLines << ", \"degenerate\": " << r.droppedDegenerate
-        << ", \"degenerateInScene\": " << r.droppedDegenerateInScene << "}, \"notes\": [";
-    for (std::size_t i = 0; i < r.notes.size(); ++i) out << (i ? ", " : "") << jsonString(r.notes[i]);
-    out << "]}\n";
+    JsonWriter json(out);
+    json.beginDocument();
+    json.member("input", s.input);
+    json.key("output");
+    s.output.empty() ? json.null() : json.value(s.output);
+    json.member("format", r.format);
+    json.member("meshes", r.meshes);
+    json.member("models", scene.models.size());
+    json.member("modelTriangles", c.modelTriangles);
+    json.member("sceneTriangles", c.sceneTriangles);
+    json.member("instances", scene.instances.size());
+    json.member("materials", scene.materials.size());
+    json.key("cameras");
+    json.beginObject();
+    json.member("inFile", r.camerasInFile);
+    json.key("used");
+    r.cameraGenerated ? json.null() : json.value(r.cameraUsed);
+    json.member("generated", r.cameraGenerated);
+    json.endObject();
+    json.key("lights");
+    json.beginObject();
+    json.member("inFile", r.lightsInFile);
+    json.member("written", scene.lights.size());
+    json.member("generated", r.lightGenerated);
+    json.endObject();
+    json.key("dropped");
+    json.beginObject();
+    json.member("points", r.droppedPoints);
+    json.member("lines", r.droppedLines);
+    json.member("degenerate", r.droppedDegenerate);
+    json.member("degenerateInScene", r.droppedDegenerateInScene);
+    json.endObject();
+    json.key("notes");
+    json.beginArray();
+    for (const std::string& note : r.notes) json.value(note);
+    json.endArray();
+    json.endObject();
 }
 
-}  // namespace rt::convert
+}  // namespace rt::tool::convert

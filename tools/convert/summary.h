@@ -7,7 +7,7 @@
 
 #include "import/import.h"
 
-namespace rt::convert {
+namespace rt::tool::convert {
 
 struct Summary {
     std::string input;
@@ -18,4 +18,4 @@ struct Summary {
 void printSummary(std::ostream& out, const Summary& summary);
 void printSummaryJson(std::ostream& out, const Summary& summary);
 
-}  // namespace rt::convert
+}  // namespace rt::tool::convert

@@ -17,7 +17,7 @@
 #include "tool.h"
 #include "version.h"
 
-namespace rt::tool {
+namespace rt::tool::inspect {
 
 namespace {
 
@@ -35,7 +35,7 @@ std::string pathFor(const std::string& path, const std::string& treeName, bool s
 
 void checkOptions(const InspectOptions& o) {
     const bool several = o.trees.size() > 1;
-    if (several && (o.dumpPath == "-" && !o.dumpFormat.empty()))
+    if (several && (o.dumpPath == "-" && o.dumpFormat))
         throw InputError("--dump with several trees needs a file (-f FILE); each tree gets its own");
     if (several && o.leavesPath == "-") throw InputError("--dump-leaves - (standard output) needs a single tree");
     if (o.heatmapPath == "-") throw InputError("--heatmap needs a file name; a PNG is not written to standard output");
@@ -47,7 +47,7 @@ void checkOptions(const InspectOptions& o) {
 
 // Whether something other than the report goes to standard output.
 bool dumpsToStdout(const InspectOptions& o) {
-    return o.leavesPath == "-" || (!o.dumpFormat.empty() && o.dumpPath == "-");
+    return o.leavesPath == "-" || (o.dumpFormat && o.dumpPath == "-");
 }
 
 void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
@@ -57,11 +57,11 @@ void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
         writeFileAtomically(pathFor(o.leavesPath, name, several),
                             [&](std::ostream& out) { writeLeafBoxesObj(out, *tree.accel, o.cut); });
     }
-    if (!o.dumpFormat.empty()) {
+    if (o.dumpFormat) {
         TreeCut cut = o.cut;
         cut.nonEmptyOnly = false;  // the structure dump shows every node
         writeFileAtomically(pathFor(o.dumpPath, name, several), [&](std::ostream& out) {
-            if (o.dumpFormat == "dot")
+            if (*o.dumpFormat == TreeDumpFormat::Dot)
                 writeTreeDot(out, *tree.accel, cut);
             else
                 writeTreeJson(out, *tree.accel, cut);
@@ -103,7 +103,7 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
     if (o.rays) {
         const RenderSettings& p = o.picture;
         std::cout << "rays: " << p.width << "x" << p.height << ", " << p.pixelSamples << " per pixel, shadows "
-                  << (p.softShadows ? "soft" : p.shadows ? "on" : "off") << ", reflection depth " << p.maxDepth
+                  << (p.softShadows ? "soft" : p.shadows ? "on" : "off") << ", reflection depth " << p.reflectionDepth
                   << (p.glossyReflections ? " (glossy)" : "");
         if (p.softShadows || p.glossyReflections) std::cout << ", " << p.distributedSamples << " rays per bundle";
         std::cout << "\n";
@@ -136,8 +136,7 @@ int runInspection(const InspectOptions& o) {
     scene.dropDescription();
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-inspect: warning: " << w << '\n';
-    const SceneSummary summary{o.scenePath == "-" ? "<stdin>" : o.scenePath, scene.primitives.countsPerKind(),
-                               std::uint32_t(scene.lights.size())};
+    const SceneSummary summary = summarizeScene(o.scenePath, scene);
 
     std::vector<InspectedTree> trees;
     for (const AccelKind kind : o.trees) {
@@ -157,4 +156,4 @@ int runInspection(const InspectOptions& o) {
     return kExitOk;
 }
 
-}  // namespace rt::tool
+}  // namespace rt::tool::inspect

@@ -11,8 +11,9 @@
 #include "inspect/heatmap.h"
 #include "inspect/ray_statistics.h"
 #include "inspect/tree_cut.h"
+#include "inspect/tree_dump.h"
 
-namespace rt::tool {
+namespace rt::tool::inspect {
 
 struct InspectOptions {
     std::string scenePath;             // "-" reads standard input
@@ -24,7 +25,7 @@ struct InspectOptions {
     RenderSettings picture;            // whose rays --rays traces (on picture.threads); its size is the heat map's
     bool depthHistogram = false;
     std::string leavesPath;            // --dump-leaves
-    std::string dumpFormat;            // "dot" or "json"; empty: no dump
+    std::optional<TreeDumpFormat> dumpFormat;  // --dump dot|json; nullopt: no dump
     std::string dumpPath = "-";
     TreeCut cut;                       // --max-depth and --leaves
     std::string heatmapPath;
@@ -35,4 +36,4 @@ struct InspectOptions {
 // Returns the exit code. Throws rt::InputError for bad input, other exceptions for failures.
 int runInspection(const InspectOptions& options);
 
-}  // namespace rt::tool
+}  // namespace rt::tool::inspect

@@ -9,6 +9,8 @@
 
 namespace {
 
+using rt::tool::addNamedOption;
+
 std::vector<rt::AccelKind> treesNamed(const std::string& name) {
     // "all" means the trees; the naive list is the reference, and tracing a real scene
     // through it takes hours, so it is inspected only by name.
@@ -21,14 +23,16 @@ std::vector<rt::AccelKind> treesNamed(const std::string& name) {
 int main(int argc, char** argv) {
     CLI::App app{"Shows how the KD and BSP trees of a scene look and perform."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-inspect"));
-    rt::tool::InspectOptions o;
-    std::string tree = "kd", leaves = "all", scale = "linear", heatmapRays = "camera";
+    rt::tool::inspect::InspectOptions o;
+    std::string tree = "kd";
     std::optional<std::uint32_t> maxDepth;
     std::optional<float> heatmapMax;
 
     app.add_option("scene", o.scenePath, "Scene file (thesis XML), - for standard input")->required();
+    std::vector<std::string> treeNames = rt::namesOf(rt::kAccelKindNames);
+    treeNames.push_back("all");
     app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, or all (bsp and kd)")
-        ->check(CLI::IsMember({"naive", "bsp", "kd", "all"}))->capture_default_str();
+        ->check(CLI::IsMember(treeNames))->capture_default_str();
     app.add_flag("--json", o.json, "Print the statistics as one JSON document");
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no warnings or notes on standard error (errors still are)");
     rt::tool::addThreadsOption(app, o.picture.threads);
@@ -39,19 +43,21 @@ int main(int argc, char** argv) {
     const char* dumps = "Looking inside";
     app.add_flag("--depth-histogram", o.depthHistogram, "Leaves and primitive references per depth")->group(dumps);
     app.add_option("--dump-leaves", o.leavesPath, "Write the leaf boxes as a wireframe OBJ")->group(dumps);
-    app.add_option("--leaves", leaves, "Which leaf boxes: all or nonempty")
-        ->check(CLI::IsMember({"all", "nonempty"}))->capture_default_str()->group(dumps);
-    app.add_option("--dump", o.dumpFormat, "Write the tree structure: dot (Graphviz) or json")
-        ->check(CLI::IsMember({"dot", "json"}))->group(dumps);
+    addNamedOption(app, "--leaves", o.cut.nonEmptyOnly, rt::kLeafChoiceNames, "Which leaf boxes: all or nonempty")
+        ->group(dumps);
+    app.add_option_function<std::string>(
+           "--dump", [&o](const std::string& name) { o.dumpFormat = rt::parseNamed(rt::kTreeDumpFormatNames, name); },
+           "Write the tree structure: dot (Graphviz) or json")
+        ->check(CLI::IsMember(rt::namesOf(rt::kTreeDumpFormatNames)))->group(dumps);
     app.add_option("-f,--file", o.dumpPath, "Where --dump writes, - for standard output")
         ->capture_default_str()->group(dumps);
     app.add_option("--max-depth", maxDepth, "Dump the tree only down to this depth")->group(dumps);
     app.add_option("--heatmap", o.heatmapPath, "Write a PNG heat map of the camera rays' work")->group(dumps);
-    app.add_option("--heatmap-rays", heatmapRays,
+    addNamedOption(app, "--heatmap-rays", o.heatmapRays, rt::kPixelRaysNames,
                    "Work of each pixel's camera rays, or of all its rays (-s, -d, -D as for --rays)")
-        ->check(CLI::IsMember({"camera", "all"}))->capture_default_str()->group(dumps);
-    app.add_option("--heatmap-scale", scale, "Colour scale: linear or log")
-        ->check(CLI::IsMember({"linear", "log"}))->capture_default_str()->group(dumps);
+        ->group(dumps);
+    addNamedOption(app, "--heatmap-scale", o.heatmap.scale, rt::kHeatScaleNames, "Colour scale: linear or log")
+        ->group(dumps);
     app.add_option("--heatmap-max", heatmapMax, "Work at the top of the colour bar [default: the largest]")
         ->check(CLI::PositiveNumber)->group(dumps);
     rt::tool::addAccelOptions(app, o.accel);
@@ -59,9 +65,6 @@ int main(int argc, char** argv) {
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-inspect", argc, argv)) return *exitCode;
     o.trees = treesNamed(tree);
     o.cut.maxDepth = maxDepth;
-    o.cut.nonEmptyOnly = leaves == "nonempty";
-    o.heatmap.scale = scale == "log" ? rt::HeatScale::Log : rt::HeatScale::Linear;
-    o.heatmapRays = heatmapRays == "all" ? rt::PixelRays::All : rt::PixelRays::Camera;
     o.heatmap.maximum = heatmapMax;
-    return rt::tool::run("rt-inspect", [&] { return rt::tool::runInspection(o); });
+    return rt::tool::run("rt-inspect", [&] { return rt::tool::inspect::runInspection(o); });
 }

@@ -2,6 +2,7 @@
 // This file only declares the command line; runRender (render_command.cpp) does the work.
 #include <CLI/CLI.hpp>
 
+#include "progress.h"
 #include "render_command.h"
 #include "accel_options.h"
 #include "command_line.h"
@@ -10,20 +11,22 @@
 
 namespace {
 
-using rt::render_tool::RenderOptions;
+using rt::AccelKind;
+using rt::tool::addNamedOption;
+using rt::tool::render::RenderOptions;
 
-void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName) {
+void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Rendering options";
     app.add_option("-o,--output", o.outputType,
-                   "Output type: null png exr tga text (default: -f's extension; neither -o nor -f: null)")
-        ->check(CLI::IsMember({"null", "png", "exr", "tga", "text"}))->group(group);
+                   "Output type (default: -f's extension; neither -o nor -f: null)")
+        ->check(CLI::IsMember(rt::imageFormatNames()))->group(group);
     app.add_option("-f,--file", o.outputPath, "Output file; - for standard output")->group(group);
-    auto* bsp = app.add_flag_callback("-B,--bsp", [&] { accelName = "bsp"; }, "Use the BSP tree")->group(group);
-    auto* kd = app.add_flag_callback("-K,--kd", [&] { accelName = "kd"; }, "Use the KD tree")->group(group);
+    AccelKind& kind = o.accel.kind;  // the KD tree; the thesis's program used the naive list unless -B or -K
+    auto* bsp = app.add_flag_callback("-B,--bsp", [&kind] { kind = AccelKind::Bsp; }, "Use the BSP tree")->group(group);
+    auto* kd = app.add_flag_callback("-K,--kd", [&kind] { kind = AccelKind::Kd; }, "Use the KD tree")->group(group);
     bsp->excludes(kd);
-    app.add_option("--accel", accelName, "Ray-scene intersection: naive, bsp or kd")
-        ->check(CLI::IsMember({"naive", "bsp", "kd"}))->excludes(bsp)->excludes(kd)->capture_default_str()
-        ->group(group);
+    addNamedOption(app, "--accel", kind, rt::kAccelKindNames, "Ray-scene intersection: the naive list or a tree")
+        ->excludes(bsp)->excludes(kd)->group(group);
     app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
         ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
@@ -39,19 +42,19 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
         ->group(group);
     app.add_option("--view", o.color.view, "OCIO view (default: the display's default, Standard)")->group(group);
     app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
-    app.add_option("--exr-pixels", o.exrPixels, "EXR pixel type: half or float")
-        ->check(CLI::IsMember({"half", "float"}))->capture_default_str()->group(group);
-    app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}))
+    addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")
+        ->group(group);
+    app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember(rt::kPngBits))
         ->capture_default_str()->group(group);
 }
 
 void addOtherOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Other options";
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no progress or summary on standard error")->group(group);
-    app.add_option("--progress", o.progress,
+    addNamedOption(app, "--progress", o.progress, rt::tool::render::kProgressModeNames,
                    "Progress on standard error: bar, lines (for logs: every 10 % or 10 s), none, or auto "
                    "(the bar on a terminal, else lines)")
-        ->check(CLI::IsMember({"auto", "bar", "lines", "none"}))->capture_default_str()->group(group);
+        ->group(group);
     app.add_flag("-b,--batch-stats", o.statsLine,
                  "Print 'preprocessing render objects lights nodes tests-per-ray' on standard output")->group(group);
     app.add_flag("-p,--preprocess-only", o.preprocessOnly, "Build the tree and render nothing (implies -o null)")
@@ -66,14 +69,12 @@ int main(int argc, char** argv) {
     CLI::App app{"Renders a scene by ray tracing (thesis appendix B)."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-render"));
     RenderOptions options;
-    std::string accelName = "kd";  // the thesis's program used the naive list unless -B or -K
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")->required();
     rt::tool::addPictureOptions(app, options.render);
-    addRenderingOptions(app, options, accelName);
+    addRenderingOptions(app, options);
     rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);
     addOtherOptions(app, options);
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-render", argc, argv)) return *exitCode;
-    options.accel.kind = *rt::parseAccelKind(accelName);
-    return rt::tool::run("rt-render", [&] { return rt::render_tool::runRender(options); });
+    return rt::tool::run("rt-render", [&] { return rt::tool::render::runRender(options); });
 }

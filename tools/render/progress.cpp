@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-namespace rt::render_tool {
+namespace rt::tool::render {
 
 namespace {
 constexpr int kBarWidth = 40;
@@ -14,10 +14,9 @@ constexpr auto kLineInterval = std::chrono::seconds(10);
 double secondsLeft(double fraction, double elapsed) { return elapsed * (1 - fraction) / fraction; }
 }  // namespace
 
-ProgressMode progressMode(const std::string& name, bool quiet) {
-    if (quiet || name == "none") return ProgressMode::None;
-    if (name == "bar") return ProgressMode::Bar;
-    if (name == "lines") return ProgressMode::Lines;
+ProgressMode progressMode(ProgressMode requested, bool quiet) {
+    if (quiet) return ProgressMode::None;
+    if (requested != ProgressMode::Auto) return requested;
     return isatty(STDERR_FILENO) ? ProgressMode::Bar : ProgressMode::Lines;
 }
 
@@ -74,4 +73,4 @@ void Progress::printLine(std::uint64_t done, std::uint64_t total, double elapsed
     std::fflush(stderr);
 }
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render

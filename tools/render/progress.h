@@ -10,13 +10,23 @@
 #include <cstdint>
 #include <string>
 
-namespace rt::render_tool {
+#include "core/names.h"
 
-enum class ProgressMode { None, Bar, Lines };
+namespace rt::tool::render {
 
-// --progress auto|bar|lines|none: auto is the bar on a terminal and lines otherwise;
-// quiet (-q) is none.
-ProgressMode progressMode(const std::string& name, bool quiet);
+enum class ProgressMode {
+    None,
+    Bar,
+    Lines,
+    Auto,  // what --progress asks for by default: progressMode() makes it Bar or Lines
+};
+inline constexpr NamedValues<ProgressMode, 4> kProgressModeNames{{{"auto", ProgressMode::Auto},
+                                                                {"bar", ProgressMode::Bar},
+                                                                {"lines", ProgressMode::Lines},
+                                                                {"none", ProgressMode::None}}};
+
+// The mode to show: auto is the bar on a terminal and lines otherwise; quiet (-q) is none.
+ProgressMode progressMode(ProgressMode requested, bool quiet);
 
 // A step such as the tree build's start and end, "rt-render: MESSAGE" printed at once (unless None).
 void announce(ProgressMode mode, const std::string& message);
@@ -39,4 +49,4 @@ private:
     std::chrono::steady_clock::time_point start_, lastOutput_;
 };
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render

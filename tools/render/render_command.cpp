@@ -14,7 +14,7 @@
 #include "stats_report.h"
 #include "version.h"
 
-namespace rt::render_tool {
+namespace rt::tool::render {
 
 PixelWindow parseRegion(const std::string& text) {
     PixelWindow w;
@@ -31,7 +31,7 @@ namespace {
 ImageOutputSettings outputSettings(const RenderOptions& o) {
     ImageOutputSettings s;
     s.color = o.color;
-    s.exrHalf = o.exrPixels == "half";
+    s.exrPixels = o.exrPixels;
     s.pngBits = o.pngBits;
     s.path = o.outputPath.value_or("");
     if (o.preprocessOnly) return s;
@@ -84,7 +84,7 @@ std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSetti
 Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
                                   ProgressMode mode, RenderStats& stats) {
     Progress progress(mode);
-    return render(scene, accel, settings, stats,
+    return rt::render(scene, accel, settings, stats,
                   [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); });
 }
 
@@ -109,7 +109,8 @@ int runRender(RenderOptions o) {
     scene.dropDescription();
     RenderStats stats;
     const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);
-    const AccelStats accelStats = accel->stats();
+    const TreeReport tree{o.accel, accel->stats(), std::uint32_t(scene.primitives.size()), {}, {}};
+    const AccelStats& accelStats = tree.stats;
     stats.treeNodes = accelStats.nodes;
     stats.objects = scene.primitives.size();
     stats.lights = scene.lights.size();
@@ -128,10 +129,10 @@ int runRender(RenderOptions o) {
     }
     if (o.statsLine) std::cout << thesisStatsLine(stats) << std::endl;
     if (o.statsJson) {
-        const std::string json = statsJson(o.scenePath, o.render, accelStats, stats);
-        writeFileAtomically(*o.statsJson, [&](std::ostream& os) { os << json; });
+        const SceneSummary summary = summarizeScene(o.scenePath, scene);
+        writeFileAtomically(*o.statsJson, [&](std::ostream& out) { writeStatsJson(out, summary, o.render, tree, stats); });
     }
     return 0;
 }
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render

@@ -7,22 +7,23 @@
 
 #include "accel/settings.h"
 #include "image/image_output.h"
+#include "progress.h"
 #include "render/render_settings.h"
 
-namespace rt::render_tool {
+namespace rt::tool::render {
 
 struct RenderOptions {
     std::string scenePath;                // a file, or "-" for standard input
     std::optional<std::string> outputType;  // -o: null png exr tga text; else from -f's extension
     std::optional<std::string> outputPath;  // -f
-    std::string exrPixels = "half";       // --exr-pixels half|float
+    ExrPixelType exrPixels = ExrPixelType::Half;  // --exr-pixels half|float
     int pngBits = 8;                      // --png-bits 8|16
     ColorSettings color;
     RenderSettings render;
     AccelSettings accel;                  // kind Kd unless -B or --accel says otherwise
     std::optional<std::string> region;    // --region x0,y0,x1,y1 (x1, y1 exclusive)
     bool quiet = false;                   // -q (implies --progress none)
-    std::string progress = "auto";        // --progress auto|bar|lines|none
+    ProgressMode progress = ProgressMode::Auto;  // --progress auto|bar|lines|none
     bool statsLine = false;               // -b
     bool preprocessOnly = false;          // -p
     std::optional<std::string> statsJson;  // --stats-json FILE ("-" is standard output)
@@ -35,4 +36,4 @@ PixelWindow parseRegion(const std::string& text);
 // Returns the exit code; throws rt::InputError for bad input (exit 2), others for failures (exit 1).
 int runRender(RenderOptions options);
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render

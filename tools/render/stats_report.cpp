@@ -1,9 +1,10 @@
 #include "stats_report.h"
 
 #include <cstdio>
-#include <sstream>
 
-namespace rt::render_tool {
+#include "core/json_writer.h"
+
+namespace rt::tool::render {
 
 namespace {
 
@@ -11,23 +12,6 @@ std::string format(const char* fmt, auto... args) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer, fmt, args...);
     return buffer;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        if (c == '"' || c == '\\')
-            out += {'\\', c};
-        else if (static_cast<unsigned char>(c) < 0x20)
-            out += format("\\u%04x", unsigned(c));
-        else
-            out += c;
-    }
-    return out + '"';
-}
-
-std::string firstNonFinitePixel(const NonFiniteSamples& n) {
-    return n.count ? format("[%d, %d]", n.firstX, n.firstY) : "null";
 }
 
 }  // namespace
@@ -46,34 +30,33 @@ std::string thesisStatsLine(const RenderStats& s) {
                   static_cast<unsigned long long>(s.treeNodes), s.testsPerRay());
 }
 
-std::string statsJson(const std::string& scene, const RenderSettings& settings, const AccelStats& accel,
-                      const RenderStats& s) {
-    const RenderCounters& c = s.counters;
-    const PixelWindow w = settings.window();
-    std::ostringstream o;
-    o << "{\n"
-      << "  \"scene\": " << jsonString(scene) << ",\n"
-      << "  \"width\": " << settings.width << ",\n  \"height\": " << settings.height << ",\n"
-      << "  \"region\": [" << w.x0 << ", " << w.y0 << ", " << w.x1 << ", " << w.y1 << "],\n"
-      << "  \"samplesPerPixel\": " << settings.pixelSamples << ",\n"
-      << "  \"maxDepth\": " << settings.maxDepth << ",\n"
-      << "  \"shadows\": " << (settings.shadows ? "true" : "false") << ",\n"
-      << "  \"accelerator\": " << jsonString(accel.name) << ",\n"
-      << "  \"treeNodes\": " << s.treeNodes << ",\n  \"treeLeaves\": " << accel.leaves << ",\n"
-      << "  \"treeMaxDepth\": " << accel.maxDepth << ",\n"
-      << "  \"preprocessSeconds\": " << s.preprocessSeconds << ",\n"
-      << "  \"renderSeconds\": " << s.renderSeconds << ",\n"
-      << "  \"threads\": " << s.threads << ",\n"
-      << "  \"objects\": " << s.objects << ",\n  \"lights\": " << s.lights << ",\n"
-      << "  \"primaryRays\": " << c.camera.rays << ",\n  \"shadowRays\": " << c.shadow.rays << ",\n"
-      << "  \"reflectionRays\": " << c.reflection.rays << ",\n  \"rays\": " << c.rays() << ",\n"
-      << "  \"intersectionTests\": " << c.total().intersectionTests << ",\n"
-      << "  \"traversalSteps\": " << c.total().traversalSteps << ",\n"
-      << "  \"testsPerRay\": " << s.testsPerRay() << ",\n"
-      << "  \"nonFiniteSamples\": " << c.nonFinite.count << ",\n"
-      << "  \"firstNonFinitePixel\": " << firstNonFinitePixel(c.nonFinite) << ",\n"
-      << "  \"raysPerSecond\": " << s.raysPerSecond() << "\n}\n";
-    return o.str();
+void writeStatsJson(std::ostream& out, const SceneSummary& scene, const RenderSettings& settings,
+                    const TreeReport& tree, const RenderStats& s) {
+    const NonFiniteSamples& nonFinite = s.counters.nonFinite;
+    JsonWriter json(out);
+    json.beginDocument();
+    json.key("scene");
+    writeSceneJson(json, scene);
+    json.key("picture");
+    writePictureJson(json, settings);
+    json.key("tree");
+    writeTreeReportJson(json, tree);
+    json.key("rays");
+    writeRaysJson(json, s.counters);
+    json.member("renderSeconds", s.renderSeconds);
+    json.member("threads", s.threads);
+    json.member("raysPerSecond", s.raysPerSecond());
+    json.member("nonFiniteSamples", nonFinite.count);
+    json.key("firstNonFinitePixel");  // [x, y], or null when every sample was finite
+    if (nonFinite.count) {
+        json.beginArray();
+        json.value(nonFinite.firstX);
+        json.value(nonFinite.firstY);
+        json.endArray();
+    } else {
+        json.null();
+    }
+    json.endObject();
 }
 
 std::string statsSummary(const RenderSettings& settings, const AccelStats& accel, const RenderStats& s,
@@ -84,7 +67,7 @@ std::string statsSummary(const RenderSettings& settings, const AccelStats& accel
     if (!rendered) return text;
     const RenderCounters& c = s.counters;
     const PixelWindow w = settings.window();
-    text += format("rendered %dx%d pixels in %.3f s on %d thread%s: %llu primary, %llu shadow, %llu reflection rays\n",
+    text += format("rendered %dx%d pixels in %.3f s on %d thread%s: %llu camera, %llu shadow, %llu reflection rays\n",
                    w.width(), w.height(), s.renderSeconds, s.threads, s.threads == 1 ? "" : "s",
                    static_cast<unsigned long long>(c.camera.rays),
                    static_cast<unsigned long long>(c.shadow.rays), static_cast<unsigned long long>(c.reflection.rays));
@@ -92,4 +75,4 @@ std::string statsSummary(const RenderSettings& settings, const AccelStats& accel
     return text;
 }
 
-}  // namespace rt::render_tool
+}  // namespace rt::tool::render

@@ -1,18 +1,28 @@
-// A small streaming JSON writer for rt-inspect's machine-readable output: it tracks
-// nesting and commas, escapes strings (RFC 8259) and writes numbers so that they read
-// back exactly. Two-space indentation, one member per line, like `jq .` prints.
+// The one JSON writer of rt: every document the tools print (rt-render --stats-json,
+// rt-inspect --json and --dump json, rt-convert --json) goes through it. A small streaming
+// writer: it tracks nesting and commas, escapes strings (RFC 8259) and writes numbers so
+// that they read back exactly. Two-space indentation, one member per line, like `jq .`.
+// The documents and their fields are described in docs/json.md and docs/schema/.
 #pragma once
 
 #include <cstdint>
 #include <ostream>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace rt {
 
+// The version of the documents' schema (docs/schema/), the first member of every document.
+// It grows when a field is removed or changes its meaning or type; a new field keeps it.
+inline constexpr int kJsonSchemaVersion = 1;
+
 class JsonWriter {
 public:
     explicit JsonWriter(std::ostream& out) : out_(out) {}
+
+    // A tool's document: the top-level object, opened with its "version" member.
+    void beginDocument();
 
     void beginObject();
     void endObject();
@@ -41,7 +51,6 @@ public:
 private:
     void beforeValue();
     void newline();
-    void writeString(std::string_view s);
 
     struct Level {
         bool array;

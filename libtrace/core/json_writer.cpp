@@ -1,4 +1,4 @@
-#include "inspect/json_writer.h"
+#include "core/json_writer.h"
 
 #include <charconv>
 #include <cmath>
@@ -62,6 +62,12 @@ void JsonWriter::beginObject() {
     beforeValue();
     out_ << '{';
     levels_.push_back({false});
+}
+
+void JsonWriter::beginDocument() {
+    if (!levels_.empty()) throw std::logic_error("JsonWriter: a document begins at the top level");
+    beginObject();
+    member("version", kJsonSchemaVersion);
 }
 
 void JsonWriter::beginArray() {
