@@ -40,6 +40,11 @@ expect_exit 2 "$RT_CONVERT" --generate ships --aspect -1
 expect_one_error rt-convert "--aspect: -1 is not a positive number"
 expect_exit 2 "$RT_CONVERT" --generate ships --scene -1
 expect_one_error rt-convert "--scene: -1 is not in 0-1073741824"
+# rt-inspect's heat-map maximum too, and a name outside the library's table is named with the valid ones.
+expect_exit 2 "$RT_INSPECT" "$SCENE" --heatmap-max -3
+expect_one_error rt-inspect "--heatmap-max: -3 is not a positive number"
+expect_exit 2 "$RT_INSPECT" "$SCENE" --heatmap-scale cubic
+expect_one_error rt-inspect "--heatmap-scale: cubic not in {linear,log}"
 expect_exit 2 "$RT_RENDER" "$SCENE" -x abc --no-such-option
 expect_one_error rt-render "not expected: --no-such-option"
 echo "tools_option_errors: ok"

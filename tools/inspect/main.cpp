@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
     addNamedOption(app, "--heatmap-scale", o.heatmap.scale, rt::kHeatScaleNames, "Colour scale: linear or log")
         ->group(dumps);
     app.add_option("--heatmap-max", heatmapMax, "Work at the top of the colour bar [default: the largest]")
-        ->check(CLI::PositiveNumber)->group(dumps);
+        ->check(rt::tool::positiveNumber())->group(dumps);
     rt::tool::addAccelOptions(app, o.accel);
 
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-inspect", argc, argv)) return *exitCode;
