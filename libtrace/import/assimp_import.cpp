@@ -234,8 +234,6 @@ private:
     // point lights 100 scene radii away against their direction, ambient lights dropped.
     void takeLights(const Aabb& bounds) {
         out_.report.lightsInFile = ai_.mNumLights;
-        const Vec3 centre = bounds.empty() ? Vec3() : bounds.center();
-        const Real radius = bounds.empty() ? Real(1) : std::max(length(bounds.diagonal()) / 2, Real(1e-6));
         for (unsigned i = 0; i < ai_.mNumLights; ++i) {
             const aiLight& al = *ai_.mLights[i];
             const std::string what = "light " + std::to_string(i) + " \"" + std::string(al.mName.C_Str()) + "\"";
@@ -246,7 +244,7 @@ private:
             }
             Light light{world->point(toVec3(al.mPosition)), toColor(al.mColorDiffuse), 0};
             if (al.mType == aiLightSource_DIRECTIONAL) {
-                light.position = centre - normalize(world->vector(toVec3(al.mDirection))) * (100 * radius);
+                light.position = directionalLightPosition(bounds, world->vector(toVec3(al.mDirection)));
                 out_.report.notes.push_back(what + " (directional) approximated by a point light 100 scene radii away");
             } else if (al.mType != aiLightSource_POINT) {
                 out_.report.notes.push_back(what + " (spot or area) approximated by a point light");
