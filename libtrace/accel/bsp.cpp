@@ -80,9 +80,8 @@ std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSett
     for (std::uint32_t id = 0; id < prims.size(); ++id) root.primitives[id] = id;
     const Aabb bounds = root.voxel;
     FlatTree flat = buildFlatTree(std::move(root), BspSplitter(prims, settings));
-    const KdSettings kd;  // the BSP has no costs of its own
-    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat), "bsp",
-                                            SahCosts{kd.traversalCost, kd.intersectionCost});
+    // The BSP has no costs of its own: it is reported with the KD tree's defaults.
+    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat), "bsp", sahCosts(KdSettings{}));
     tree->setBuildSeconds(stopwatch.seconds());
     return tree;
 }

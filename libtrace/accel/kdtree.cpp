@@ -239,7 +239,7 @@ std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettin
     FlatTree flat = buildFlatTree(std::move(root), KdSplitter(prims, settings));
     auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat),
                                             std::string("kd-") + kdSplitMethodName(settings.splitMethod),
-                                            SahCosts{settings.traversalCost, settings.intersectionCost});
+                                            sahCosts(settings));
     tree->setBuildSeconds(stopwatch.seconds());
     return tree;
 }

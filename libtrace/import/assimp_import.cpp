@@ -44,8 +44,8 @@ void removeGltfImporters(Assimp::Importer& importer) {
 
 // The name of the importer that reads the file. Without an extension Assimp knows, Assimp
 // guesses the format from the content: binary formats have signatures, but text formats are
-// guessed from keywords ("v ", "f " for OBJ) that garbage can contain too (the OSS-Fuzz case
-// in shared/models/bad/assimp-fuzz), so such a guess is only trusted for a binary format.
+// guessed from keywords ("v ", "f " for OBJ) that garbage can contain too (as an OSS-Fuzz case
+// of Assimp's does: docs/conversion.md), so such a guess is only trusted for a binary format.
 std::string formatName(const Assimp::Importer& importer, const std::string& path) {
     const std::string::size_type dot = path.find_last_of("./");
     const std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot + 1);
