@@ -1,9 +1,10 @@
 #include "embree_scene.h"
 
-#include <chrono>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "core/stopwatch.h"
 
 namespace rt::bench {
 
@@ -123,9 +124,9 @@ EmbreeScene::EmbreeScene(const Primitives& prims, int threads) : prims_(prims) {
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     if (prims.count<Triangle>() > 0) attachTriangles(device_, scene_, prims);
     if (prims.count<Sphere>() > 0) attachSpheres(device_, scene_, prims);
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     rtcCommitScene(scene_);
-    buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    buildSeconds_ = stopwatch.seconds();
     throwOnError(device_, "building the scene");
 }
 

@@ -29,7 +29,6 @@
 #include <time.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -41,6 +40,7 @@
 
 #include "accel/kdtree.h"
 #include "bench_scenes.h"
+#include "core/stopwatch.h"
 #include "embree_scene.h"
 #include "render/camera_rays.h"
 #include "render/phong.h"
@@ -271,9 +271,9 @@ std::string measureSet(const std::string& scene, std::size_t prims, const RaySet
 
 template <class F>
 double wallSeconds(F&& f) {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     f();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stopwatch.seconds();
 }
 
 SceneReport measureScene(const std::string& name, int passes) {

@@ -1,9 +1,9 @@
 #include "accel/bsp.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "accel/tree_builder.h"
+#include "core/stopwatch.h"
 #include "geometry/overlap.h"
 
 namespace rt {
@@ -74,16 +74,15 @@ private:
 }  // namespace
 
 std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSettings& settings) {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     BspNode root{{}, roundOutToFloat(prims.bounds()), 0};
     root.primitives.resize(prims.size());
     for (std::uint32_t id = 0; id < prims.size(); ++id) root.primitives[id] = id;
     const Aabb bounds = root.voxel;
     FlatTree flat = buildFlatTree(std::move(root), BspSplitter(prims, settings));
-    const KdSettings kd;  // the BSP has no costs of its own
-    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat), "bsp",
-                                            SahCosts{kd.traversalCost, kd.intersectionCost});
-    tree->setBuildSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    // The BSP has no costs of its own: it is reported with the KD tree's defaults.
+    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat), "bsp", sahCosts(KdSettings{}));
+    tree->setBuildSeconds(stopwatch.seconds());
     return tree;
 }
 

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 
 #include "accel/kd_split.h"
 #include "accel/tree_builder.h"
 #include "core/parallel_errors.h"
+#include "core/stopwatch.h"
 #include "geometry/clip.h"
 
 namespace rt {
@@ -236,15 +236,15 @@ KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
 }  // namespace
 
 std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& userSettings) {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     const KdSettings settings = withSceneCosts(prims, userSettings);
     KdNode root = makeRoot(prims, settings);
     const Aabb bounds = root.voxel;
     FlatTree flat = buildFlatTree(std::move(root), KdSplitter(prims, settings));
     auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat),
                                             std::string("kd-") + kdSplitMethodName(settings.splitMethod),
-                                            SahCosts{settings.traversalCost, settings.intersectionCost});
-    tree->setBuildSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                                            sahCosts(settings));
+    tree->setBuildSeconds(stopwatch.seconds());
     return tree;
 }
 

@@ -62,11 +62,14 @@ struct FlatTree {
     void append(const FlatTree& subtree);
 };
 
-// SAH constants used to report a tree's cost (thesis 2.5.1).
+// SAH constants used to report a tree's cost (thesis 2.5.1). Their defaults are KdSettings's,
+// the one place they are set: both trees report with sahCosts(KdSettings).
 struct SahCosts {
-    double traversal = 1.0;
-    double intersection = 1.5;
+    double traversal;
+    double intersection;
 };
+
+inline SahCosts sahCosts(const KdSettings& kd) { return {kd.traversalCost, kd.intersectionCost}; }
 
 class SplitTree final : public Accelerator {
 public:

@@ -29,13 +29,6 @@ struct Aabb {
         const Vec3 d = diagonal();
         return d.x >= d.y ? (d.x >= d.z ? 0 : 2) : (d.y >= d.z ? 1 : 2);
     }
-    bool contains(const Vec3& p) const {
-        return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
-    }
-    bool overlaps(const Aabb& b) const {
-        return lo.x <= b.hi.x && hi.x >= b.lo.x && lo.y <= b.hi.y && hi.y >= b.lo.y &&
-               lo.z <= b.hi.z && hi.z >= b.lo.z;
-    }
     bool operator==(const Aabb&) const = default;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string_view>
 
+#include "core/color.h"
+
 namespace rt {
 
 namespace {
@@ -16,7 +18,7 @@ std::string asciiArt(const std::vector<float>& rgb, int width, int height) {
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const float* p = &rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3];
-            const float luma = std::clamp(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2], 0.0f, 1.0f);
+            const float luma = std::clamp(luminance(Color(p[0], p[1], p[2])), 0.0f, 1.0f);
             const auto level = std::min(std::size_t(luma * float(kRamp.size())), kRamp.size() - 1);
             text += kRamp[level];
         }

@@ -3,12 +3,12 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "image/ascii_art.h"
 #include "image/oiio_file.h"
 
@@ -97,8 +97,7 @@ std::optional<ImageFormat> parseImageFormat(const std::string& name) {
 }
 
 std::optional<ImageFormat> imageFormatFromPath(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowerCaseExtension(path);
     for (const FormatName& f : kFormats)
         if (!ext.empty() && ext == f.extension) return f.format;
     return std::nullopt;

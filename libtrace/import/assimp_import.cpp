@@ -44,8 +44,8 @@ void removeGltfImporters(Assimp::Importer& importer) {
 
 // The name of the importer that reads the file. Without an extension Assimp knows, Assimp
 // guesses the format from the content: binary formats have signatures, but text formats are
-// guessed from keywords ("v ", "f " for OBJ) that garbage can contain too (the OSS-Fuzz case
-// in shared/models/bad/assimp-fuzz), so such a guess is only trusted for a binary format.
+// guessed from keywords ("v ", "f " for OBJ) that garbage can contain too (as an OSS-Fuzz case
+// of Assimp's does: docs/conversion.md), so such a guess is only trusted for a binary format.
 std::string formatName(const Assimp::Importer& importer, const std::string& path) {
     const std::string::size_type dot = path.find_last_of("./");
     const std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot + 1);
@@ -234,8 +234,6 @@ private:
     // point lights 100 scene radii away against their direction, ambient lights dropped.
     void takeLights(const Aabb& bounds) {
         out_.report.lightsInFile = ai_.mNumLights;
-        const Vec3 centre = bounds.empty() ? Vec3() : bounds.center();
-        const Real radius = bounds.empty() ? Real(1) : std::max(length(bounds.diagonal()) / 2, Real(1e-6));
         for (unsigned i = 0; i < ai_.mNumLights; ++i) {
             const aiLight& al = *ai_.mLights[i];
             const std::string what = "light " + std::to_string(i) + " \"" + std::string(al.mName.C_Str()) + "\"";
@@ -246,7 +244,7 @@ private:
             }
             Light light{world->point(toVec3(al.mPosition)), toColor(al.mColorDiffuse), 0};
             if (al.mType == aiLightSource_DIRECTIONAL) {
-                light.position = centre - normalize(world->vector(toVec3(al.mDirection))) * (100 * radius);
+                light.position = directionalLightPosition(bounds, world->vector(toVec3(al.mDirection)));
                 out_.report.notes.push_back(what + " (directional) approximated by a point light 100 scene radii away");
             } else if (al.mType != aiLightSource_POINT) {
                 out_.report.notes.push_back(what + " (spot or area) approximated by a point light");

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "import/gltf_accessor.h"
 #include "import/phong_from_pbr.h"
 #include "import/primitive_topology.h"
@@ -383,15 +384,13 @@ private:
     // their direction. Colour times intensity, scaled by scaleLightsToUnitPeak.
     void takeLights(const Aabb& bounds) {
         out_.report.lightsInFile = gltf_.lights.size();
-        const Vec3 centre = bounds.empty() ? Vec3() : bounds.center();
-        const Real radius = bounds.empty() ? Real(1) : std::max(length(bounds.diagonal()) / 2, Real(1e-6));
         for (const Placed& p : lights_) {
             const tinygltf::Light& gl = gltf_.lights[std::size_t(p.index)];
             const std::string what = "light " + std::to_string(p.index) + " (" + gl.type + ")";
             Light light;
             light.position = p.world.point(Vec3());
             if (gl.type == "directional") {
-                light.position = centre - normalize(p.world.vector(Vec3(0, 0, -1))) * (100 * radius);
+                light.position = directionalLightPosition(bounds, p.world.vector(Vec3(0, 0, -1)));
                 out_.report.notes.push_back(what + " approximated by a point light 100 scene radii away");
             } else if (gl.type == "spot") {
                 out_.report.notes.push_back(what + " approximated by a point light (cone ignored)");

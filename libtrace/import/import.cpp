@@ -1,7 +1,6 @@
 #include "import/import.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "import/assimp_import.h"
 #include "import/gltf_import.h"
 #include "import/obj_import.h"
@@ -85,12 +85,6 @@ ImportResult finishImport(ImportResult result, const std::string& name, const Im
 }
 
 }  // namespace
-
-std::string lowerCaseExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 Transform rootTransform(const ImportOptions& options, UpAxis importerUp) {
     // Z-up to Y-up is a right-handed quarter turn about x: +Z to +Y (and +Y to -Z). The file's

@@ -62,9 +62,6 @@ struct ImportResult {
     ImportReport report;
 };
 
-// The extension of a path in lower case, with its dot (".gltf"); empty if there is none.
-std::string lowerCaseExtension(const std::string& path);
-
 // True when the file at `path` starts with the bytes `magic` ("glTF", "raw3d").
 bool fileStartsWith(const std::string& path, std::string_view magic);
 

@@ -1,5 +1,6 @@
 #include "import/load_scene.h"
 
+#include "core/text.h"
 #include "import/model_file.h"
 #include "scene/xml_loader.h"
 

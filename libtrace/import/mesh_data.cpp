@@ -1,7 +1,6 @@
 #include "import/mesh_data.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 namespace rt {
@@ -42,20 +41,6 @@ Aabb modelBounds(const Model& model) {
         box.extend(centre + radius);
     }
     return box;
-}
-
-std::string NameTable::claim(const std::string& wanted, const std::string& fallback) {
-    std::string base;
-    for (const char ch : wanted) {
-        const bool keep = std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
-        base += keep ? ch : '_';
-    }
-    if (base.empty()) base = fallback;
-    if (base.front() == '.') base.front() = '_';  // no hidden files
-    std::string name = base;
-    for (int suffix = 2; used_.count(name); ++suffix) name = base + "_" + std::to_string(suffix);
-    used_.insert(name);
-    return name;
 }
 
 }  // namespace rt

@@ -1,10 +1,8 @@
 // Small pieces the importers share: float points as the RAW format stores them, triangles
-// appended only when they have an area, the classic Phong materials of OBJ and Assimp, and
-// the names of materials and models, which the scene writer uses as identifiers and file names.
+// appended only when they have an area, and the classic Phong materials of OBJ and Assimp.
 #pragma once
 
 #include <array>
-#include <set>
 #include <string>
 
 #include "core/aabb.h"
@@ -29,16 +27,5 @@ Material classicPhong(const Color& diffuse, const Color& specular, float shinine
 
 // Bounds of a model's triangles and spheres in its own space (empty for an empty model).
 Aabb modelBounds(const Model& model);
-
-// Hands out names that are unique within one table and safe as XML attribute values and
-// file names: letters, digits, '_', '-' and '.' are kept, anything else becomes '_'.
-// A taken name gets "_2", "_3", ... appended.
-class NameTable {
-public:
-    std::string claim(const std::string& wanted, const std::string& fallback);
-
-private:
-    std::set<std::string> used_;
-};
 
 }  // namespace rt

@@ -33,7 +33,7 @@ void appendNodeTriangles(const aiScene& scene, const aiNode& node, const aiMatri
 }
 
 // Assimp picks its importer from the file name and content; a file that is not 3DS could
-// reach an importer with known crashes on bad input (glTF, MANIFEST.md). So the bytes go
+// reach an importer with known crashes on bad input (glTF: docs/conversion.md). So the bytes go
 // to Assimp from memory with a "3ds" hint, and only after the 3DS magic is checked.
 Model load3ds(const std::string& path) {
     const std::string bytes = readInputFile(path);

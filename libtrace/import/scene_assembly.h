@@ -2,7 +2,7 @@
 // materials, names and drop counts behave the same whichever format a file is in:
 // - one Model per distinct mesh of the file, converted the first time it is asked for (the
 //   importer's MeshKey says what a distinct mesh is: a glTF (mesh, primitive), an aiMesh, an
-//   OBJ part), named uniquely and safely (NameTable);
+//   OBJ part), named uniquely and safely (scene/names.h);
 // - triangles without area dropped and counted once per model (ImportReport::droppedDegenerate)
 //   and once per placement (droppedDegenerateInScene);
 // - one Material per material of the file (MaterialKey), made the first time an instance uses it;
@@ -21,6 +21,7 @@
 
 #include "import/import.h"
 #include "import/mesh_data.h"
+#include "scene/names.h"
 
 namespace rt {
 
@@ -60,9 +61,9 @@ public:
     ImportReport& report() { return out_.report; }
 
     // An empty model for a mesh the file calls `wanted` (`fallback` when nothing of that name
-    // is left after NameTable's cleaning), under a name no other model of the scene has.
+    // is left after safeName), under a name no other model of the scene has.
     ModelBuilder newModel(const std::string& wanted, const std::string& fallback) {
-        return ModelBuilder(modelNames_.claim(wanted, fallback));
+        return ModelBuilder(modelNames_.claim(safeName(wanted), fallback));
     }
 
     // Adds the built model to the scene unless it kept no triangle; its drops count once.
@@ -115,7 +116,7 @@ public:
         const auto cached = materials_.find(key);
         if (cached != materials_.end()) return cached->second;
         Material m = make();
-        m.name = materialNames_.claim(m.name, fallback);
+        m.name = materialNames_.claim(safeName(m.name), fallback);
         out_.scene.materials.push_back(std::move(m));
         return materials_[key] = std::uint32_t(out_.scene.materials.size() - 1);
     }

@@ -22,6 +22,16 @@ Aabb sceneBounds(const Scene& scene) {
     return world;
 }
 
+BoundingSphere boundingSphere(const Aabb& bounds) {
+    if (bounds.empty()) return {Vec3(), Real(1)};
+    return {bounds.center(), std::max(length(bounds.diagonal()) / 2, Real(1e-6))};
+}
+
+Vec3 directionalLightPosition(const Aabb& bounds, const Vec3& direction) {
+    const BoundingSphere sphere = boundingSphere(bounds);
+    return sphere.centre - normalize(direction) * (100 * sphere.radius);
+}
+
 double horizontalFov(double verticalFovRadians, double aspect) {
     return 2 * std::atan(std::tan(verticalFovRadians / 2) * aspect);
 }
@@ -56,14 +66,13 @@ void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options
     if (report.cameraUsed.empty()) {
         constexpr double kFov = 50 * kPi / 180;
         const Aabb bounds = sceneBounds(scene);
-        const Vec3 centre = bounds.empty() ? Vec3() : bounds.center();
-        const Real radius = bounds.empty() ? Real(1) : std::max(length(bounds.diagonal()) / 2, Real(1e-6));
+        const BoundingSphere sphere = boundingSphere(bounds);
         // Half the narrower opening of the view cone; the bounding sphere fits inside it.
         const double vertical = std::atan(std::tan(kFov / 2) / aspect);
         const double half = std::min(kFov / 2, vertical);
         const Vec3 direction = normalize(Vec3(0.5, 0.5, 1));
-        const Vec3 eye = centre + direction * Real(radius / std::sin(half));
-        scene.camera = viewCamera(eye, centre - eye, Vec3(0, 1, 0), kFov, bounds);
+        const Vec3 eye = sphere.centre + direction * Real(sphere.radius / std::sin(half));
+        scene.camera = viewCamera(eye, sphere.centre - eye, Vec3(0, 1, 0), kFov, bounds);
         report.cameraGenerated = true;
         report.notes.push_back(std::string(options.camera == kFramingCamera ? "--camera auto" : "no usable camera") +
                                ": made one with a 50 degree fov framing the scene's bounds");

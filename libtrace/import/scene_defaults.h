@@ -12,6 +12,19 @@ namespace rt {
 // (a little loose under rotation, which framing does not mind).
 Aabb sceneBounds(const Scene& scene);
 
+// The sphere around the box, to frame a scene by: centre and half the diagonal (at least
+// 1e-6, so that a flat or point-like scene still has a size); the unit sphere at the origin
+// for an empty box.
+struct BoundingSphere {
+    Vec3 centre;
+    Real radius;
+};
+BoundingSphere boundingSphere(const Aabb& bounds);
+
+// Where a point light stands in for a directional light shining along `direction`: 100
+// bounding-sphere radii from the centre, against the direction (rt has no directional lights).
+Vec3 directionalLightPosition(const Aabb& bounds, const Vec3& direction);
+
 // rt's fov is horizontal; files usually give the vertical one.
 double horizontalFov(double verticalFovRadians, double aspect);
 

@@ -3,10 +3,10 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <numeric>
 #include <vector>
 
+#include "core/stopwatch.h"
 #include "render/tracer.h"
 
 namespace rt {
@@ -56,7 +56,7 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
     const std::uint64_t samplesTotal = samplesIn(settings.window());
     std::uint64_t samplesDone = 0;
 
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
 #pragma omp parallel for num_threads(threads) schedule(dynamic)
     for (int i = 0; i < total; ++i) {
         const PixelWindow& b = blocks[std::size_t(i)];
@@ -68,7 +68,7 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
             progress(samplesDone += samplesIn(b), samplesTotal);
         }
     }
-    stats.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.renderSeconds = stopwatch.seconds();
 
     stats.counters = {};
     for (const ThreadCounters& t : perThread) stats.counters += t.counters;

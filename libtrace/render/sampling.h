@@ -6,43 +6,32 @@
 
 #include <cmath>
 #include <cstdint>
+#include <tuple>
 
+#include "core/random.h"
 #include "core/vec3.h"
 
 namespace rt {
 
-// The SplitMix64 finaliser (Steele et al. 2014): a bijective 64-bit mix with full avalanche.
-constexpr std::uint64_t mixBits(std::uint64_t v) {
-    v ^= v >> 30;
-    v *= 0xbf58476d1ce4e5b9ull;
-    v ^= v >> 27;
-    v *= 0x94d049bb133111ebull;
-    v ^= v >> 31;
-    return v;
-}
-
 class SampleRng {
 public:
     SampleRng(std::uint32_t x, std::uint32_t y, std::uint32_t sample)
-        : state_(mixBits((std::uint64_t(x) << 32 | y) ^ mixBits(sample + 0x9e3779b97f4a7c15ull))) {}
+        : stream_(mixBits((std::uint64_t(x) << 32 | y) ^ mixBits(sample + kGoldenGamma))) {}
 
-    // SplitMix64: a Weyl sequence through the finaliser.
-    std::uint64_t next() { return mixBits(state_ += 0x9e3779b97f4a7c15ull); }
+    std::uint64_t next() { return stream_.next(); }
 
     // Uniform in [0, 1). 24 bits so that the value is exact, and below 1, in float too.
     Real uniform() { return Real(next() >> 40) * Real(0x1p-24); }
 
-    // Two independent standard normal numbers by the Box-Muller transform (thesis [18]).
+    // Two independent standard normal numbers.
     void normalPair(Real& a, Real& b) {
-        const Real u1 = Real(1) - uniform();  // (0, 1]: the logarithm stays finite
+        const Real u1 = Real(1) - uniform();  // (0, 1]
         const Real u2 = uniform();
-        const Real r = std::sqrt(Real(-2) * std::log(u1));
-        a = r * std::cos(2 * kPi * u2);
-        b = r * std::sin(2 * kPi * u2);
+        std::tie(a, b) = boxMuller(u1, u2);
     }
 
 private:
-    std::uint64_t state_;
+    SplitMix64 stream_;
 };
 
 // Where sample i of n lies inside a pixel, in [0, 1)^2: the pixel is divided into a grid

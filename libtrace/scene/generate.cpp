@@ -3,34 +3,31 @@
 #include <cmath>
 #include <vector>
 
+#include "core/random.h"
+
 namespace rt {
 
 namespace {
 
-// SplitMix64 (Steele et al. 2014): tiny, fast, and the same sequence everywhere.
+// SplitMix64 (core/random.h): the same scene on every machine.
 class Random {
 public:
-    explicit Random(std::uint64_t seed) : state_(seed) {}
+    explicit Random(std::uint64_t seed) : stream_(seed) {}
 
-    std::uint64_t next() {
-        std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return double(next() >> 11) * 0x1.0p-53; }                 // [0, 1)
+    std::uint64_t next() { return stream_.next(); }
+    double uniform() { return stream_.uniform(); }  // [0, 1)
     double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
     Vec3 inCube(double half) {
         const Real x = Real(uniform(-half, half)), y = Real(uniform(-half, half)), z = Real(uniform(-half, half));
         return {x, y, z};
     }
-    double gaussian() {  // Box-Muller
+    double gaussian() {
         const double u = 1 - uniform(), v = uniform();
-        return std::sqrt(-2 * std::log(u)) * std::cos(2 * kPi * v);
+        return boxMuller(u, v).first;
     }
 
 private:
-    std::uint64_t state_;
+    SplitMix64 stream_;
 };
 
 class CentrePicker {

@@ -1,24 +1,14 @@
 #include "scene/model_file.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "scene/raw_model.h"
 
 namespace rt {
-namespace {
-
-std::string lowercase(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
-}
-
-}  // namespace
-
 std::optional<Model::Format> modelFormatFromName(const std::string& name) {
-    const std::string n = lowercase(name);
+    const std::string n = lowerCase(name);
     if (n == "raw") return Model::Format::Raw;
     if (n == "3ds") return Model::Format::Max3ds;
     return std::nullopt;

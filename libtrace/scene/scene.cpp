@@ -69,10 +69,4 @@ std::optional<std::uint32_t> Scene::findMaterial(const std::string& name) const 
     return std::nullopt;
 }
 
-std::optional<std::uint32_t> Scene::findModel(const std::string& name) const {
-    for (std::uint32_t i = 0; i < models.size(); ++i)
-        if (models[i].name == name) return i;
-    return std::nullopt;
-}
-
 }  // namespace rt

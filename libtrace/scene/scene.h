@@ -89,7 +89,6 @@ struct Scene {
     // rays: a model's own copy of its geometry would otherwise add 36 bytes per triangle.
     void dropDescription();
     std::optional<std::uint32_t> findMaterial(const std::string& name) const;
-    std::optional<std::uint32_t> findModel(const std::string& name) const;
 };
 
 }  // namespace rt

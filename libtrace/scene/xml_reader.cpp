@@ -105,11 +105,6 @@ Real XmlElement::number(const char* attribute, Real fallback) const {
     return has(attribute) ? number(attribute) : fallback;
 }
 
-std::optional<Real> XmlElement::optionalNumber(const char* attribute) const {
-    if (!has(attribute)) return std::nullopt;
-    return number(attribute);
-}
-
 Real XmlElement::nonNegative(const char* attribute, Real fallback) const {
     const Real v = number(attribute, fallback);
     if (v < 0) fail(tag() + " attribute '" + attribute + "' must not be negative");

@@ -55,7 +55,6 @@ public:
     // Finite decimal numbers ("1", "-0.5", "2e3"); NaN and infinities are errors.
     Real number(const char* attribute) const;  // required
     Real number(const char* attribute, Real fallback) const;
-    std::optional<Real> optionalNumber(const char* attribute) const;
     // Like number(), and also an error below zero or (for positive) at zero.
     Real nonNegative(const char* attribute, Real fallback) const;
     Real positive(const char* attribute) const;

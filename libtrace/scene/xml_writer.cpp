@@ -1,15 +1,14 @@
 #include "scene/xml_writer.h"
 
-#include <cctype>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <pugixml.hpp>
-#include <set>
 #include <sstream>
 
 #include "core/atomic_file.h"
 #include "scene/base64.h"
+#include "scene/names.h"
 #include "scene/raw_model.h"
 
 namespace rt {
@@ -57,27 +56,9 @@ pugi::xml_node addObject(pugi::xml_node parent, const Sphere& s) {
 // Names as written: non-empty and unique (case-insensitively when `caseless`, for file
 // names on case-insensitive file systems), so that every reference finds its target.
 std::vector<std::string> uniqueNames(std::vector<std::string> names, const std::string& fallback, bool caseless) {
-    std::set<std::string> taken;
-    const auto key = [&](std::string s) {
-        if (caseless)
-            for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-        return s;
-    };
-    for (std::string& name : names) {
-        if (name.empty()) name = fallback;
-        const std::string base = name;
-        for (int n = 2; !taken.insert(key(name)).second; ++n) name = base + "-" + std::to_string(n);
-    }
+    NameTable table(caseless);
+    for (std::string& name : names) name = table.claim(name, fallback);
     return names;
-}
-
-// A model name as a file name: letters, digits, '-', '_' and '.' (not leading) are kept.
-std::string fileNameFor(const std::string& name) {
-    std::string s = name;
-    for (char& c : s)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
-    if (!s.empty() && s.front() == '.') s.front() = '_';
-    return s;
 }
 
 class SceneXmlWriter {
@@ -225,7 +206,7 @@ void saveSceneXml(const Scene& scene, const std::string& path) {
     // a successful save leaves no stale RAW file, and concurrent saves take turns.
     const std::filesystem::path folder = modelFolderFor(path);
     std::vector<std::string> files = namesOf(scene.models);
-    for (std::string& name : files) name = fileNameFor(name);
+    for (std::string& name : files) name = safeName(name);
     files = uniqueNames(std::move(files), "model", true);
     std::vector<std::string> modelFiles;
     for (const std::string& file : files) modelFiles.push_back((folder.filename() / (file + ".raw")).generic_string());

@@ -1,4 +1,4 @@
-// Triangles kept only with an area in float, and safe unique names (import/mesh_data.*).
+// Triangles kept only with an area in float, and model bounds (import/mesh_data.*).
 #include <gtest/gtest.h>
 
 #include "import/mesh_data.h"
@@ -23,16 +23,6 @@ TEST(ImportMeshData, BoundsOfAModel) {
     EXPECT_EQ(b.lo, Vec3(-1, 0, 0));
     EXPECT_EQ(b.hi, Vec3(1, 3, 2));
     EXPECT_TRUE(modelBounds(Model()).empty());
-}
-
-TEST(ImportMeshData, NamesAreSafeAndUnique) {
-    NameTable names;
-    EXPECT_EQ(names.claim("Wheel", "mesh0"), "Wheel");
-    EXPECT_EQ(names.claim("Wheel", "mesh1"), "Wheel_2");
-    EXPECT_EQ(names.claim("Wheel", "mesh2"), "Wheel_3");
-    EXPECT_EQ(names.claim("../etc/passwd", "mesh3"), "_._etc_passwd");
-    EXPECT_EQ(names.claim("a b<c>\"d\"", "mesh4"), "a_b_c__d_");
-    EXPECT_EQ(names.claim("", "mesh5"), "mesh5");
 }
 
 }  // namespace

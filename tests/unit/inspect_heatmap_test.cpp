@@ -2,6 +2,7 @@
 // geometry is densest.
 #include <algorithm>
 
+#include "core/color.h"
 #include "inspect/bitmap_font.h"
 #include "inspect/color_map.h"
 #include "inspect/heatmap.h"
@@ -90,7 +91,7 @@ TEST(Heatmap, ColourMapRunsFromDarkBlueToYellow) {
     float last = -1;
     for (int i = 0; i <= 100; ++i) {
         const Rgb8 c = viridis(float(i) / 100);
-        const float lum = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+        const float lum = luminance(Color(c.r, c.g, c.b));
         EXPECT_GE(lum, last - 0.5f) << "at " << i;
         last = lum;
     }

@@ -19,7 +19,7 @@ struct TwoSpheres {
         flat.nodes.push_back(SplitNode::inner(2, 0.0f, 2));
         flat.addLeaf({0});
         flat.addLeaf({1});
-        tree = std::make_unique<SplitTree>(prims, Aabb{{-2, -2, -2}, {2, 2, 2}}, flat, "test", SahCosts{});
+        tree = std::make_unique<SplitTree>(prims, Aabb{{-2, -2, -2}, {2, 2, 2}}, flat, "test", SahCosts{1.0, 1.5});
     }
 };
 

@@ -171,11 +171,11 @@ TEST(XmlWriter, NamesAreMadeUniqueAndSafe) {
     scene.materials.resize(2);  // both unnamed
     scene.flatten();
     saveSceneXml(scene, dir.path("s.xml"));
-    for (const char* file : {"a_b_c.raw", "A_B_C-2.raw", "model.raw", "_..raw", "a_b_c-3.raw"})
+    for (const char* file : {"a_b_c.raw", "A_B_C_2.raw", "model.raw", "_..raw", "a_b_c_3.raw"})
         EXPECT_TRUE(std::filesystem::is_regular_file(dir.path("s/") + file)) << file;
     const Scene back = loadSceneXml(dir.path("s.xml"));
-    EXPECT_EQ(back.models[4].name, "a/b c-2");
-    EXPECT_EQ(back.materials[1].name, "material-2");
+    EXPECT_EQ(back.models[4].name, "a/b c_2");
+    EXPECT_EQ(back.materials[1].name, "material_2");
     expectSamePrimitives(scene.primitives, back.primitives);
 }
 

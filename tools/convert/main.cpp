@@ -7,6 +7,7 @@
 
 #include "command_line.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "import/import.h"
 #include "scene/thesis_scenes.h"
 #include "scene/xml_writer.h"

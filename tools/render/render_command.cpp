@@ -1,6 +1,5 @@
 #include "render_command.h"
 
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <vector>
@@ -8,6 +7,7 @@
 #include "accel/build.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "import/load_scene.h"
 #include "progress.h"
 #include "render/renderer.h"
@@ -62,17 +62,13 @@ void prepareOutputs(const RenderOptions& o, const ImageOutputSettings& output) {
     if (o.statsJson) prepareOutputFile(*o.statsJson);
 }
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSettings& settings, ProgressMode progress,
                                             RenderStats& stats) {
     announce(progress, std::string("building the ") + accelKindName(settings.kind) + " tree over " +
                            std::to_string(scene.primitives.size()) + " objects");
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, settings);
-    stats.preprocessSeconds = secondsSince(start);
+    stats.preprocessSeconds = stopwatch.seconds();
     char done[160];
     std::snprintf(done, sizeof done, "%s tree built: %llu nodes in %.3f s", accel->stats().name.c_str(),
                   static_cast<unsigned long long>(accel->stats().nodes), stats.preprocessSeconds);
