@@ -18,6 +18,8 @@ std::optional<ImageFormat> parseImageFormat(const std::string& name);  // null p
 // From a file name's extension (.png .exr .tga .txt), case-insensitive.
 std::optional<ImageFormat> imageFormatFromPath(const std::string& path);
 const char* imageFormatName(ImageFormat format);
+// Whether the format has an alpha channel (PNG, EXR, TGA): rt-render writes one there by default.
+bool imageFormatHasAlpha(ImageFormat format);
 
 // rt-render's rule for -o `type` and -f `path`: the extension picks the format unless `type`
 // names one; neither gives null. Throws rt::InputError if the two contradict each other
@@ -30,6 +32,9 @@ struct ImageOutputSettings {
     std::string path;     // "-" is standard output
     bool exrHalf = true;  // EXR pixels as half (else float)
     int pngBits = 8;      // 8 or 16
+    // RGBA: alpha is the pixel's coverage (0 where every camera ray missed); EXR colours are
+    // premultiplied by it, PNG and TGA colours straight. Without it, RGB over the background.
+    bool alpha = false;
     ColorSettings color;
 };
 

@@ -46,20 +46,27 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
     for (const Light& light : scene.lights) ambientLight_ += light.color;
 }
 
-Color Tracer::pixel(int x, int y, RenderCounters& counters) const {
+Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage) const {
     const int n = settings_.pixelSamples;
     Color sum;
+    int hits = 0;
     for (int i = 0; i < n; ++i) {
         SampleRng rng{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
         Real sx = Real(0.5), sy = Real(0.5);
         if (n > 1) jitteredGridSample(i, n, rng, sx, sy);
         ++counters.camera.rays;
-        const Color sample = trace(camera_.at(Real(x) + sx, Real(y) + sy), 0, false, rng, counters);
+        // trace() at depth 0, keeping whether the camera ray hit (alpha)
+        const Ray ray = camera_.at(Real(x) + sx, Real(y) + sy);
+        Hit hit;
+        const bool seen = accel_.intersect(ray, kInfinity, hit, counters.camera);
+        hits += seen;
+        const Color sample = seen ? shade(ray, hit, 0, false, rng, counters) : scene_.background;
         if (isFinite(sample))
             sum += sample;
         else
             counters.nonFinite.add(x, y);  // counts as black, and the tool says so
     }
+    coverage = float(hits) / float(n);
     return n == 1 ? sum : sum * (1.0f / float(n));
 }
 

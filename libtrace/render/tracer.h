@@ -23,8 +23,13 @@ public:
     Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings);
 
     // The linear colour of pixel (x, y): the mean of its camera samples. A sample that comes
-    // out NaN or infinite counts as black and is recorded in counters.nonFinite.
-    Color pixel(int x, int y, RenderCounters& counters) const;
+    // out NaN or infinite counts as black and is recorded in counters.nonFinite. `coverage`
+    // is the fraction of the camera rays that hit something (alpha).
+    Color pixel(int x, int y, RenderCounters& counters, float& coverage) const;
+    Color pixel(int x, int y, RenderCounters& counters) const {
+        float coverage;
+        return pixel(x, y, counters, coverage);
+    }
 
     // The colour seen along a ray that has already been reflected `depth` times.
     Color trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const;

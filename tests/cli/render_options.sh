@@ -33,7 +33,7 @@ grep -Eq '^[0-9.]+ 0\.00 ' "$WORK/stdout" || fail "-p rendered: $(cat "$WORK/std
 
 # Output types: by -o, or by -f's extension; text goes to stdout by default; the scene may come from stdin.
 for f in a.png b.exr c.tga d.txt; do expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -f "$WORK/$f"; done
-iinfo "$WORK/a.png" | grep -q "32 x   24, 3 channel, uint8 png" || fail "a.png: $(iinfo "$WORK/a.png")"
+iinfo "$WORK/a.png" | grep -q "32 x   24, 4 channel, uint8 png" || fail "a.png: $(iinfo "$WORK/a.png")"
 iinfo "$WORK/b.exr" | grep -q "half openexr" || fail "b.exr: $(iinfo "$WORK/b.exr")"
 iinfo -v "$WORK/b.exr" >"$WORK/b.txt"
 for key in 'Software: "rt-render [0-9]' "rt:scene: \"$scene\"" 'rt:samplesPerPixel: 1' 'rt:colorSpace: "lin_rec709"' \

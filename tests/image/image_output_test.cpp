@@ -150,6 +150,53 @@ TEST_F(ImageOutputTest, PngAndTgaGoThroughTheDisplayTransform) {
     }
 }
 
+// Two pixels over a coloured background: one all background (alpha 0), one half covered by
+// grey 0.8 (its colour the mean of 0.8 and the background).
+Framebuffer halfCovered() {
+    const Color background{0.2f, 0.4f, 0.6f};
+    Framebuffer fb(2, 1, {0, 0, 2, 1}, background);
+    fb.at(0, 0) = background;
+    fb.alphaAt(0, 0) = 0;
+    fb.at(1, 0) = Color{0.4f, 0.4f, 0.4f} + background * 0.5f;
+    fb.alphaAt(1, 0) = 0.5f;
+    return fb;
+}
+
+TEST_F(ImageOutputTest, AlphaIsPremultipliedInExrAndStraightInPng) {
+    ImageOutputSettings exr = settings(ImageFormat::Exr, file("a.exr"));
+    exr.exrHalf = false;
+    exr.alpha = true;
+    writeImage(halfCovered(), exr, metadata());
+    OIIO::ImageSpec spec;
+    std::vector<float> px = readPixels(file("a.exr"), spec);
+    ASSERT_EQ(spec.nchannels, 4);
+    EXPECT_EQ(spec.alpha_channel, 3);
+    const std::vector<float> premultiplied{0, 0, 0, 0, 0.4f, 0.4f, 0.4f, 0.5f};
+    for (std::size_t i = 0; i < px.size(); ++i) EXPECT_NEAR(px[i], premultiplied[i], 1e-6f) << i;
+
+    ImageOutputSettings png = settings(ImageFormat::Png, file("a.png"));
+    png.color.view = "Raw";  // no display transform: the file holds the linear values
+    png.alpha = true;
+    writeImage(halfCovered(), png, metadata());
+    OIIO::ImageSpec straight;
+    straight.attribute("oiio:UnassociatedAlpha", 1);  // read the file's values as they are
+    auto in = OIIO::ImageInput::open(file("a.png"), &straight);
+    ASSERT_TRUE(in) << OIIO::geterror();
+    ASSERT_EQ(in->spec().nchannels, 4);
+    px.assign(8, -1);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, px.data()));
+    EXPECT_EQ(px[3], 0);
+    for (int c = 4; c < 7; ++c) EXPECT_NEAR(px[std::size_t(c)], 0.8f, 1 / 255.0f) << c;
+    EXPECT_NEAR(px[7], 0.5f, 1 / 255.0f);
+
+    png.alpha = false;  // over the background, as before alpha existed
+    writeImage(halfCovered(), png, metadata());
+    px = readPixels(file("a.png"), spec);
+    ASSERT_EQ(spec.nchannels, 3);
+    EXPECT_NEAR(px[0], 0.2f, 1 / 255.0f);
+    EXPECT_NEAR(px[3], 0.5f, 1 / 255.0f);
+}
+
 TEST_F(ImageOutputTest, TextIsAsciiArt) {
     Framebuffer fb(3, 2, {0, 0, 3, 2});
     fb.at(1, 0) = {1, 1, 1};

@@ -11,6 +11,7 @@
 namespace {
 
 using rt::render_tool::RenderOptions;
+using rt::tool::numberIn;
 
 void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName) {
     const char* group = "Rendering options";
@@ -29,6 +30,21 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
 }
 
+void addCameraOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Camera options (applied in this order)";
+    app.add_option("--camera", o.camera, "The scene's camera to render: its name or number (0 is the first)")
+        ->group(group);
+    app.add_option("--look-from", o.lookFrom, "Camera origin X,Y,Z (the lens stays)")->group(group);
+    app.add_option("--look-at", o.lookAt, "Camera destination X,Y,Z")->group(group);
+    app.add_option("--up", o.up, "Camera up vector X,Y,Z")->group(group);
+    app.add_option("--fov", o.fov, "Horizontal field of view in degrees (replaces f and zoom)")
+        ->check(CLI::Range(0.0, 180.0))->group(group);
+    app.add_flag("--frame", o.frame, "Move the camera along its view to fit the scene's bounding sphere")->group(group);
+    app.add_option("--orbit", o.orbit, "Render N frames around the look-at point to -f out_####.png")
+        ->check(numberIn(1, 1000000))->group(group);
+    app.add_option("--frames", o.frames, "Render only frames A..B of --orbit (both included)")->group(group);
+}
+
 void addImageOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Colour and file options";
     app.add_option("--color-config", o.color.configPath, "OpenColorIO config (default: $OCIO, then rt's own)")
@@ -41,6 +57,10 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
     app.add_option("--exr-pixels", o.exrPixels, "EXR pixel type: half or float")
         ->check(CLI::IsMember({"half", "float"}))->capture_default_str()->group(group);
+    app.add_option("--alpha", o.alpha,
+                   "Alpha channel (coverage): on or off (default: on for PNG, EXR and TGA; EXR premultiplied, "
+                   "PNG and TGA straight)")
+        ->check(CLI::IsMember({"on", "off"}))->group(group);
     app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}))
         ->capture_default_str()->group(group);
 }
@@ -70,6 +90,7 @@ int main(int argc, char** argv) {
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")->required();
     rt::tool::addPictureOptions(app, options.render);
     addRenderingOptions(app, options, accelName);
+    addCameraOptions(app, options);
     rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);
     addOtherOptions(app, options);
