@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/color.h"
+#include "render/aov.h"
 
 namespace rt {
 
@@ -26,9 +27,12 @@ struct PixelWindow {
 
 class Framebuffer {
 public:
-    Framebuffer(int fullWidth, int fullHeight, const PixelWindow& window, const Color& background = {})
+    // With `aovs`, each pixel also has its PixelAovs (render/aov.h).
+    Framebuffer(int fullWidth, int fullHeight, const PixelWindow& window, const Color& background = {},
+                bool aovs = false)
         : fullWidth_(fullWidth), fullHeight_(fullHeight), window_(window), background_(background),
-          pixels_(std::size_t(window.width()) * std::size_t(window.height())), alpha_(pixels_.size(), 1.0f) {}
+          pixels_(std::size_t(window.width()) * std::size_t(window.height())), alpha_(pixels_.size(), 1.0f),
+          aovs_(aovs ? pixels_.size() : 0) {}
 
     int fullWidth() const { return fullWidth_; }
     int fullHeight() const { return fullHeight_; }
@@ -44,6 +48,9 @@ public:
     const std::vector<Color>& pixels() const { return pixels_; }
     const std::vector<float>& alphas() const { return alpha_; }
     const Color& background() const { return background_; }
+    bool hasAovs() const { return !aovs_.empty(); }
+    PixelAovs* aovsAt(int x, int y) { return hasAovs() ? &aovs_[index(x, y)] : nullptr; }
+    const std::vector<PixelAovs>& aovs() const { return aovs_; }
 
     // Pixel i of pixels() without the background, as over a transparent one: the colour
     // premultiplied by alpha that EXR stores. Exactly 0 where alpha is 0.
@@ -62,6 +69,7 @@ private:
     Color background_;
     std::vector<Color> pixels_;
     std::vector<float> alpha_;
+    std::vector<PixelAovs> aovs_;
 };
 
 }  // namespace rt

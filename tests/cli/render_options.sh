@@ -13,6 +13,13 @@ expect_exit 0 "$RT_RENDER" "$scene" --width 32 --height 24 --shadows --depth 3 -
 [ "$(wc -l <"$WORK/stdout")" = 1 ] || fail "stdout has more than the -b line"
 grep -q "primary" "$WORK/stderr" || fail "no summary on stderr"
 
+# --seed: another seed, other noise, the same again each time; the statistics record it.
+"$RT_RENDER" "$scene" "${small[@]}" -S 4 -D b -r 2 -f "$WORK/seed0.exr"
+"$RT_RENDER" "$scene" "${small[@]}" -S 4 -D b -r 2 --seed 7 -f "$WORK/seed7.exr" --stats-json "$WORK/seed.json"
+"$RT_RENDER" "$scene" "${small[@]}" -S 4 -D b -r 2 --seed 7 -f "$WORK/again7.exr"
+if idiff -fail 0 -warn 0 "$WORK/seed0.exr" "$WORK/seed7.exr" >/dev/null; then fail "--seed 7 changed nothing"; fi
+idiff -fail 0 -warn 0 "$WORK/seed7.exr" "$WORK/again7.exr" >/dev/null || fail "--seed 7 is not reproducible"
+grep -q '"seed": 7' "$WORK/seed.json" || fail "the statistics do not record the seed"
 # --stats-json is JSON with the counters; its primary rays are width x height x samples.
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -S 4 --stats-json -
 python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["primaryRays"]==32*24*4, d; assert d["testsPerRay"]>0' \

@@ -16,8 +16,8 @@ using rt::tool::numberIn;
 void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName) {
     const char* group = "Rendering options";
     app.add_option("-o,--output", o.outputType,
-                   "Output type: null png exr tga text (default: -f's extension; neither -o nor -f: null)")
-        ->check(CLI::IsMember({"null", "png", "exr", "tga", "text"}))->group(group);
+                   "Output type: " + rt::imageFormatNames() + " (default: -f's extension; neither -o nor -f: null)")
+        ->group(group);
     app.add_option("-f,--file", o.outputPath, "Output file; - for standard output")->group(group);
     auto* bsp = app.add_flag_callback("-B,--bsp", [&] { accelName = "bsp"; }, "Use the BSP tree")->group(group);
     auto* kd = app.add_flag_callback("-K,--kd", [&] { accelName = "kd"; }, "Use the KD tree")->group(group);
@@ -28,6 +28,9 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
     app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
         ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
+    app.add_option("--seed", o.render.seed,
+                   "Random seed of the samples: another seed, independent noise (default 0, always the same)")
+        ->capture_default_str()->group(group);
 }
 
 void addCameraOptions(CLI::App& app, RenderOptions& o) {
@@ -61,7 +64,17 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
                    "Alpha channel (coverage): on or off (default: on for PNG, EXR and TGA; EXR premultiplied, "
                    "PNG and TGA straight)")
         ->check(CLI::IsMember({"on", "off"}))->group(group);
+    app.add_option("--aov", o.aovs,
+                   "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, or all")
+        ->group(group);
     app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}))
+        ->capture_default_str()->group(group);
+    app.add_option("--tiff-bits", o.tiffBits, "TIFF bits per channel: 8 or 16 (display-referred), 32 (float, linear)")
+        ->check(CLI::IsMember({8, 16, 32}))->capture_default_str()->group(group);
+    app.add_option("--jpeg-quality", o.jpegQuality, "JPEG quality, 1-100")->check(numberIn(1, 100))
+        ->capture_default_str()->group(group);
+    app.add_option("--exr-compression", o.exrCompression, "EXR compression")
+        ->check(CLI::IsMember({"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"}))
         ->capture_default_str()->group(group);
 }
 

@@ -68,6 +68,9 @@ ImageOutputSettings outputSettings(const RenderOptions& o) {
     s.color = o.color;
     s.exrHalf = o.exrPixels == "half";
     s.pngBits = o.pngBits;
+    s.tiffBits = o.tiffBits;
+    s.jpegQuality = o.jpegQuality;
+    s.exrCompression = o.exrCompression;
     s.path = o.outputPath.value_or("");
     if (o.preprocessOnly) return s;
     if (o.outputPath) checkNotDirectory(*o.outputPath);  // before its extension is looked at
@@ -78,6 +81,8 @@ ImageOutputSettings outputSettings(const RenderOptions& o) {
     s.alpha = o.alpha ? *o.alpha == "on" : imageFormatHasAlpha(s.format);
     if (s.alpha && !imageFormatHasAlpha(s.format) && s.format != ImageFormat::Null)
         throw InputError(std::string("--alpha on: ") + imageFormatName(s.format) + " output has no alpha channel");
+    if (o.aovs) s.aovs = parseAovList(*o.aovs);
+    if (o.aovs && s.format != ImageFormat::Exr) throw InputError("--aov needs an EXR output (-f out.exr)");
     return s;
 }
 
@@ -194,6 +199,7 @@ int runRender(RenderOptions o) {
     validate(o.render);
     const FrameRange frames = parseFrames(o.frames, o.orbit);
     const ImageOutputSettings output = outputSettings(o);
+    o.render.aovs = !output.aovs.empty();
     prepareOutputs(o, output, frames.first);
     const ProgressMode progress = progressMode(o.progress, o.quiet);
 

@@ -18,6 +18,9 @@ struct RenderOptions {
     std::optional<std::string> outputPath;  // -f
     std::string exrPixels = "half";       // --exr-pixels half|float
     int pngBits = 8;                      // --png-bits 8|16
+    int tiffBits = 8;                     // --tiff-bits 8|16|32
+    int jpegQuality = 90;                 // --jpeg-quality 1-100
+    std::string exrCompression = "zip";   // --exr-compression
     ColorSettings color;
     RenderSettings render;
     AccelSettings accel;                  // kind Kd unless -B or --accel says otherwise
@@ -28,6 +31,7 @@ struct RenderOptions {
     bool preprocessOnly = false;          // -p
     std::optional<std::string> statsJson;  // --stats-json FILE ("-" is standard output)
     std::optional<std::string> alpha;      // --alpha on|off; default on where the format has alpha
+    std::optional<std::string> aovs;       // --aov LIST: AOV layers in the EXR (render/aov.h)
     // The camera: --camera NAME|INDEX, then --look-from, --look-at, --up (X,Y,Z), --fov, --frame.
     std::optional<std::string> camera;
     std::optional<std::string> lookFrom, lookAt, up;

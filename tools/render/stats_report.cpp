@@ -56,6 +56,7 @@ std::string statsJson(const std::string& scene, const RenderSettings& settings, 
       << "  \"width\": " << settings.width << ",\n  \"height\": " << settings.height << ",\n"
       << "  \"region\": [" << w.x0 << ", " << w.y0 << ", " << w.x1 << ", " << w.y1 << "],\n"
       << "  \"samplesPerPixel\": " << settings.pixelSamples << ",\n"
+      << "  \"seed\": " << settings.seed << ",\n"
       << "  \"maxDepth\": " << settings.maxDepth << ",\n"
       << "  \"shadows\": " << (settings.shadows ? "true" : "false") << ",\n"
       << "  \"accelerator\": " << jsonString(accel.name) << ",\n"
