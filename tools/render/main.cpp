@@ -18,7 +18,9 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
     app.add_option("-o,--output", o.outputType,
                    "Output type: " + rt::imageFormatNames() + " (default: -f's extension; neither -o nor -f: null)")
         ->group(group);
-    app.add_option("-f,--file", o.outputPath, "Output file; - for standard output")->group(group);
+    app.add_option("-f,--file", o.outputPaths,
+                   "Output file; - for standard output; several -f write each from one render")
+        ->allow_extra_args(false)->group(group);
     auto* bsp = app.add_flag_callback("-B,--bsp", [&] { accelName = "bsp"; }, "Use the BSP tree")->group(group);
     auto* kd = app.add_flag_callback("-K,--kd", [&] { accelName = "kd"; }, "Use the KD tree")->group(group);
     bsp->excludes(kd);

@@ -62,8 +62,8 @@ std::string framePath(const std::string& path, int frame) {
 
 namespace {
 
-// The format follows -o and -f (chooseImageFormat); -p renders nothing, so it writes nothing.
-ImageOutputSettings outputSettings(const RenderOptions& o) {
+// One output: the format follows -o and -f (chooseImageFormat); -p renders nothing, so it writes nothing.
+ImageOutputSettings outputSettings(const RenderOptions& o, const std::optional<std::string>& path) {
     ImageOutputSettings s;
     s.color = o.color;
     s.exrHalf = o.exrPixels == "half";
@@ -71,19 +71,29 @@ ImageOutputSettings outputSettings(const RenderOptions& o) {
     s.tiffBits = o.tiffBits;
     s.jpegQuality = o.jpegQuality;
     s.exrCompression = o.exrCompression;
-    s.path = o.outputPath.value_or("");
+    s.path = path.value_or("");
     if (o.preprocessOnly) return s;
-    if (o.outputPath) checkNotDirectory(*o.outputPath);  // before its extension is looked at
-    s.format = chooseImageFormat(o.outputType, o.outputPath);
-    if (s.format == ImageFormat::Text && !o.outputPath) s.path = std::string(1, '-');  // text goes to the terminal
+    if (path) checkNotDirectory(*path);  // before its extension is looked at
+    s.format = chooseImageFormat(o.outputType, path);
+    if (s.format == ImageFormat::Text && !path) s.path = std::string(1, '-');  // text goes to the terminal
     if (s.format != ImageFormat::Null && s.path.empty())
         throw InputError(std::string(imageFormatName(s.format)) + " output needs -f FILE");
     s.alpha = o.alpha ? *o.alpha == "on" : imageFormatHasAlpha(s.format);
     if (s.alpha && !imageFormatHasAlpha(s.format) && s.format != ImageFormat::Null)
         throw InputError(std::string("--alpha on: ") + imageFormatName(s.format) + " output has no alpha channel");
-    if (o.aovs) s.aovs = parseAovList(*o.aovs);
-    if (o.aovs && s.format != ImageFormat::Exr) throw InputError("--aov needs an EXR output (-f out.exr)");
+    if (o.aovs && s.format == ImageFormat::Exr) s.aovs = parseAovList(*o.aovs);
     return s;
+}
+
+// Every -f, written from one render (or the one output -o alone gives, or null).
+std::vector<ImageOutputSettings> outputSettings(const RenderOptions& o) {
+    std::vector<ImageOutputSettings> outputs;
+    if (o.outputPaths.empty()) outputs.push_back(outputSettings(o, std::nullopt));
+    for (const std::string& path : o.outputPaths) outputs.push_back(outputSettings(o, path));
+    const bool anyExr = std::any_of(outputs.begin(), outputs.end(),
+                                    [](const ImageOutputSettings& s) { return s.format == ImageFormat::Exr; });
+    if (o.aovs && !anyExr && !o.preprocessOnly) throw InputError("--aov needs an EXR output (-f out.exr)");
+    return outputs;
 }
 
 // Every frame of a turntable needs a file of its own: the names carry the frame number.
@@ -99,9 +109,10 @@ void checkFrameNames(const RenderOptions& o, const ImageOutputSettings& output) 
 }
 
 // Two outputs on standard output would be concatenated into one unusable stream.
-void checkOneStandardOutput(const RenderOptions& o, const ImageOutputSettings& output) {
+void checkOneStandardOutput(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs) {
     std::vector<std::string> users;
-    if (output.format != ImageFormat::Null && output.path == "-") users.push_back("the image");
+    for (const ImageOutputSettings& output : outputs)
+        if (output.format != ImageFormat::Null && output.path == "-") users.push_back("the image");
     if (o.statsLine) users.push_back("-b");
     if (o.statsJson == "-") users.push_back("--stats-json -");
     if (users.size() > 1)
@@ -110,11 +121,13 @@ void checkOneStandardOutput(const RenderOptions& o, const ImageOutputSettings& o
 
 // Every problem with the outputs is found before the scene is loaded: bad colour names
 // (whatever the output type), a file that cannot be written; missing folders are created.
-void prepareOutputs(const RenderOptions& o, const ImageOutputSettings& output, int firstFrame) {
-    checkOneStandardOutput(o, output);
-    checkFrameNames(o, output);
-    ColorPipeline check(output.color);
-    if (output.format != ImageFormat::Null) prepareOutputFile(framePath(output.path, firstFrame));
+void prepareOutputs(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs, int firstFrame) {
+    checkOneStandardOutput(o, outputs);
+    ColorPipeline check(o.color);
+    for (const ImageOutputSettings& output : outputs) {
+        checkFrameNames(o, output);
+        if (output.format != ImageFormat::Null) prepareOutputFile(framePath(output.path, firstFrame));
+    }
     if (o.statsJson) prepareOutputFile(framePath(*o.statsJson, firstFrame));
 }
 
@@ -172,19 +185,23 @@ std::string outputNote(const RenderOptions& o, const ImageOutputSettings& output
            "write the picture with -f out.png or -f out.exr\n";
 }
 
-// Renders one picture (a turntable's frame `frame`) and writes what the options ask for.
+// Renders one picture (a turntable's frame `frame`) once and writes every output of it.
 void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& accel, const AccelStats& accelStats,
-                 const ImageOutputSettings& output, int frame, ProgressMode progress, RenderStats& stats) {
-    ImageOutputSettings out = output;
-    out.path = framePath(output.path, frame);
+                 const std::vector<ImageOutputSettings>& outputs, int frame, ProgressMode progress,
+                 RenderStats& stats) {
+    std::vector<ImageOutputSettings> frameOutputs = outputs;
+    for (ImageOutputSettings& out : frameOutputs) out.path = framePath(out.path, frame);
     if (!o.preprocessOnly) {
         const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats);
         const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
                                  stats.renderSeconds};
-        writeImage(image, out, meta);
+        for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
         std::cerr << nonFiniteWarning(stats);  // even with -q: a replaced sample is never silent
     }
-    if (!o.quiet) std::cerr << statsSummary(o.render, accelStats, stats, !o.preprocessOnly) << outputNote(o, out);
+    if (!o.quiet) {
+        std::cerr << statsSummary(o.render, accelStats, stats, !o.preprocessOnly);
+        for (const ImageOutputSettings& out : frameOutputs) std::cerr << outputNote(o, out);
+    }
     if (o.statsLine) std::cout << thesisStatsLine(stats) << std::endl;
     if (o.statsJson) {
         const std::string json = statsJson(o.scenePath, o.render, accelStats, stats);
@@ -198,9 +215,9 @@ int runRender(RenderOptions o) {
     if (o.region) o.render.region = parseRegion(*o.region);
     validate(o.render);
     const FrameRange frames = parseFrames(o.frames, o.orbit);
-    const ImageOutputSettings output = outputSettings(o);
-    o.render.aovs = !output.aovs.empty();
-    prepareOutputs(o, output, frames.first);
+    const std::vector<ImageOutputSettings> outputs = outputSettings(o);
+    o.render.aovs = std::any_of(outputs.begin(), outputs.end(), [](const ImageOutputSettings& s) { return !s.aovs.empty(); });
+    prepareOutputs(o, outputs, frames.first);
     const ProgressMode progress = progressMode(o.progress, o.quiet);
 
     Scene scene = loadWithCamera(o);
@@ -220,7 +237,7 @@ int runRender(RenderOptions o) {
             scene.camera = orbited(camera, Real(360) * Real(frame) / Real(o.orbit));
             announce(progress, "frame " + std::to_string(frame) + " of 0.." + std::to_string(o.orbit - 1));
         }
-        renderFrame(o, scene, *accel, accelStats, output, frame, progress, stats);
+        renderFrame(o, scene, *accel, accelStats, outputs, frame, progress, stats);
     }
     return 0;
 }

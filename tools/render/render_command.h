@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "accel/settings.h"
 #include "core/vec3.h"
@@ -15,7 +16,7 @@ namespace rt::render_tool {
 struct RenderOptions {
     std::string scenePath;                // a file, or "-" for standard input
     std::optional<std::string> outputType;  // -o: null png exr tga text; else from -f's extension
-    std::optional<std::string> outputPath;  // -f
+    std::vector<std::string> outputPaths;  // -f, any number: one render, each file written from it
     std::string exrPixels = "half";       // --exr-pixels half|float
     int pngBits = 8;                      // --png-bits 8|16
     int tiffBits = 8;                     // --tiff-bits 8|16|32
