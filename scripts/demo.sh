@@ -9,6 +9,6 @@ mkdir -p out
 render=build/release/tools/render/rt-render
 # KD tree, shadows, reflections up to depth 5, 9 jittered samples per pixel.
 options=(scenes/demo.xml -K -s -d 5 -S 9 -x 800 -y 600)
-"$render" "${options[@]}" -f out/demo.png
-"$render" "${options[@]}" -q -f out/demo.exr
+# One render, both files; --alpha off keeps the scene's dark blue sky (else transparent).
+"$render" "${options[@]}" --alpha off -f out/demo.png -f out/demo.exr
 echo "demo: wrote $PWD/out/demo.png and $PWD/out/demo.exr"

@@ -1,6 +1,6 @@
-// Writing the rendered picture (thesis 3.4.4): EXR keeps the linear scene-referred values,
-// PNG, TGA and text are display-referred through the OpenColorIO pipeline, null writes
-// nothing (benchmarks). Every file is written atomically: a failed or interrupted write
+// Writing the rendered picture (thesis 3.4.4): EXR, Radiance HDR, PFM and float TIFF keep the
+// linear scene-referred values; PNG, TGA, JPEG, WebP, 8- and 16-bit TIFF and text are
+// display-referred through the OpenColorIO pipeline; null writes nothing (benchmarks). Every file is written atomically: a failed or interrupted write
 // leaves an existing file untouched and no partial file; "-" writes to standard output.
 #pragma once
 
@@ -10,14 +10,16 @@
 
 #include "core/names.h"
 #include "image/color_pipeline.h"
+#include "render/aov.h"
 #include "render/framebuffer.h"
 
 namespace rt {
 
-enum class ImageFormat { Null, Png, Exr, Tga, Text };
+enum class ImageFormat { Null, Png, Exr, Tga, Text, Jpeg, Tiff, Hdr, Pfm, Webp };
 
-std::optional<ImageFormat> parseImageFormat(const std::string& name);  // null png exr tga text
-// From a file name's extension (.png .exr .tga .txt), case-insensitive.
+// null png exr tga text jpeg tiff hdr pfm webp
+std::optional<ImageFormat> parseImageFormat(const std::string& name);
+// From a file name's extension (.png .exr .tga .txt .jpg .jpeg .tif .tiff .hdr .pfm .webp), case-insensitive.
 std::optional<ImageFormat> imageFormatFromPath(const std::string& path);
 const char* imageFormatName(ImageFormat format);
 // "null", "png", "exr", "tga", "text": the names parseImageFormat knows.
@@ -29,18 +31,31 @@ inline constexpr NamedValues<ExrPixelType, 2> kExrPixelTypeNames{
     {{"half", ExrPixelType::Half}, {"float", ExrPixelType::Float}}};
 // The bits per channel PNG files may have.
 inline constexpr std::array<int, 2> kPngBits{8, 16};
+// Whether the installed OpenImageIO writes the format (PFM needs OpenImageIO 2.5, WebP libwebp).
+bool imageFormatWritable(ImageFormat format);
+std::string imageFormatExtensions();  // ".png .exr ...", for help and messages
+// Whether the format has an alpha channel (PNG, EXR, TGA, TIFF, WebP): rt-render writes one there by default.
+bool imageFormatHasAlpha(ImageFormat format);
 
 // rt-render's rule for -o `type` and -f `path`: the extension picks the format unless `type`
 // names one; neither gives null. Throws rt::InputError if the two contradict each other
 // (-o png -f a.exr, -o null -f a.png), or if `path` has no extension a writer handles and no
-// type is given. With a type, a path without a known extension is written in that type.
+// type is given. With a type, a path without a known extension is written in that type. A
+// format the installed OpenImageIO cannot write is an rt::InputError too.
 ImageFormat chooseImageFormat(const std::optional<std::string>& type, const std::optional<std::string>& path);
 
 struct ImageOutputSettings {
     ImageFormat format = ImageFormat::Null;
     std::string path;     // "-" is standard output
     ExrPixelType exrPixels = ExrPixelType::Half;
+    std::string exrCompression = "zip";  // OpenEXR's compression: none zip zips piz pxr24 b44 b44a dwaa dwab rle
     int pngBits = 8;      // 8 or 16
+    int tiffBits = 8;     // 8 or 16 (display-referred), or 32: float, linear
+    int jpegQuality = 90;  // 1-100
+    // RGBA: alpha is the pixel's coverage (0 where every camera ray missed); EXR colours are
+    // premultiplied by it, PNG and TGA colours straight. Without it, RGB over the background.
+    bool alpha = false;
+    std::vector<Aov> aovs;  // EXR only: these AOVs' channels after the colour (render/aov.h)
     ColorSettings color;
 };
 

@@ -175,8 +175,9 @@ private:
     }
 
     // --camera NAME|INDEX, else the first perspective camera a node places; none for
-    // --camera auto. Assimp's mHorizontalFOV is half the horizontal angle. 3DS cameras come
-    // from the file's chunks, which Assimp's values cannot be turned back into.
+    // --camera auto. Every other usable camera follows it, in file order (rt-render --camera).
+    // Assimp's mHorizontalFOV is half the horizontal angle. 3DS cameras come from the file's
+    // chunks, which Assimp's values cannot be turned back into.
     void takeCamera(const Aabb& bounds) {
         ImportReport& report = out_.report;
         report.camerasInFile = ai_.mNumCameras;
@@ -184,28 +185,47 @@ private:
         const std::vector<Camera3ds> chunks =
             report.format == k3dsImporter ? read3dsCamerasFromFile(file_) : std::vector<Camera3ds>();
         for (unsigned i = 0; i < ai_.mNumCameras; ++i) {
-            const aiCamera& cam = *ai_.mCameras[i];
-            const std::string name = cam.mName.C_Str();
+            const std::string name = ai_.mCameras[i]->mName.C_Str();
             const bool wanted =
                 options_.camera.empty() || options_.camera == std::to_string(i) || options_.camera == name;
-            const Transform* world = placement(cam.mName);
-            if (!wanted || !world) continue;
-            const std::string what = "camera " + std::to_string(i) + " \"" + name + "\"";
-            const std::optional<Camera> camera =
-                report.format == k3dsImporter ? camera3ds(chunks, name, what) : assimpCamera(cam, *world, what, bounds);
+            if (!wanted) continue;
+            const std::optional<Camera> camera = cameraAt(i, chunks, bounds);
             if (!camera) continue;
             out_.scene.camera = *camera;
             report.cameraUsed = name;
             if (name.empty())
                 report.cameraUsed.append("#").append(std::to_string(i));  // (GCC 12 -Wrestrict misfires on "#" + s)
+            takeOtherCameras(i, chunks, bounds);
             return;
         }
         if (!options_.camera.empty()) fail("no node places a camera named or numbered \"" + options_.camera + "\"");
     }
 
+    // Camera i of the file, named as there, if a node places it and rt can use it.
+    std::optional<Camera> cameraAt(unsigned i, const std::vector<Camera3ds>& chunks, const Aabb& bounds) {
+        const aiCamera& cam = *ai_.mCameras[i];
+        const std::string name = cam.mName.C_Str();
+        const Transform* world = placement(cam.mName);
+        if (!world) return std::nullopt;
+        const std::string what = "camera " + std::to_string(i) + " \"" + name + "\"";
+        std::optional<Camera> camera =
+            out_.report.format == k3dsImporter ? camera3ds(chunks, name, what) : assimpCamera(cam, *world, what, bounds);
+        if (camera) camera->name = name;
+        return camera;
+    }
+
+    // The cameras after the one taken; one that cannot be used is a note, whatever --camera asked.
+    void takeOtherCameras(unsigned taken, const std::vector<Camera3ds>& chunks, const Aabb& bounds) {
+        otherCameras_ = true;
+        for (unsigned i = 0; i < ai_.mNumCameras; ++i)
+            if (i != taken)
+                if (const std::optional<Camera> camera = cameraAt(i, chunks, bounds))
+                    out_.scene.extraCameras.push_back(*camera);
+    }
+
     // A camera not used is an error when --camera asked for it, else a note.
     std::nullopt_t unusable(const std::string& what, const std::string& why) {
-        if (!options_.camera.empty()) fail(what + " " + why);
+        if (!options_.camera.empty() && !otherCameras_) fail(what + " " + why);
         out_.report.notes.push_back(what + " " + why + ": not used");
         return std::nullopt;
     }
@@ -262,6 +282,7 @@ private:
     SceneAssembly<unsigned, unsigned> assembly_;  // models by aiMesh, materials by aiMaterial
     std::set<unsigned> meshesPlaced_;
     std::map<std::string, Transform> worldByName_;
+    bool otherCameras_ = false;  // taking the cameras after the one --camera asked for
     Transform fileToWorld_;  // from a 3DS file's own coordinates
 };
 

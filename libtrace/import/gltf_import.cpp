@@ -344,6 +344,7 @@ private:
     }
 
     // --camera NAME|INDEX, else the first perspective camera a node places; none for --camera auto.
+    // Every other perspective camera placed follows it (rt-render --camera picks one).
     void takeCamera(const Aabb& bounds) {
         ImportReport& report = out_.report;
         report.camerasInFile = gltf_.cameras.size();
@@ -360,23 +361,42 @@ private:
         }
         if (!chosen && !options_.camera.empty())
             fail("no node of the scene places a camera named or numbered \"" + options_.camera + "\"");
-        if (cameras_.size() > (chosen ? 1u : 0u))
-            report.notes.push_back(std::to_string(cameras_.size() - (chosen ? 1 : 0)) + " other camera(s) not used");
-        if (!chosen) return;
+        if (!chosen) {
+            if (!cameras_.empty()) report.notes.push_back(std::to_string(cameras_.size()) + " camera(s) not used");
+            return;
+        }
+        out_.scene.camera = perspectiveCamera(*chosen, bounds);
         const tinygltf::Camera& cam = gltf_.cameras[std::size_t(chosen->index)];
-        const std::string what = "camera " + std::to_string(chosen->index);
+        report.cameraUsed = cam.name.empty() ? "#" + std::to_string(chosen->index) : cam.name;
+        for (const Placed& c : cameras_)
+            if (&c != chosen && usablePerspective(gltf_.cameras[std::size_t(c.index)]))
+                out_.scene.extraCameras.push_back(perspectiveCamera(c, bounds));
+        if (const std::size_t unused = cameras_.size() - 1 - out_.scene.extraCameras.size())
+            report.notes.push_back(std::to_string(unused) + " other camera(s) not used: not perspective, or no valid yfov");
+    }
+
+    static bool usablePerspective(const tinygltf::Camera& cam) {
+        return cam.type == "perspective" && cam.perspective.yfov > 0 && cam.perspective.yfov < kPi;
+    }
+
+    // The camera a node places, named as in the file; fails if rt cannot use it.
+    Camera perspectiveCamera(const Placed& placed, const Aabb& bounds) {
+        const tinygltf::Camera& cam = gltf_.cameras[std::size_t(placed.index)];
+        const std::string what = "camera " + std::to_string(placed.index);
         if (cam.type != "perspective") fail(what + " is " + cam.type + "; rt cameras are perspective");
         const double yfov = finiteNumber(cam.perspective.yfov, file_, what + " yfov");
         if (!(yfov > 0 && yfov < kPi)) fail(what + ": yfov must lie between 0 and pi");
         double aspect = cam.perspective.aspectRatio;
         if (!(aspect > 0) || !std::isfinite(aspect)) {
             aspect = options_.aspect;
-            report.notes.push_back(what + " has no aspect ratio: its horizontal fov assumes " + std::to_string(aspect));
+            out_.report.notes.push_back(what + " has no aspect ratio: its horizontal fov assumes " +
+                                        std::to_string(aspect));
         }
-        const Transform& w = chosen->world;
-        out_.scene.camera = viewCamera(w.point(Vec3()), w.vector(Vec3(0, 0, -1)), w.vector(Vec3(0, 1, 0)),
-                                       horizontalFov(yfov, aspect), bounds);
-        report.cameraUsed = cam.name.empty() ? "#" + std::to_string(chosen->index) : cam.name;
+        const Transform& w = placed.world;
+        Camera camera = viewCamera(w.point(Vec3()), w.vector(Vec3(0, 0, -1)), w.vector(Vec3(0, 1, 0)),
+                                   horizontalFov(yfov, aspect), bounds);
+        camera.name = cam.name;
+        return camera;
     }
 
     // KHR_lights_punctual: point lights where the node puts them; spot lights as point

@@ -14,18 +14,24 @@ Scene flattenedScene(ImportResult imported) {
     return scene;
 }
 
+// ImportOptions::camera picks one of an XML scene's named cameras, as the importers pick one of a model's.
+Scene withCamera(Scene scene, const ImportOptions& options) {
+    if (!options.camera.empty()) scene.selectCamera(options.camera);
+    return scene;
+}
+
 // Standard input holds an XML scene or a glTF 2.0 model (GLB or JSON), told apart by content.
 Scene loadStandardInput(const ImportOptions& options) {
     const std::string bytes = readStandardInput();
     if (looksLikeGltf(bytes)) return flattenedScene(importGltfFromStandardInput(bytes, options));
-    return loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile);
+    return withCamera(loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile), options);
 }
 
 }  // namespace
 
 Scene loadScene(const std::string& path, const ImportOptions& options) {
     if (path == "-") return loadStandardInput(options);
-    if (lowerCaseExtension(path) == ".xml") return loadSceneXml(path, readModelFile);
+    if (lowerCaseExtension(path) == ".xml") return withCamera(loadSceneXml(path, readModelFile), options);
     return flattenedScene(importScene(path, options));
 }
 

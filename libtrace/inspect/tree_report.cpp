@@ -148,6 +148,7 @@ void writePictureJson(JsonWriter& json, const RenderSettings& picture) {
     for (const int corner : {w.x0, w.y0, w.x1, w.y1}) json.value(corner);
     json.endArray();
     json.member("pixelSamples", picture.pixelSamples);
+    json.member("seed", picture.seed);
     json.member("reflectionDepth", picture.reflectionDepth);
     json.member("shadows", picture.shadows);
     json.member("softShadows", picture.softShadows);

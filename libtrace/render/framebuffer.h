@@ -1,5 +1,7 @@
 // The rendered picture: linear, scene-referred float RGB (thesis 3.4.4's outputs
-// convert it only when they write). A render may cover only a window of the full
+// convert it only when they write), and each pixel's coverage: the fraction of its camera
+// rays that hit something (alpha). The colour includes the background the other rays saw,
+// so that a picture without alpha needs nothing else; premultiplied() takes it out. A render may cover only a window of the full
 // image (render farms, --region); the framebuffer then holds just that window, as an
 // EXR data window sits inside its display window.
 #pragma once
@@ -7,6 +9,7 @@
 #include <vector>
 
 #include "core/color.h"
+#include "render/aov.h"
 
 namespace rt {
 
@@ -24,9 +27,12 @@ struct PixelWindow {
 
 class Framebuffer {
 public:
-    Framebuffer(int fullWidth, int fullHeight, const PixelWindow& window)
-        : fullWidth_(fullWidth), fullHeight_(fullHeight), window_(window),
-          pixels_(std::size_t(window.width()) * std::size_t(window.height())) {}
+    // With `aovs`, each pixel also has its PixelAovs (render/aov.h).
+    Framebuffer(int fullWidth, int fullHeight, const PixelWindow& window, const Color& background = {},
+                bool aovs = false)
+        : fullWidth_(fullWidth), fullHeight_(fullHeight), window_(window), background_(background),
+          pixels_(std::size_t(window.width()) * std::size_t(window.height())), alpha_(pixels_.size(), 1.0f),
+          aovs_(aovs ? pixels_.size() : 0) {}
 
     int fullWidth() const { return fullWidth_; }
     int fullHeight() const { return fullHeight_; }
@@ -36,8 +42,23 @@ public:
     // Pixel (x, y) in full-image coordinates; it must lie inside the window.
     Color& at(int x, int y) { return pixels_[index(x, y)]; }
     const Color& at(int x, int y) const { return pixels_[index(x, y)]; }
-    // The window's pixels, row by row from its top-left corner.
+    float& alphaAt(int x, int y) { return alpha_[index(x, y)]; }
+    float alphaAt(int x, int y) const { return alpha_[index(x, y)]; }
+    // The window's pixels, row by row from its top-left corner, and their alpha.
     const std::vector<Color>& pixels() const { return pixels_; }
+    const std::vector<float>& alphas() const { return alpha_; }
+    const Color& background() const { return background_; }
+    bool hasAovs() const { return !aovs_.empty(); }
+    PixelAovs* aovsAt(int x, int y) { return hasAovs() ? &aovs_[index(x, y)] : nullptr; }
+    const std::vector<PixelAovs>& aovs() const { return aovs_; }
+
+    // Pixel i of pixels() without the background, as over a transparent one: the colour
+    // premultiplied by alpha that EXR stores. Exactly 0 where alpha is 0.
+    Color premultiplied(std::size_t i) const {
+        const float a = alpha_[i];
+        if (a == 1) return pixels_[i];
+        return a == 0 ? Color{} : pixels_[i] + background_ * (a - 1);
+    }
 
 private:
     std::size_t index(int x, int y) const {
@@ -45,7 +66,10 @@ private:
     }
     int fullWidth_, fullHeight_;
     PixelWindow window_;
+    Color background_;
     std::vector<Color> pixels_;
+    std::vector<float> alpha_;
+    std::vector<PixelAovs> aovs_;
 };
 
 }  // namespace rt

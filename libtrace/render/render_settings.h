@@ -1,6 +1,7 @@
 // What rt-render's rendering options control (thesis appendix B), with their defaults.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "render/framebuffer.h"
@@ -26,6 +27,8 @@ struct RenderSettings {
     bool glossyReflections = false;
     int distributedSamples = 128;  // -r
     int threads = 0;               // --threads; 0 lets OpenMP use every core
+    std::uint32_t seed = 0;        // --seed: another seed gives independent noise, as deterministic
+    bool aovs = false;             // --aov: fill each pixel's PixelAovs (render/aov.h) too
 
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
 };

@@ -45,7 +45,7 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
                    const RenderProgress& progress) {
     validate(settings);
     const Tracer tracer(scene, accel, settings);
-    Framebuffer image(settings.width, settings.height, settings.window());
+    Framebuffer image(settings.width, settings.height, settings.window(), scene.background, settings.aovs);
     const std::vector<PixelWindow> blocks = spreadOut(blocksOf(settings.window()));
     const int total = int(blocks.size());
     const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
@@ -62,7 +62,8 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
         const PixelWindow& b = blocks[std::size_t(i)];
         RenderCounters& counters = perThread[std::size_t(omp_get_thread_num())].counters;
         for (int y = b.y0; y < b.y1; ++y)
-            for (int x = b.x0; x < b.x1; ++x) image.at(x, y) = tracer.pixel(x, y, counters);
+            for (int x = b.x0; x < b.x1; ++x)
+                image.at(x, y) = tracer.pixel(x, y, counters, image.alphaAt(x, y), image.aovsAt(x, y));
         if (progress) {
 #pragma omp critical(rt_render_progress)
             progress(samplesDone += samplesIn(b), samplesTotal);

@@ -1,5 +1,5 @@
 // Reproducible random numbers for distributed ray tracing (thesis 2.6). Every camera
-// sample owns a stream seeded from a hash of (pixel x, pixel y, sample index), as pbrt-v4
+// sample owns a stream seeded from a hash of (pixel x, pixel y, sample index, seed), as pbrt-v4
 // seeds its samplers: a pixel's value depends on nothing but its own coordinates, so the
 // image has the same bits for any thread count, block order or --region split.
 #pragma once
@@ -15,8 +15,10 @@ namespace rt {
 
 class SampleRng {
 public:
-    SampleRng(std::uint32_t x, std::uint32_t y, std::uint32_t sample)
-        : stream_(mixBits((std::uint64_t(x) << 32 | y) ^ mixBits(sample + kGoldenGamma))) {}
+    // `seed` (rt-render --seed) picks another independent set of streams; seed 0 gives the
+    // streams rt always used. Sample indices stay below 2^32, so (seed, sample) never collide.
+    SampleRng(std::uint32_t x, std::uint32_t y, std::uint32_t sample, std::uint32_t seed = 0)
+        : stream_(mixBits((std::uint64_t(x) << 32 | y) ^ mixBits((std::uint64_t(seed) << 32 | sample) + kGoldenGamma))) {}
 
     std::uint64_t next() { return stream_.next(); }
 

@@ -46,21 +46,65 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
     for (const Light& light : scene.lights) ambientLight_ += light.color;
 }
 
-Color Tracer::pixel(int x, int y, RenderCounters& counters) const {
+Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
     const int n = settings_.pixelSamples;
+    const RenderCounters before = counters;
     Color sum;
+    int hits = 0;
     for (int i = 0; i < n; ++i) {
-        SampleRng rng{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i)};
+        SampleRng rng{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i), settings_.seed};
         Real sx = Real(0.5), sy = Real(0.5);
         if (n > 1) jitteredGridSample(i, n, rng, sx, sy);
         ++counters.camera.rays;
-        const Color sample = trace(camera_.at(Real(x) + sx, Real(y) + sy), 0, false, rng, counters);
+        // trace() at depth 0, keeping whether the camera ray hit (alpha)
+        const Ray ray = camera_.at(Real(x) + sx, Real(y) + sy);
+        Hit hit;
+        const bool seen = accel_.intersect(ray, kInfinity, hit, counters.camera);
+        hits += seen;
+        if (aovs && seen) addHit(*aovs, ray, hit, i == 0);
+        const Color sample = seen ? shade(ray, hit, 0, false, rng, counters) : scene_.background;
         if (isFinite(sample))
             sum += sample;
         else
             counters.nonFinite.add(x, y);  // counts as black, and the tool says so
     }
+    coverage = float(hits) / float(n);
+    if (aovs) average(*aovs, n, hits, before, counters);
     return n == 1 ? sum : sum * (1.0f / float(n));
+}
+
+// Sums what a camera ray that hit shows into the pixel's AOVs; average() divides.
+void Tracer::addHit(PixelAovs& a, const Ray& ray, const Hit& hit, bool first) const {
+    const Vec3 p = ray.at(hit.t);
+    const Vec3 ng = scene_.primitives.normal(hit.prim, p);
+    const Vec3 n = dot(ng, ray.direction) > 0 ? -ng : ng;  // as shade() lights it: facing the ray
+    for (int c = 0; c < 3; ++c) {
+        a.p[c] += float(p[c]);
+        a.n[c] += float(n[c]);
+        a.ng[c] += float(ng[c]);
+    }
+    a.z += float(hit.t);
+    a.albedo += materialOf(scene_, hit.prim).color;
+    if (!first) return;
+    a.material = scene_.primitives.material(hit.prim);
+    a.primitive = hit.prim;
+}
+
+void Tracer::average(PixelAovs& a, int samples, int hits, const RenderCounters& before, const RenderCounters& after) {
+    const float perHit = hits > 0 ? 1.0f / float(hits) : 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        a.p[c] *= perHit;
+        a.n[c] *= perHit;
+        a.ng[c] *= perHit;
+    }
+    a.albedo *= perHit;
+    a.z = hits > 0 ? a.z * perHit : kInfinity;
+    const float perSample = 1.0f / float(samples);
+    a.steps = float(after.camera.traversalSteps - before.camera.traversalSteps) * perSample;
+    a.tests = float(after.camera.intersectionTests - before.camera.intersectionTests) * perSample;
+    const RayCounters all = after.total(), allBefore = before.total();
+    a.allSteps = float(all.traversalSteps - allBefore.traversalSteps) * perSample;
+    a.allTests = float(all.intersectionTests - allBefore.intersectionTests) * perSample;
 }
 
 Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "accel/accelerator.h"
+#include "render/aov.h"
 #include "render/camera_rays.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
@@ -23,8 +24,14 @@ public:
     Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings);
 
     // The linear colour of pixel (x, y): the mean of its camera samples. A sample that comes
-    // out NaN or infinite counts as black and is recorded in counters.nonFinite.
-    Color pixel(int x, int y, RenderCounters& counters) const;
+    // out NaN or infinite counts as black and is recorded in counters.nonFinite. `coverage`
+    // is the fraction of the camera rays that hit something (alpha); `aovs`, if given, receives
+    // the pixel's AOVs.
+    Color pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs = nullptr) const;
+    Color pixel(int x, int y, RenderCounters& counters) const {
+        float coverage;
+        return pixel(x, y, counters, coverage);
+    }
 
     // The colour seen along a ray that has already been reflected `depth` times.
     Color trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const;
@@ -33,6 +40,9 @@ public:
     Real epsilon() const { return epsilon_; }
 
 private:
+    void addHit(PixelAovs& aovs, const Ray& ray, const Hit& hit, bool first) const;
+    static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
+                        const RenderCounters& after);
     Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
     // Fraction of `light` seen from p (1 without shadows); n faces the side p is lit from.

@@ -1,19 +1,11 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
-namespace rt {
+#include "core/error.h"
 
-Real Camera::focalPixels(int imageWidth) const {
-    Real f;
-    if (fovDegrees)
-        f = std::abs(Real(imageWidth) / (2 * std::tan(*fovDegrees * kPi / 360)));
-    else if (focalDistance)
-        f = *focalDistance;
-    else
-        f = length(origin - destination);
-    return f * zoom / 100;
-}
+namespace rt {
 
 namespace {
 
@@ -67,6 +59,20 @@ std::optional<std::uint32_t> Scene::findMaterial(const std::string& name) const 
     for (std::uint32_t i = 0; i < materials.size(); ++i)
         if (materials[i].name == name) return i;
     return std::nullopt;
+}
+
+void Scene::selectCamera(const std::string& nameOrIndex) {
+    std::vector<Camera*> all{&camera};
+    for (Camera& c : extraCameras) all.push_back(&c);
+    const auto named = std::find_if(all.begin(), all.end(), [&](const Camera* c) { return c->name == nameOrIndex; });
+    if (named != all.end()) return std::swap(camera, **named);
+    std::string known;  // names come before numbers: a camera may be named "1"
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (std::to_string(i) == nameOrIndex) return std::swap(camera, *all[i]);
+        known += (i ? ", " : "") + std::to_string(i) + (all[i]->name.empty() ? "" : " \"" + all[i]->name + "\"");
+    }
+    throw InputError("--camera " + nameOrIndex + ": the scene has no camera of that name or number (it has " + known +
+                     ")");
 }
 
 }  // namespace rt

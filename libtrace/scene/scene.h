@@ -13,6 +13,7 @@
 #include "core/color.h"
 #include "core/transform.h"
 #include "geometry/primitives.h"
+#include "scene/camera.h"
 
 namespace rt {
 
@@ -26,20 +27,6 @@ struct Material {
     float shininess = 20.0f;  // n, the sharpness of the highlight
     float reflection = 0.0f;  // mirror reflectivity, 0-1
     float spread = 0.0f;      // sigma of the glossy reflection lobe (thesis 2.6.2), radians
-};
-
-// The two-point camera of thesis 2.1.1. The focal distance f is in pixels:
-// from fov (horizontal angle, degrees) as f = w / (2 tan(fov/2)); else the given f;
-// else the distance between origin and destination. zoom scales f in percent.
-struct Camera {
-    Vec3 origin{0, 0, 0};
-    Vec3 destination{0, 0, 1};
-    Vec3 up{0, 1, 0};
-    std::optional<Real> fovDegrees;
-    std::optional<Real> focalDistance;
-    Real zoom = 100;
-
-    Real focalPixels(int imageWidth) const;
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.
@@ -71,7 +58,8 @@ struct Instance {
 
 struct Scene {
     Color background{0, 0, 0};
-    Camera camera;
+    Camera camera;                    // the camera rendered: the file's first, or the one --camera picked
+    std::vector<Camera> extraCameras;  // rt extension: the file's other cameras, in file order
     std::vector<Material> materials;
     std::vector<Model> models;
     std::vector<Instance> instances;
@@ -89,6 +77,9 @@ struct Scene {
     // rays: a model's own copy of its geometry would otherwise add 36 bytes per triangle.
     void dropDescription();
     std::optional<std::uint32_t> findMaterial(const std::string& name) const;
+    // Makes the camera named `nameOrIndex`, or numbered so (0 is the first in the file), the one
+    // rendered (the first takes its place among the others). Throws rt::InputError naming the cameras there are.
+    void selectCamera(const std::string& nameOrIndex);
 };
 
 }  // namespace rt

@@ -68,6 +68,7 @@ private:
     Scene scene_;
     std::unordered_map<std::string, Definition> materials_;
     std::unordered_map<std::string, Definition> models_;
+    std::unordered_map<std::string, Definition> cameras_;
     std::size_t dropped_ = 0;
 };
 
@@ -85,7 +86,7 @@ Scene SceneBuilder::build() {
         if (tag == "background") {
             readBackground(XmlElement(file_, section, {"r", "g", "b"}), hasBackground);
         } else if (tag == "camera") {
-            readCamera(XmlElement(file_, section, {"fov", "f", "zoom"}), hasCamera);
+            readCamera(XmlElement(file_, section, {"name", "fov", "f", "zoom"}), hasCamera);
         } else if (tag == "objects") {
             XmlElement(file_, section, {});  // checks that it has no attributes
             objects.push_back(section);
@@ -132,10 +133,16 @@ void SceneBuilder::readBackground(const XmlElement& e, bool& seen) {
 
 // Thesis 3.4.2: fov is the horizontal angle in degrees, f the focal distance in pixels;
 // with neither, f is the distance from origin to destination. zoom scales f, in percent.
+// rt extension: several cameras, each with an optional unique name; the first is rendered
+// unless rt-render's --camera picks another.
 void SceneBuilder::readCamera(const XmlElement& e, bool& seen) {
-    once(e, seen);
     e.requireOnlyChildren({"origin", "destination", "up"});
-    Camera& camera = scene_.camera;
+    Camera& camera = seen ? scene_.extraCameras.emplace_back() : scene_.camera;
+    seen = true;
+    if (e.has("name")) {
+        camera.name = e.string("name");
+        define(cameras_, "camera", camera.name, std::uint32_t(scene_.extraCameras.size()), e);
+    }
     if (e.has("fov") && e.has("f")) e.fail("<camera> takes fov or f, not both");
     if (e.has("fov")) {
         camera.fovDegrees = e.number("fov");

@@ -61,13 +61,21 @@ std::vector<std::string> uniqueNames(std::vector<std::string> names, const std::
     return names;
 }
 
+// One camera keeps its name or none; several are all named, uniquely, so --camera finds each.
+std::vector<std::string> cameraNames(const Scene& scene) {
+    std::vector<std::string> names{scene.camera.name};
+    if (scene.extraCameras.empty()) return names;
+    for (const Camera& c : scene.extraCameras) names.push_back(c.name);
+    return uniqueNames(names, "camera", false);
+}
+
 class SceneXmlWriter {
 public:
     SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles);
     void build(pugi::xml_document& doc) const;
 
 private:
-    void addCamera(pugi::xml_node parent) const;
+    static void addCamera(pugi::xml_node parent, const Camera& c, const std::string& name);
     void addMaterials(pugi::xml_node parent) const;
     void addModels(pugi::xml_node parent) const;
     void addObjects(pugi::xml_node parent) const;
@@ -80,6 +88,7 @@ private:
     std::vector<std::string> modelFiles_;  // relative references, or empty for inline data
     std::vector<std::string> materialNames_;
     std::vector<std::string> modelNames_;
+    std::vector<std::string> cameraNames_;  // the camera's, then each extra camera's
 };
 
 template <typename Named>
@@ -93,23 +102,26 @@ SceneXmlWriter::SceneXmlWriter(const Scene& scene, std::vector<std::string> mode
     : scene_(scene),
       modelFiles_(std::move(modelFiles)),
       materialNames_(uniqueNames(namesOf(scene.materials), "material", false)),
-      modelNames_(uniqueNames(namesOf(scene.models), "model", false)) {}
+      modelNames_(uniqueNames(namesOf(scene.models), "model", false)),
+      cameraNames_(cameraNames(scene)) {}
 
 void SceneXmlWriter::build(pugi::xml_document& doc) const {
     pugi::xml_node decl = doc.append_child(pugi::node_declaration);
     decl.append_attribute("version").set_value("1.0");
     pugi::xml_node root = doc.append_child("scene");
     setRgb(root.append_child("background"), scene_.background);
-    addCamera(root);
+    addCamera(root, scene_.camera, cameraNames_[0]);
+    for (std::size_t i = 0; i < scene_.extraCameras.size(); ++i)
+        addCamera(root, scene_.extraCameras[i], cameraNames_[i + 1]);
     if (!scene_.materials.empty()) addMaterials(root.append_child("materials"));
     if (!scene_.models.empty()) addModels(root.append_child("models"));
     if (scene_.looseObjects.size() > 0 || !scene_.instances.empty()) addObjects(root.append_child("objects"));
     if (!scene_.lights.empty()) addLights(root.append_child("lights"));
 }
 
-void SceneXmlWriter::addCamera(pugi::xml_node parent) const {
-    const Camera& c = scene_.camera;
+void SceneXmlWriter::addCamera(pugi::xml_node parent, const Camera& c, const std::string& name) {
     pugi::xml_node camera = parent.append_child("camera");
+    if (!name.empty()) camera.append_attribute("name").set_value(name.c_str());
     if (c.fovDegrees) setNumber(camera, "fov", *c.fovDegrees);
     if (c.focalDistance) setNumber(camera, "f", *c.focalDistance);
     setNumber(camera, "zoom", c.zoom);

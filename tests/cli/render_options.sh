@@ -13,6 +13,13 @@ expect_exit 0 "$RT_RENDER" "$scene" --width 32 --height 24 --shadows --depth 3 -
 [ "$(wc -l <"$WORK/stdout")" = 1 ] || fail "stdout has more than the -b line"
 grep -q "camera, .* shadow, .* reflection rays" "$WORK/stderr" || fail "no summary on stderr"
 
+# --seed: another seed, other noise, the same again each time; the statistics record it.
+"$RT_RENDER" "$scene" "${small[@]}" -S 4 -D b -r 2 -f "$WORK/seed0.exr"
+"$RT_RENDER" "$scene" "${small[@]}" -S 4 -D b -r 2 --seed 7 -f "$WORK/seed7.exr" --stats-json "$WORK/seed.json"
+"$RT_RENDER" "$scene" "${small[@]}" -S 4 -D b -r 2 --seed 7 -f "$WORK/again7.exr"
+if idiff -fail 0 -warn 0 "$WORK/seed0.exr" "$WORK/seed7.exr" >/dev/null; then fail "--seed 7 changed nothing"; fi
+idiff -fail 0 -warn 0 "$WORK/seed7.exr" "$WORK/again7.exr" >/dev/null || fail "--seed 7 is not reproducible"
+grep -q '"seed": 7' "$WORK/seed.json" || fail "the statistics do not record the seed"
 # --stats-json is JSON with the counters; its camera rays are width x height x samples.
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -S 4 --stats-json -
 python3 -c 'import json,sys; d=json.load(sys.stdin); r=d["rays"]; assert r["cameraRays"]==32*24*4, d; assert r["intersectionTestsPerRay"]>0' \
@@ -33,7 +40,7 @@ grep -Eq '^[0-9.]+ 0\.00 ' "$WORK/stdout" || fail "-p rendered: $(cat "$WORK/std
 
 # Output types: by -o, or by -f's extension; text goes to stdout by default; the scene may come from stdin.
 for f in a.png b.exr c.tga d.txt; do expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -f "$WORK/$f"; done
-iinfo "$WORK/a.png" | grep -q "32 x   24, 3 channel, uint8 png" || fail "a.png: $(iinfo "$WORK/a.png")"
+iinfo "$WORK/a.png" | grep -q "32 x   24, 4 channel, uint8 png" || fail "a.png: $(iinfo "$WORK/a.png")"
 iinfo "$WORK/b.exr" | grep -q "half openexr" || fail "b.exr: $(iinfo "$WORK/b.exr")"
 iinfo -v "$WORK/b.exr" >"$WORK/b.txt"
 for key in 'Software: "rt-render [0-9]' "rt:scene: \"$scene\"" 'rt:samplesPerPixel: 1' 'rt:colorSpace: "lin_rec709"' \

@@ -30,11 +30,11 @@ TEST(CameraRays, FovIsTheHorizontalAngle) {
 TEST(CameraRays, FocalDistanceFallsBackToTheTargetDistanceAndZoomScalesIt) {
     Camera cam;
     cam.destination = {0, 0, -50};
-    EXPECT_NEAR(cam.focalPixels(640), 50, kTol);
+    EXPECT_NEAR(cam.focalPixels(kReferenceWidth), 50, kTol);
     cam.zoom = 200;
-    EXPECT_NEAR(cam.focalPixels(640), 100, kTol);
+    EXPECT_NEAR(cam.focalPixels(kReferenceWidth), 100, kTol);
     cam.focalDistance = 10;
-    EXPECT_NEAR(cam.focalPixels(640), 20, kTol);
+    EXPECT_NEAR(cam.focalPixels(kReferenceWidth), 20, kTol);
 }
 
 TEST(CameraRays, DegenerateCamerasAreInputErrors) {

@@ -83,6 +83,31 @@ TEST(ImportGltf, AnOrthographicCameraIsRefusedByName) {
     EXPECT_THROW(importScene(sharedModels() + "/gltf/Cameras/Cameras.gltf", o), InputError);
 }
 
+// Every perspective camera a node places is kept, the one taken first: rt-render --camera
+// picks among them after the conversion.
+TEST(ImportGltf, EveryPerspectiveCameraIsKeptTheChosenFirst) {
+    TempDir dir;
+    GltfFixture f;
+    f.nodes = R"([{"mesh": 0, "children": [1, 2, 3]}, {"camera": 0, "translation": [0, 0, 5]},
+                  {"camera": 1, "translation": [5, 0, 0]}, {"camera": 2}])";
+    f.extra = R"(, "cameras": [{"type": "perspective", "name": "front", "perspective": {"yfov": 0.5, "znear": 0.1}},
+        {"type": "perspective", "name": "side", "perspective": {"yfov": 0.7, "aspectRatio": 1, "znear": 0.1}},
+        {"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}}])";
+    const std::string path = dir.write("cameras.gltf", f.json());
+    const ImportResult first = importScene(path);
+    EXPECT_EQ(first.scene.camera.name, "front");
+    ASSERT_EQ(first.scene.extraCameras.size(), 1u);
+    EXPECT_EQ(first.scene.extraCameras[0].name, "side");
+    expectNear(first.scene.extraCameras[0].origin, {5, 0, 0}, kLoose);
+    EXPECT_NEAR(*first.scene.extraCameras[0].fovDegrees, 0.7 * 180 / kPi, 1e-3);
+    ImportOptions o;
+    o.camera = "side";
+    const ImportResult side = importScene(path, o);
+    EXPECT_EQ(side.scene.camera.name, "side");
+    ASSERT_EQ(side.scene.extraCameras.size(), 1u);
+    EXPECT_EQ(side.scene.extraCameras[0].name, "front");
+}
+
 // issue-261.gltf: camera and point light under matrix transforms; the light's intensity 1000
 // becomes colour 1 (rt lights have no falloff, only ratios are kept).
 TEST(ImportGltf, PointLightAndCameraOfIssue261) {

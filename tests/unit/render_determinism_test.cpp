@@ -39,6 +39,7 @@ TEST(RenderDeterminism, OneAndTwoThreadsGiveTheSameBits) {
     ASSERT_EQ(a.pixels().size(), b.pixels().size());
     for (std::size_t i = 0; i < a.pixels().size(); ++i)
         ASSERT_TRUE(sameBits(a.pixels()[i], b.pixels()[i])) << "pixel " << i;
+    EXPECT_EQ(a.alphas(), b.alphas());
     EXPECT_EQ(one.counters.rays(), two.counters.rays());
     EXPECT_EQ(one.counters.total().intersectionTests, two.counters.total().intersectionTests);
     EXPECT_EQ(two.threads, 2);
@@ -59,7 +60,10 @@ TEST(RenderDeterminism, FourRegionsEqualTheFullRender) {
         EXPECT_EQ(tile.window(), w);
         EXPECT_EQ(tile.pixels().size(), std::size_t(w.width() * w.height()));
         for (int y = w.y0; y < w.y1; ++y)
-            for (int x = w.x0; x < w.x1; ++x) ASSERT_TRUE(sameBits(tile.at(x, y), full.at(x, y))) << x << "," << y;
+            for (int x = w.x0; x < w.x1; ++x) {
+                ASSERT_TRUE(sameBits(tile.at(x, y), full.at(x, y))) << x << "," << y;
+                ASSERT_EQ(tile.alphaAt(x, y), full.alphaAt(x, y)) << x << "," << y;
+            }
     }
 }
 

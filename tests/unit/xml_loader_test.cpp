@@ -245,16 +245,28 @@ TEST(XmlLoader, CameraFocalDistanceZoomAndUp) {
     EXPECT_EQ(*f.camera.focalDistance, 800);
     EXPECT_FALSE(f.camera.fovDegrees);
     EXPECT_EQ(f.camera.up, Vec3(1, 0, 1));
-    EXPECT_EQ(f.camera.focalPixels(640), 400);
+    EXPECT_EQ(f.camera.focalPixels(kReferenceWidth), 400);  // f is in pixels of an 800-pixel-wide picture
     // Neither fov nor f: the distance from origin to destination (thesis 3.4.2).
     const Scene d = loadSceneXmlFromString(R"(<scene><camera><origin x="1"/><destination x="1" z="-3"/>
         </camera></scene>)", "s.xml", ".");
-    EXPECT_EQ(d.camera.focalPixels(640), 3);
+    EXPECT_EQ(d.camera.focalPixels(kReferenceWidth), 3);
     EXPECT_EQ(d.camera.zoom, 100);
     // fov is the horizontal angle: f = w / (2 tan(fov/2)).
     const Scene fov = loadSceneXmlFromString(R"(<scene><camera fov="90"><origin/><destination z="1"/>
         </camera></scene>)", "s.xml", ".");
     EXPECT_NEAR(fov.camera.focalPixels(640), 320, 1e-3);
+}
+
+TEST(XmlLoader, SeveralNamedCamerasTheFirstRendered) {
+    const Scene s = loadSceneXmlFromString(R"(<scene><camera name="front"><origin/><destination z="1"/></camera>
+        <camera name="side" fov="30"><origin x="5"/><destination/></camera>
+        <camera><origin y="5"/><destination/><up z="1"/></camera></scene>)", "s.xml", ".");
+    EXPECT_EQ(s.camera.name, "front");
+    ASSERT_EQ(s.extraCameras.size(), 2u);
+    EXPECT_EQ(s.extraCameras[0].name, "side");
+    EXPECT_EQ(s.extraCameras[0].fovDegrees, Real(30));
+    EXPECT_EQ(s.extraCameras[1].name, "");
+    EXPECT_EQ(s.extraCameras[1].origin, Vec3(0, 5, 0));
 }
 
 TEST(XmlLoader, BackgroundAndLights) {
@@ -378,7 +390,9 @@ const BadScene kBadScenes[] = {
     {"unknown model type", sceneWith("<models>\n<model name=\"s\" file=\"x.obj\"/></models>"),
      "s.xml:4: <model> needs type=\"raw\" or type=\"3ds\" (the file name does not tell)"},
     {"no camera", "<scene>\n</scene>", "s.xml:1: <scene> needs a <camera>"},
-    {"second camera", sceneWith("<camera/>"), "s.xml:3: a second <camera> in <scene>"},
+    {"two cameras of one name",
+     sceneWith("<camera name=\"a\"><origin/><destination z=\"1\"/></camera>\n<camera name=\"a\"/>"),
+     "s.xml:4: duplicate camera 'a' (first defined on line 3)"},
     {"camera without destination", "<scene><camera>\n<origin/></camera></scene>",
      "s.xml:1: <camera> needs <origin> and <destination>"},
     {"camera looking nowhere", "<scene><camera><origin/><destination/></camera></scene>",

@@ -179,6 +179,25 @@ TEST(XmlWriter, NamesAreMadeUniqueAndSafe) {
     expectSamePrimitives(scene.primitives, back.primitives);
 }
 
+TEST(XmlWriter, EveryCameraIsWrittenTheFirstFirstAndAllNamed) {
+    Scene scene;
+    scene.camera.name = "main";
+    scene.camera.focalDistance = 700;
+    for (const char* name : {"", "main"}) {
+        scene.extraCameras.emplace_back().name = name;
+        scene.extraCameras.back().origin = {1, 2, 3};
+    }
+    const Scene back = loadSceneXmlFromString(savedToStdout(scene), "<stdin>", ".");
+    EXPECT_EQ(back.camera.name, "main");
+    EXPECT_EQ(back.camera.focalDistance, Real(700));
+    ASSERT_EQ(back.extraCameras.size(), 2u);
+    EXPECT_EQ(back.extraCameras[0].name, "camera");  // several cameras: each can be picked by name
+    EXPECT_EQ(back.extraCameras[1].name, "main-2");
+    EXPECT_EQ(back.extraCameras[1].origin, Vec3(1, 2, 3));
+    Scene one;  // one unnamed camera stays unnamed, as the thesis wrote it
+    EXPECT_EQ(savedToStdout(one).find("name="), std::string::npos);
+}
+
 TEST(XmlWriter, ModelFolderFollowsTheXmlName) {
     EXPECT_EQ(modelFolderFor("out/scene.xml"), "out/scene");
     EXPECT_EQ(modelFolderFor("scene"), "scene.models");

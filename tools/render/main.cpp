@@ -14,13 +14,16 @@ namespace {
 using rt::AccelKind;
 using rt::tool::addNamedOption;
 using rt::tool::render::RenderOptions;
+using rt::tool::numberIn;
 
 void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Rendering options";
     app.add_option("-o,--output", o.outputType,
                    "Output type (default: -f's extension; neither -o nor -f: null)")
         ->check(CLI::IsMember(rt::imageFormatNames()))->group(group);
-    app.add_option("-f,--file", o.outputPath, "Output file; - for standard output")->group(group);
+    app.add_option("-f,--file", o.outputPaths,
+                   "Output file; - for standard output; several -f write each from one render")
+        ->allow_extra_args(false)->group(group);
     AccelKind& kind = o.accel.kind;  // the KD tree; the thesis's program used the naive list unless -B or -K
     auto* bsp = app.add_flag_callback("-B,--bsp", [&kind] { kind = AccelKind::Bsp; }, "Use the BSP tree")->group(group);
     auto* kd = app.add_flag_callback("-K,--kd", [&kind] { kind = AccelKind::Kd; }, "Use the KD tree")->group(group);
@@ -30,6 +33,24 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
         ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
+    app.add_option("--seed", o.render.seed,
+                   "Random seed of the samples: another seed, independent noise (default 0, always the same)")
+        ->capture_default_str()->group(group);
+}
+
+void addCameraOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Camera options (applied in this order)";
+    app.add_option("--camera", o.camera, "The scene's camera to render: its name or number (0 is the first)")
+        ->group(group);
+    app.add_option("--look-from", o.lookFrom, "Camera origin X,Y,Z (the lens stays)")->group(group);
+    app.add_option("--look-at", o.lookAt, "Camera destination X,Y,Z")->group(group);
+    app.add_option("--up", o.up, "Camera up vector X,Y,Z")->group(group);
+    app.add_option("--fov", o.fov, "Horizontal field of view in degrees (replaces f and zoom)")
+        ->check(CLI::Range(0.0, 180.0))->group(group);
+    app.add_flag("--frame", o.frame, "Move the camera along its view to fit the scene's bounding sphere")->group(group);
+    app.add_option("--orbit", o.orbit, "Render N frames around the look-at point to -f out_####.png")
+        ->check(numberIn(1, 1000000))->group(group);
+    app.add_option("--frames", o.frames, "Render only frames A..B of --orbit (both included)")->group(group);
 }
 
 void addImageOptions(CLI::App& app, RenderOptions& o) {
@@ -44,7 +65,21 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
     addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")
         ->group(group);
+    app.add_option("--alpha", o.alpha,
+                   "Alpha channel (coverage): on or off (default: on for PNG, EXR and TGA; EXR premultiplied, "
+                   "PNG and TGA straight)")
+        ->check(CLI::IsMember({"on", "off"}))->group(group);
+    app.add_option("--aov", o.aovs,
+                   "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, or all")
+        ->group(group);
     app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember(rt::kPngBits))
+        ->capture_default_str()->group(group);
+    app.add_option("--tiff-bits", o.tiffBits, "TIFF bits per channel: 8 or 16 (display-referred), 32 (float, linear)")
+        ->check(CLI::IsMember({8, 16, 32}))->capture_default_str()->group(group);
+    app.add_option("--jpeg-quality", o.jpegQuality, "JPEG quality, 1-100")->check(numberIn(1, 100))
+        ->capture_default_str()->group(group);
+    app.add_option("--exr-compression", o.exrCompression, "EXR compression")
+        ->check(CLI::IsMember({"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"}))
         ->capture_default_str()->group(group);
 }
 
@@ -72,6 +107,7 @@ int main(int argc, char** argv) {
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")->required();
     rt::tool::addPictureOptions(app, options.render);
     addRenderingOptions(app, options);
+    addCameraOptions(app, options);
     rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);
     addOtherOptions(app, options);

@@ -1,5 +1,7 @@
 #include "render_command.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <vector>
@@ -25,28 +27,92 @@ PixelWindow parseRegion(const std::string& text) {
     return w;
 }
 
+Vec3 parseVector(const std::string& option, const std::string& text) {
+    double v[3];
+    int used = -1;
+    if (std::sscanf(text.c_str(), "%lf,%lf,%lf%n", &v[0], &v[1], &v[2], &used) != 3 || used != int(text.size()) ||
+        !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])))
+        throw InputError(option + ": expected X,Y,Z (three numbers), got '" + text + "'");
+    return {Real(v[0]), Real(v[1]), Real(v[2])};
+}
+
+FrameRange parseFrames(const std::optional<std::string>& frames, int orbit) {
+    if (!frames) return {0, std::max(orbit, 1) - 1};
+    if (orbit < 1) throw InputError("--frames needs --orbit N: it picks frames of the orbit");
+    FrameRange r;
+    int used = -1;
+    const int fields = std::sscanf(frames->c_str(), "%d..%d%n", &r.first, &r.last, &used);
+    if (fields == 1 && std::to_string(r.first) == *frames) r.last = r.first;  // one frame: --frames 7
+    else if (fields != 2 || used != int(frames->size()))
+        throw InputError("--frames: expected A..B (frame numbers, both included), got '" + *frames + "'");
+    if (r.first < 0 || r.last < r.first || r.last >= orbit)
+        throw InputError("--frames " + *frames + ": the orbit's frames are 0.." + std::to_string(orbit - 1) +
+                         ", and A must not exceed B");
+    return r;
+}
+
+std::string framePath(const std::string& path, int frame) {
+    const std::size_t end = path.find_last_of('#');
+    if (end == std::string::npos) return path;
+    const std::size_t begin = path.find_last_not_of('#', end) + 1;  // npos + 1 == 0: all '#'
+    std::string number = std::to_string(frame);
+    if (number.size() < end + 1 - begin) number.insert(0, end + 1 - begin - number.size(), '0');
+    return path.substr(0, begin) + number + path.substr(end + 1);
+}
+
 namespace {
 
-// The format follows -o and -f (chooseImageFormat); -p renders nothing, so it writes nothing.
-ImageOutputSettings outputSettings(const RenderOptions& o) {
+// One output: the format follows -o and -f (chooseImageFormat); -p renders nothing, so it writes nothing.
+ImageOutputSettings outputSettings(const RenderOptions& o, const std::optional<std::string>& path) {
     ImageOutputSettings s;
     s.color = o.color;
     s.exrPixels = o.exrPixels;
     s.pngBits = o.pngBits;
-    s.path = o.outputPath.value_or("");
+    s.tiffBits = o.tiffBits;
+    s.jpegQuality = o.jpegQuality;
+    s.exrCompression = o.exrCompression;
+    s.path = path.value_or("");
     if (o.preprocessOnly) return s;
-    if (o.outputPath) checkNotDirectory(*o.outputPath);  // before its extension is looked at
-    s.format = chooseImageFormat(o.outputType, o.outputPath);
-    if (s.format == ImageFormat::Text && !o.outputPath) s.path = std::string(1, '-');  // text goes to the terminal
+    if (path) checkNotDirectory(*path);  // before its extension is looked at
+    s.format = chooseImageFormat(o.outputType, path);
+    if (s.format == ImageFormat::Text && !path) s.path = std::string(1, '-');  // text goes to the terminal
     if (s.format != ImageFormat::Null && s.path.empty())
         throw InputError(std::string(imageFormatName(s.format)) + " output needs -f FILE");
+    s.alpha = o.alpha ? *o.alpha == "on" : imageFormatHasAlpha(s.format);
+    if (s.alpha && !imageFormatHasAlpha(s.format) && s.format != ImageFormat::Null)
+        throw InputError(std::string("--alpha on: ") + imageFormatName(s.format) + " output has no alpha channel");
+    if (o.aovs && s.format == ImageFormat::Exr) s.aovs = parseAovList(*o.aovs);
     return s;
 }
 
+// Every -f, written from one render (or the one output -o alone gives, or null).
+std::vector<ImageOutputSettings> outputSettings(const RenderOptions& o) {
+    std::vector<ImageOutputSettings> outputs;
+    if (o.outputPaths.empty()) outputs.push_back(outputSettings(o, std::nullopt));
+    for (const std::string& path : o.outputPaths) outputs.push_back(outputSettings(o, path));
+    const bool anyExr = std::any_of(outputs.begin(), outputs.end(),
+                                    [](const ImageOutputSettings& s) { return s.format == ImageFormat::Exr; });
+    if (o.aovs && !anyExr && !o.preprocessOnly) throw InputError("--aov needs an EXR output (-f out.exr)");
+    return outputs;
+}
+
+// Every frame of a turntable needs a file of its own: the names carry the frame number.
+void checkFrameNames(const RenderOptions& o, const ImageOutputSettings& output) {
+    if (o.orbit < 1) return;
+    const auto needsNumber = [](const std::string& path) { return path != "-" && path.find('#') == std::string::npos; };
+    if (output.format != ImageFormat::Null && needsNumber(output.path))
+        throw InputError("--orbit: -f " + output.path + " needs #### where the frame number goes (out_####.png)");
+    if (o.statsJson && needsNumber(*o.statsJson))
+        throw InputError("--orbit: --stats-json " + *o.statsJson + " needs #### where the frame number goes");
+    if (output.format != ImageFormat::Null && output.path == "-" && o.orbit > 1)
+        throw InputError("--orbit: several pictures cannot all go to standard output");
+}
+
 // Two outputs on standard output would be concatenated into one unusable stream.
-void checkOneStandardOutput(const RenderOptions& o, const ImageOutputSettings& output) {
+void checkOneStandardOutput(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs) {
     std::vector<std::string> users;
-    if (output.format != ImageFormat::Null && output.path == "-") users.push_back("the image");
+    for (const ImageOutputSettings& output : outputs)
+        if (output.format != ImageFormat::Null && output.path == "-") users.push_back("the image");
     if (o.statsLine) users.push_back("-b");
     if (o.statsJson == "-") users.push_back("--stats-json -");
     if (users.size() > 1)
@@ -55,11 +121,34 @@ void checkOneStandardOutput(const RenderOptions& o, const ImageOutputSettings& o
 
 // Every problem with the outputs is found before the scene is loaded: bad colour names
 // (whatever the output type), a file that cannot be written; missing folders are created.
-void prepareOutputs(const RenderOptions& o, const ImageOutputSettings& output) {
-    checkOneStandardOutput(o, output);
-    ColorPipeline check(output.color);
-    if (output.format != ImageFormat::Null) prepareOutputFile(output.path);
-    if (o.statsJson) prepareOutputFile(*o.statsJson);
+void prepareOutputs(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs, int firstFrame) {
+    checkOneStandardOutput(o, outputs);
+    ColorPipeline check(o.color);
+    for (const ImageOutputSettings& output : outputs) {
+        checkFrameNames(o, output);
+        if (output.format != ImageFormat::Null) prepareOutputFile(framePath(output.path, firstFrame));
+    }
+    if (o.statsJson) prepareOutputFile(framePath(*o.statsJson, firstFrame));
+}
+
+CameraOverrides cameraOverrides(const RenderOptions& o) {
+    CameraOverrides c;
+    if (o.lookFrom) c.lookFrom = parseVector("--look-from", *o.lookFrom);
+    if (o.lookAt) c.lookAt = parseVector("--look-at", *o.lookAt);
+    if (o.up) c.up = parseVector("--up", *o.up);
+    if (o.fov) c.fovDegrees = Real(*o.fov);
+    c.frame = o.frame;
+    return c;
+}
+
+// The scene with the camera the options ask for: --camera picks one, the overrides change it.
+Scene loadWithCamera(const RenderOptions& o) {
+    ImportOptions import;
+    import.camera = o.camera.value_or("");
+    import.aspect = double(o.render.width) / double(o.render.height);
+    Scene scene = loadScene(o.scenePath, import);
+    applyOverrides(scene.camera, cameraOverrides(o), scene.primitives.bounds(), Real(import.aspect));
+    return scene;
 }
 
 std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSettings& settings, ProgressMode progress,
@@ -92,41 +181,61 @@ std::string outputNote(const RenderOptions& o, const ImageOutputSettings& output
            "write the picture with -f out.png or -f out.exr\n";
 }
 
+// Renders one picture (a turntable's frame `frame`) once and writes every output of it.
+void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& accel, const TreeReport& tree,
+                 const std::vector<ImageOutputSettings>& outputs, int frame, ProgressMode progress,
+                 RenderStats& stats) {
+    std::vector<ImageOutputSettings> frameOutputs = outputs;
+    for (ImageOutputSettings& out : frameOutputs) out.path = framePath(out.path, frame);
+    if (!o.preprocessOnly) {
+        const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats);
+        const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
+                                 stats.renderSeconds};
+        for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
+        std::cerr << nonFiniteWarning(stats);  // even with -q: a replaced sample is never silent
+    }
+    if (!o.quiet) {
+        std::cerr << statsSummary(o.render, tree.stats, stats, !o.preprocessOnly);
+        for (const ImageOutputSettings& out : frameOutputs) std::cerr << outputNote(o, out);
+    }
+    if (o.statsLine) std::cout << thesisStatsLine(stats) << std::endl;
+    if (o.statsJson) {
+        const SceneSummary summary = summarizeScene(o.scenePath, scene);
+        writeFileAtomically(framePath(*o.statsJson, frame),
+                            [&](std::ostream& out) { writeStatsJson(out, summary, o.render, tree, stats); });
+    }
+}
+
 }  // namespace
 
 int runRender(RenderOptions o) {
     if (o.region) o.render.region = parseRegion(*o.region);
     validate(o.render);
-    const ImageOutputSettings output = outputSettings(o);
-    prepareOutputs(o, output);
+    const FrameRange frames = parseFrames(o.frames, o.orbit);
+    const std::vector<ImageOutputSettings> outputs = outputSettings(o);
+    o.render.aovs = std::any_of(outputs.begin(), outputs.end(), [](const ImageOutputSettings& s) { return !s.aovs.empty(); });
+    prepareOutputs(o, outputs, frames.first);
     const ProgressMode progress = progressMode(o.progress, o.quiet);
 
-    Scene scene = loadScene(o.scenePath);
+    Scene scene = loadWithCamera(o);
     scene.dropDescription();
+    if (!o.quiet)
+        for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;
-    const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);
+    const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);  // once for every frame
     const TreeReport tree{o.accel, accel->stats(), std::uint32_t(scene.primitives.size()), {}, {}};
     const AccelStats& accelStats = tree.stats;
     stats.treeNodes = accelStats.nodes;
     stats.objects = scene.primitives.size();
     stats.lights = scene.lights.size();
 
-    if (!o.preprocessOnly) {
-        const Framebuffer image = renderShowingProgress(scene, *accel, o.render, progress, stats);
-        const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
-                                 stats.renderSeconds};
-        writeImage(image, output, meta);
-        std::cerr << nonFiniteWarning(stats);  // even with -q: a replaced sample is never silent
-    }
-
-    if (!o.quiet) {
-        for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
-        std::cerr << statsSummary(o.render, accelStats, stats, !o.preprocessOnly) << outputNote(o, output);
-    }
-    if (o.statsLine) std::cout << thesisStatsLine(stats) << std::endl;
-    if (o.statsJson) {
-        const SceneSummary summary = summarizeScene(o.scenePath, scene);
-        writeFileAtomically(*o.statsJson, [&](std::ostream& out) { writeStatsJson(out, summary, o.render, tree, stats); });
+    const Camera camera = scene.camera;
+    for (int frame = frames.first; frame <= frames.last; ++frame) {
+        if (o.orbit > 0) {
+            scene.camera = orbited(camera, Real(360) * Real(frame) / Real(o.orbit));
+            announce(progress, "frame " + std::to_string(frame) + " of 0.." + std::to_string(o.orbit - 1));
+        }
+        renderFrame(o, scene, *accel, tree, outputs, frame, progress, stats);
     }
     return 0;
 }

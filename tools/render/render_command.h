@@ -4,8 +4,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "accel/settings.h"
+#include "core/vec3.h"
 #include "image/image_output.h"
 #include "progress.h"
 #include "render/render_settings.h"
@@ -15,9 +17,12 @@ namespace rt::tool::render {
 struct RenderOptions {
     std::string scenePath;                // a file, or "-" for standard input
     std::optional<std::string> outputType;  // -o: null png exr tga text; else from -f's extension
-    std::optional<std::string> outputPath;  // -f
+    std::vector<std::string> outputPaths;  // -f, any number: one render, each file written from it
     ExrPixelType exrPixels = ExrPixelType::Half;  // --exr-pixels half|float
     int pngBits = 8;                      // --png-bits 8|16
+    int tiffBits = 8;                     // --tiff-bits 8|16|32
+    int jpegQuality = 90;                 // --jpeg-quality 1-100
+    std::string exrCompression = "zip";   // --exr-compression
     ColorSettings color;
     RenderSettings render;
     AccelSettings accel;                  // kind Kd unless -B or --accel says otherwise
@@ -27,7 +32,29 @@ struct RenderOptions {
     bool statsLine = false;               // -b
     bool preprocessOnly = false;          // -p
     std::optional<std::string> statsJson;  // --stats-json FILE ("-" is standard output)
+    std::optional<std::string> alpha;      // --alpha on|off; default on where the format has alpha
+    std::optional<std::string> aovs;       // --aov LIST: AOV layers in the EXR (render/aov.h)
+    // The camera: --camera NAME|INDEX, then --look-from, --look-at, --up (X,Y,Z), --fov, --frame.
+    std::optional<std::string> camera;
+    std::optional<std::string> lookFrom, lookAt, up;
+    std::optional<double> fov;
+    bool frame = false;
+    int orbit = 0;                      // --orbit N: N frames around the look-at point; 0 is one picture
+    std::optional<std::string> frames;  // --frames A..B: only frames A to B (inclusive) of the orbit
 };
+
+// "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.
+Vec3 parseVector(const std::string& option, const std::string& text);
+
+// The frames --orbit N with --frames A..B renders: first..last, inclusive.
+struct FrameRange {
+    int first = 0, last = 0;
+};
+FrameRange parseFrames(const std::optional<std::string>& frames, int orbit);
+
+// The output path of one frame: the last run of '#' in `path` replaced by the frame number,
+// padded with zeros to its length (Blender's convention: out_####.png, frame 7: out_0007.png).
+std::string framePath(const std::string& path, int frame);
 
 // "x0,y0,x1,y1" with x1 and y1 exclusive; throws rt::InputError if it is not four integers.
 PixelWindow parseRegion(const std::string& text);

@@ -1,0 +1,49 @@
+// AOVs (arbitrary output variables): what each pixel's camera rays found, written beside its
+// colour into one multi-channel EXR, named layer.channel as OpenImageIO and compositors expect
+// (`oiiotool --ch N.X,N.Y,N.Z`). Supersampling averages Z, N, Ng, P, albedo and cost over the
+// camera samples (Z, N, Ng, P and albedo over those that hit something); the ids are the first
+// sample's. The cost layer is rt-inspect's heat map as data: the traversal steps and
+// intersection tests of the pixel's camera rays, and of every ray they spawned.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/color.h"
+
+namespace rt {
+
+enum class Aov { Z, N, Ng, P, Albedo, Id, Cost };
+
+struct AovLayer {
+    Aov aov;
+    const char* name;                   // as --aov names it
+    std::vector<const char*> channels;  // EXR channel names
+    bool integer;                       // uint32 channels (ids), else float
+};
+
+// Every AOV, in the order the channels are written.
+const std::vector<AovLayer>& aovLayers();
+
+// "Z,N,cost" or "all" as the list of AOVs, in aovLayers() order; throws rt::InputError
+// naming an unknown one.
+std::vector<Aov> parseAovList(const std::string& list);
+
+// The id of nothing: a sample that hit no primitive.
+inline constexpr std::uint32_t kNoId = 0xffffffffu;
+
+// One pixel's AOVs, as the renderer fills them.
+struct PixelAovs {
+    float z = 0;                    // distance along the camera ray; +inf where no sample hit
+    float n[3] = {}, ng[3] = {}, p[3] = {};
+    Color albedo;
+    std::uint32_t material = kNoId, primitive = kNoId;
+    float steps = 0, tests = 0;        // per camera ray: its own traversal steps and tests
+    float allSteps = 0, allTests = 0;  // per camera ray: with every shadow and reflection ray it spawned
+};
+
+// The float values of `aov` for a pixel, in the order of its channels (not for Aov::Id).
+std::vector<float> aovValues(const PixelAovs& pixel, Aov aov);
+
+}  // namespace rt
