@@ -8,18 +8,6 @@ namespace rt {
 
 namespace {
 
-// The axis as a unit vector and a length.
-struct Axis {
-    Vec3 w;
-    Real height;
-};
-
-Axis axisOf(const Frustum& f) {
-    const Vec3 d = f.top - f.base;
-    const Real h = length(d);
-    return {d / h, h};
-}
-
 // Bounds of a disc: centre c, unit normal w, radius r.
 Aabb discBounds(const Vec3& c, const Vec3& w, Real r) {
     Vec3 e;
@@ -42,15 +30,10 @@ void perpendiculars(const Vec3& w, Vec3& a, Vec3& b) {
     b = cross(w, a);
 }
 
-// Keeps the nearer of a candidate hit t and the best so far.
-void keepNearer(Real t, Real u, Real tMax, Real& best, Real& bestU) {
-    if (t > 0 && t < tMax && t < best) best = t, bestU = u;
-}
-
 }  // namespace
 
 Aabb Frustum::bounds() const {
-    const Vec3 w = axisOf(*this).w;
+    const Vec3 w = axis().w;
     Aabb b = discBounds(base, w, baseRadius);
     b.extend(discBounds(top, w, topRadius));
     return padded(b);
@@ -63,7 +46,7 @@ Real Frustum::area() const {
 }
 
 Vec3 Frustum::normal(const Vec3& point) const {
-    const auto [w, height] = axisOf(*this);
+    const auto [w, height] = axis();
     const Vec3 q = point - base;
     const Real h = dot(q, w);
     const Vec3 radial = q - w * h;
@@ -77,7 +60,7 @@ Vec3 Frustum::normal(const Vec3& point) const {
 }
 
 Vec3 Frustum::surfacePoint(Real u, Real v) const {
-    const auto [w, height] = axisOf(*this);
+    const auto [w, height] = axis();
     Vec3 a, b;
     perpendiculars(w, a, b);
     const Real phi = 2 * kPi * v;
@@ -92,54 +75,12 @@ bool Frustum::degenerate() const {
 }
 
 bool Frustum::containsPoint(const Vec3& p) const {
-    const auto [w, height] = axisOf(*this);
+    const auto [w, height] = axis();
     const Vec3 q = p - base;
     const Real h = dot(q, w);
     if (h < 0 || h > height) return false;
     const Real r = baseRadius + (topRadius - baseRadius) * (h / height);
     return dot(q - w * h, q - w * h) <= r * r;
-}
-
-bool intersect(const Frustum& f, const Ray& ray, Real tMax, Hit& hit) {
-    const auto [w, height] = axisOf(f);
-    const Real slope = (f.topRadius - f.baseRadius) / height;
-    const Vec3 q0 = ray.origin - f.base;
-    const Real h0 = dot(q0, w), dh = dot(ray.direction, w);
-    // Off-axis parts of the origin and the direction: the side is |P + t D| = r(h(t)).
-    const Vec3 P = q0 - w * h0, D = ray.direction - w * dh;
-    const Real r0 = f.baseRadius + slope * h0, dr = slope * dh;
-    Real best = tMax, bestU = 0;
-    auto sideAt = [&](Real t) {
-        const Real h = h0 + t * dh;
-        if (h >= 0 && h <= height) keepNearer(t, h / height, tMax, best, bestU);
-    };
-    const Real a = dot(D, D) - dr * dr, b = 2 * (dot(P, D) - r0 * dr), c = dot(P, P) - r0 * r0;
-    const Real disc = b * b - 4 * a * c;
-    if (a != 0 && disc >= 0) {
-        // The stable form: no cancellation between -b and the root.
-        const Real q = Real(-0.5) * (b + std::copysign(std::sqrt(disc), b));
-        sideAt(q / a);
-        if (q != 0) sideAt(c / q);
-    } else if (a == 0 && b != 0) {
-        sideAt(-c / b);  // parallel to a line of the cone: one crossing
-    }
-    if (dh != 0) {
-        for (const auto& [capH, radius] : {std::pair{Real(0), f.baseRadius}, std::pair{height, f.topRadius}}) {
-            const Real t = (capH - h0) / dh;
-            const Vec3 off = P + D * t;
-            if (dot(off, off) <= radius * radius) keepNearer(t, capH / height, tMax, best, bestU);
-        }
-    }
-    if (!(best < tMax)) return false;
-    hit.t = best;
-    hit.u = bestU;
-    hit.v = 0;
-    return true;
-}
-
-bool intersectsAny(const Frustum& f, const Ray& ray, Real tMax) {
-    Hit scratch;
-    return intersect(f, ray, tMax, scratch);
 }
 
 Aabb clippedBounds(const Frustum& f, const Aabb& box) {
@@ -149,7 +90,7 @@ Aabb clippedBounds(const Frustum& f, const Aabb& box) {
                                             (i & 4 ? box.hi : box.lo).z});
     if (allCornersInside) return {};  // the solid is convex: the box lies inside, off the surface
     constexpr int kSlabs = 8;
-    const Vec3 w = axisOf(f).w;
+    const Vec3 w = f.axis().w;
     Aabb result;  // empty
     for (int s = 0; s < kSlabs; ++s) {
         const Real u0 = Real(s) / kSlabs, u1 = Real(s + 1) / kSlabs;
