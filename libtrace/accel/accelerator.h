@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/aabb.h"
@@ -47,15 +48,20 @@ struct AccelStats {
     double bytesPerPrimitive() const { return primitives ? double(memoryBytes) / double(primitives) : 0; }
 };
 
+// An axis-aligned plane that splits a node of a BSP or KD tree.
+struct SplitPlane {
+    int axis = 0;       // 0-2
+    Real position = 0;  // along the axis
+};
+
 // One node of a tree as a tool sees it (rt-inspect's dumps and histograms).
 struct TreeNodeInfo {
     std::uint32_t id = 0;      // pre-order index; the root is 0
     std::uint32_t depth = 0;   // the root has depth 0
-    Aabb bounds;               // the node's voxel
+    Aabb bounds;               // the node's voxel (or, in a bounding volume hierarchy, its box)
     bool leaf = true;
-    int axis = -1;             // split axis 0-2 of an inner node
-    Real split = 0;            // split position of an inner node
-    std::uint32_t primitives = 0;  // primitive references of a leaf
+    std::optional<SplitPlane> plane;  // of an inner node of a tree that splits by planes
+    std::uint32_t primitives = 0;     // primitive references of a leaf
 };
 
 class Accelerator {

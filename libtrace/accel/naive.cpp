@@ -4,10 +4,11 @@ namespace rt {
 
 bool NaiveAccelerator::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     const std::uint32_t n = prims_.size();
+    const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     counters.intersectionTests += n;
     bool found = false;
     for (std::uint32_t id = 0; id < n; ++id) {
-        if (prims_.intersect(id, ray, tMax, hit)) {
+        if (prims.intersect(id, ray, tMax, hit)) {
             tMax = hit.t;
             found = true;
         }
@@ -17,9 +18,10 @@ bool NaiveAccelerator::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounter
 
 bool NaiveAccelerator::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     const std::uint32_t n = prims_.size();
+    const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     for (std::uint32_t id = 0; id < n; ++id) {
         ++counters.intersectionTests;
-        if (prims_.intersectsAny(id, ray, tMax)) return true;
+        if (prims.intersectsAny(id, ray, tMax)) return true;
     }
     return false;
 }

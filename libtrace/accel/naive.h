@@ -8,7 +8,7 @@ namespace rt {
 
 class NaiveAccelerator final : public Accelerator {
 public:
-    explicit NaiveAccelerator(const Primitives& prims) : prims_(prims) {}
+    explicit NaiveAccelerator(const Primitives& prims) : prims_(prims), view_(prims.view()) {}
 
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
@@ -17,6 +17,7 @@ public:
 
 private:
     const Primitives& prims_;
+    PrimitiveView view_;  // of prims_, which must not change while the list is used
 };
 
 }  // namespace rt

@@ -23,6 +23,7 @@ void FlatTree::append(const FlatTree& subtree) {
 
 SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs)
     : prims_(prims),
+      view_(prims.view()),
       bounds_(bounds),
       nodes_(std::move(tree.nodes)),
       primitiveIndices_(std::move(tree.primitiveIndices)) {
@@ -54,6 +55,7 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     int size = 0;
     std::uint32_t index = 0;
     std::uint64_t steps = 0;  // in a register; added to the caller's counters once
+    const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     for (;;) {
         if (tLimit < tMin) break;
         ++steps;
@@ -83,7 +85,7 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
             }
             continue;
         }
-        if (visitLeaf(&primitiveIndices_[node.primitiveOffset()], node.primitiveCount()) || size == 0) break;
+        if (visitLeaf(prims, &primitiveIndices_[node.primitiveOffset()], node.primitiveCount()) || size == 0) break;
         --size;
         index = stack[size].node;
         tMin = stack[size].tMin;
@@ -95,22 +97,23 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;
-    bool found = false;
-    traverse(ray, tMax, nearest.t, counters, [&](const std::uint32_t* ids, std::uint32_t count) {
+    traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
         counters.intersectionTests += count;
-        for (std::uint32_t i = 0; i < count; ++i) found |= prims_.intersect(ids[i], ray, nearest.t, nearest);
+        for (std::uint32_t i = 0; i < count; ++i) prims.intersect(ids[i], ray, nearest.t, nearest);
         return false;  // a nearer hit may still lie in a later node; traverse() knows when not
     });
-    if (found) hit = nearest;
-    return found;
+    // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
+    if (!(nearest.t < tMax)) return false;
+    hit = nearest;
+    return true;
 }
 
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     bool found = false;
-    traverse(ray, tMax, tMax, counters, [&](const std::uint32_t* ids, std::uint32_t count) {
+    traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
         for (std::uint32_t i = 0; i < count; ++i) {
             ++counters.intersectionTests;
-            if (prims_.intersectsAny(ids[i], ray, tMax)) return found = true;
+            if (prims.intersectsAny(ids[i], ray, tMax)) return found = true;
         }
         return false;
     });
@@ -136,11 +139,10 @@ void SplitTree::forEachNode(const std::function<void(const TreeNodeInfo&)>& visi
         if (node.isLeaf()) {
             info.primitives = node.primitiveCount();
         } else {
-            info.axis = node.axis();
-            info.split = node.split();
+            info.plane = SplitPlane{node.axis(), node.split()};
             Aabb below = p.bounds, above = p.bounds;
-            below.hi[info.axis] = info.split;
-            above.lo[info.axis] = info.split;
+            below.hi[node.axis()] = node.split();
+            above.lo[node.axis()] = node.split();
             stack.push_back({node.aboveChild(), p.depth + 1, above});
             stack.push_back({p.node + 1, p.depth + 1, below});  // popped first: lower child first
         }

@@ -90,6 +90,7 @@ private:
     AccelStats computeStats(std::string name, SahCosts costs) const;
 
     const Primitives& prims_;
+    PrimitiveView view_;  // of prims_, which must not change while the tree is used
     Aabb bounds_;
     std::vector<SplitNode> nodes_;
     std::vector<std::uint32_t> primitiveIndices_;

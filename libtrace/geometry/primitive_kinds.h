@@ -24,14 +24,15 @@
 #include <utility>
 
 #include "geometry/clip.h"
+#include "geometry/frustum.h"
 #include "geometry/overlap.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 
 namespace rt {
 
-// Primitive ids run over the kinds in this order: all triangles, then all spheres.
-using PrimitiveKinds = std::tuple<Triangle, Sphere>;
+// Primitive ids run over the kinds in this order: all triangles, then all spheres, ...
+using PrimitiveKinds = std::tuple<Triangle, Sphere, Cylinder, Cone>;
 
 inline constexpr std::size_t kKindCount = std::tuple_size_v<PrimitiveKinds>;
 

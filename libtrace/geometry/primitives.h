@@ -18,6 +18,61 @@ struct KindCount {
     std::uint32_t count = 0;
 };
 
+// Where each kind's primitives and materials are: pointers and counts only, no ownership.
+// The hot loops (traversal leaves, the naive list) take a copy as a local before they
+// start. A local whose address never leaves the function stays in registers across the
+// out-of-line intersection tests of the rarer kinds, which could otherwise (as far as the
+// compiler can tell) change the vectors, so it would reload them for every test.
+class PrimitiveView {
+    template <class K>
+    struct KindSpan {
+        const K* items = nullptr;
+        const std::uint32_t* materials = nullptr;
+        std::uint32_t count = 0;
+    };
+    template <class Kinds>
+    struct SpansOf;
+    template <class... K>
+    struct SpansOf<std::tuple<K...>> {
+        using type = std::tuple<KindSpan<K>...>;
+    };
+    friend class Primitives;
+
+    // Finds the kind holding `index` (counted from the I-th kind on) and calls f(span, index in it):
+    // one comparison per kind before it, so the first kinds in the list are found first.
+    template <std::size_t I, class F>
+    decltype(auto) visitFrom(std::uint32_t index, F&& f) const {
+        const auto& span = std::get<I>(spans_);
+        if constexpr (I + 1 < kKindCount) {
+            if (index >= span.count) return visitFrom<I + 1>(index - span.count, f);
+        }
+        return f(span, index);
+    }
+
+    typename SpansOf<PrimitiveKinds>::type spans_;
+
+public:
+    // Calls f(primitive) with primitive `id` as its own type, and returns what f returns.
+    template <class F>
+    decltype(auto) visit(std::uint32_t id, F&& f) const {
+        return visitFrom<0>(id, [&](const auto& s, std::uint32_t i) -> decltype(auto) { return f(s.items[i]); });
+    }
+    std::uint32_t material(std::uint32_t id) const {
+        return visitFrom<0>(id, [](const auto& s, std::uint32_t i) { return s.materials[i]; });
+    }
+
+    // Nearest hit of primitive `id` closer than tMax; updates `hit` and returns true if found.
+    bool intersect(std::uint32_t id, const Ray& ray, Real tMax, Hit& hit) const {
+        if (!visit(id, [&](const auto& p) { return rt::intersect(p, ray, tMax, hit); })) return false;
+        hit.prim = id;
+        return true;
+    }
+    // Whether primitive `id` is hit closer than tMax (shadow rays).
+    bool intersectsAny(std::uint32_t id, const Ray& ray, Real tMax) const {
+        return visit(id, [&](const auto& p) { return rt::intersectsAny(p, ray, tMax); });
+    }
+};
+
 class Primitives {
     template <class K>
     struct KindArray {
@@ -35,16 +90,6 @@ class Primitives {
     KindArray<K>& array() { return std::get<KindArray<K>>(arrays_); }
     template <class K>
     const KindArray<K>& array() const { return std::get<KindArray<K>>(arrays_); }
-
-    // Finds the kind array holding `index` (counted from the I-th kind on) and calls f(array, index in it).
-    template <std::size_t I, class F>
-    decltype(auto) visitFrom(std::uint32_t index, F&& f) const {
-        const auto& a = std::get<I>(arrays_);
-        if constexpr (I + 1 < kKindCount) {
-            if (index >= a.items.size()) return visitFrom<I + 1>(index - std::uint32_t(a.items.size()), f);
-        }
-        return f(a, index);
-    }
 
     // Calls f(array) for each kind's array.
     template <class F>
@@ -72,30 +117,26 @@ public:
     const std::vector<K>& all() const { return array<K>().items; }
     std::vector<KindCount> countsPerKind() const;
 
+    // The arrays as they are now; valid until a primitive is added.
+    PrimitiveView view() const {
+        PrimitiveView v;
+        forEachKind([&]<class K>(std::type_identity<K>) {
+            const KindArray<K>& a = array<K>();
+            std::get<PrimitiveView::KindSpan<K>>(v.spans_) = {a.items.data(), a.materials.data(), count<K>()};
+        });
+        return v;
+    }
     // Calls f(primitive) with primitive `id` as its own type, and returns what f returns.
     template <class F>
     decltype(auto) visit(std::uint32_t id, F&& f) const {
-        return visitFrom<0>(id, [&](const auto& a, std::uint32_t i) -> decltype(auto) { return f(a.items[i]); });
+        return view().visit(id, std::forward<F>(f));
     }
-
-    std::uint32_t material(std::uint32_t id) const {
-        return visitFrom<0>(id, [](const auto& a, std::uint32_t i) { return a.materials[i]; });
-    }
+    std::uint32_t material(std::uint32_t id) const { return view().material(id); }
     Aabb bounds(std::uint32_t id) const {
         return visit(id, [](const auto& p) { return p.bounds(); });
     }
     Aabb bounds() const;  // of everything
 
-    // Nearest hit of primitive `id` closer than tMax; updates `hit` and returns true if found.
-    bool intersect(std::uint32_t id, const Ray& ray, Real tMax, Hit& hit) const {
-        if (!visit(id, [&](const auto& p) { return rt::intersect(p, ray, tMax, hit); })) return false;
-        hit.prim = id;
-        return true;
-    }
-    // Whether primitive `id` is hit closer than tMax (shadow rays).
-    bool intersectsAny(std::uint32_t id, const Ray& ray, Real tMax) const {
-        return visit(id, [&](const auto& p) { return rt::intersectsAny(p, ray, tMax); });
-    }
     // Unit geometric normal at a point on primitive `id`.
     Vec3 normal(std::uint32_t id, const Vec3& point) const {
         return visit(id, [&](const auto& p) { return p.normal(point); });

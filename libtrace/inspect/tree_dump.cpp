@@ -18,10 +18,12 @@ std::string axisName(int axis) { return axis >= 0 && axis < 3 ? kAxisNames[axis]
 std::string nodeLabel(const TreeNodeInfo& node, bool cutOff) {
     std::ostringstream label;
     label << '#' << node.id;
-    if (node.leaf)
+    if (node.leaf) {
         label << "\\n" << node.primitives << (node.primitives == 1 ? " primitive" : " primitives");
-    else
-        label << "\\n" << axisName(node.axis) << " = " << node.split << (cutOff ? "\\n(cut off)" : "");
+        return label.str();
+    }
+    if (node.plane) label << "\\n" << axisName(node.plane->axis) << " = " << node.plane->position;
+    if (cutOff) label << "\\n(cut off)";
     return label.str();
 }
 
@@ -88,8 +90,10 @@ void writeTreeJson(std::ostream& out, const Accelerator& accel, const TreeCut& c
             json.endObject();
             return;
         }
-        json.member("axis", axisName(node.axis));
-        json.member("split", double(node.split));
+        if (node.plane) {
+            json.member("axis", axisName(node.plane->axis));
+            json.member("split", double(node.plane->position));
+        }
         if (cut.isCutLeaf(node)) {
             json.member("cutOff", true);
             json.endObject();

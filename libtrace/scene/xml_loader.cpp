@@ -56,6 +56,10 @@ private:
     static bool isTransform(std::string_view tag);
     Transform readTransform(pugi::xml_node node) const;
     void addSphere(const XmlElement& e, const Transform& toWorld);
+    template <class K>
+    void addFrustum(const XmlElement& e, const Transform& toWorld, Real baseRadius, Real topRadius);
+    template <class K>
+    void addLoose(const K& primitive, std::uint32_t material);
     void addPolygon(const XmlElement& e, const Transform& toWorld, std::size_t corners);
     void addInstance(const XmlElement& e, const Transform& toWorld);
     std::uint32_t materialOf(const XmlElement& e);
@@ -261,6 +265,12 @@ void SceneBuilder::readObjects(pugi::xml_node parent, const Transform& toWorld, 
         const std::string_view tag = child.name();
         if (tag == "sphere") {
             addSphere(XmlElement(file_, child, {"x", "y", "z", "r", "material"}), toWorld);
+        } else if (tag == "cylinder") {
+            const XmlElement e(file_, child, {"x0", "y0", "z0", "x1", "y1", "z1", "r", "material"});
+            addFrustum<Cylinder>(e, toWorld, e.number("r"), e.number("r"));
+        } else if (tag == "cone") {
+            const XmlElement e(file_, child, {"x0", "y0", "z0", "x1", "y1", "z1", "r0", "r1", "material"});
+            addFrustum<Cone>(e, toWorld, e.number("r0"), e.number("r1"));
         } else if (tag == "triangle" || tag == "quad") {
             addPolygon(XmlElement(file_, child, {"material"}), toWorld, tag == "triangle" ? 3 : 4);
         } else if (tag == "model") {
@@ -324,11 +334,28 @@ void SceneBuilder::addSphere(const XmlElement& e, const Transform& toWorld) {
     e.requireNoChildren();
     const std::uint32_t material = materialOf(e);
     // Under a non-uniform scale the radius takes the largest stretch, as Scene::flatten does.
-    const Sphere sphere{place(toWorld, e.xyz(0)), e.number("r") * toWorld.maxScale()};
-    if (sphere.degenerate())
+    addLoose(Sphere{place(toWorld, e.xyz(0)), e.number("r") * toWorld.maxScale()}, material);
+}
+
+// The end centres are transformed; the radii, as a sphere's, take the largest stretch.
+template <class K>
+void SceneBuilder::addFrustum(const XmlElement& e, const Transform& toWorld, Real baseRadius, Real topRadius) {
+    e.requireNoChildren();
+    const std::uint32_t material = materialOf(e);
+    K k;
+    k.base = place(toWorld, {e.number("x0"), e.number("y0"), e.number("z0")});
+    k.top = place(toWorld, {e.number("x1"), e.number("y1"), e.number("z1")});
+    k.baseRadius = baseRadius * toWorld.maxScale();
+    k.topRadius = topRadius * toWorld.maxScale();
+    addLoose(k, material);
+}
+
+template <class K>
+void SceneBuilder::addLoose(const K& primitive, std::uint32_t material) {
+    if (primitive.degenerate())
         ++dropped_;
     else
-        scene_.looseObjects.add<Sphere>(sphere, material);
+        scene_.looseObjects.add<K>(primitive, material);
 }
 
 // A quad is added as two triangles sharing the diagonal from its first to its third vertex.

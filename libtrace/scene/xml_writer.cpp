@@ -53,6 +53,29 @@ pugi::xml_node addObject(pugi::xml_node parent, const Sphere& s) {
     return node;
 }
 
+void setEnds(pugi::xml_node node, const Frustum& f) {
+    for (const auto& [end, p] : {std::pair{"0", f.base}, std::pair{"1", f.top}}) {
+        setNumber(node, (std::string("x") + end).c_str(), p.x);
+        setNumber(node, (std::string("y") + end).c_str(), p.y);
+        setNumber(node, (std::string("z") + end).c_str(), p.z);
+    }
+}
+
+pugi::xml_node addObject(pugi::xml_node parent, const Cylinder& c) {
+    pugi::xml_node node = parent.append_child("cylinder");
+    setEnds(node, c);
+    setNumber(node, "r", c.baseRadius);
+    return node;
+}
+
+pugi::xml_node addObject(pugi::xml_node parent, const Cone& c) {
+    pugi::xml_node node = parent.append_child("cone");
+    setEnds(node, c);
+    setNumber(node, "r0", c.baseRadius);
+    setNumber(node, "r1", c.topRadius);
+    return node;
+}
+
 // Names as written: non-empty and unique (case-insensitively when `caseless`, for file
 // names on case-insensitive file systems), so that every reference finds its target.
 std::vector<std::string> uniqueNames(std::vector<std::string> names, const std::string& fallback, bool caseless) {

@@ -14,6 +14,18 @@ for tree in naive bsp kd; do
     grep -q "\"name\": \"$tree\"" "$WORK/one_$tree.json" || fail "$tree: tree not named"
 done
 
+# The scene's primitives are counted per kind, in the text and in the JSON.
+{
+    echo '    <cylinder x0="0" y0="0" z0="10" x1="0" y1="2" z1="10" r="1" material="white" />'
+    echo '    <cone x0="3" y0="0" z0="10" r0="1" x1="3" y1="2" z1="10" r1="0" material="white" />'
+    echo '    <cone x0="-3" y0="0" z0="10" r0="1" x1="-3" y1="2" z1="10" r1="0.5" material="white" />'
+} | scene "$WORK/cylinder_cones.xml" 60
+expect_exit 0 "$RT_INSPECT" --tree kd "$WORK/cylinder_cones.xml"
+grep -q "0 triangles, 0 spheres, 1 cylinders, 2 cones," "$WORK/stdout" || fail "counts per kind: $(head -1 "$WORK/stdout")"
+expect_exit 0 "$RT_INSPECT" --tree kd --json "$WORK/cylinder_cones.xml"
+[ "$(json_number cones "$WORK/stdout")" = 2 ] || fail "JSON: 2 cones expected"
+[ "$(json_number cylinders "$WORK/stdout")" = 1 ] || fail "JSON: 1 cylinder expected"
+
 # Two separated clusters: both trees split between them at the root, on x, and every
 # sphere is referenced at least once.
 for tree in bsp kd; do

@@ -26,8 +26,7 @@ constexpr double kOutlierFraction = 0.01;
 
 std::string goldenPath(const std::string& name) { return RT_SOURCE_DIR "/tests/golden/" + name + ".exr"; }
 
-Framebuffer renderTestScene(const RenderSettings& settings) {
-    const Scene scene = test::spheresOnFloor();
+Framebuffer renderTestScene(const RenderSettings& settings, const Scene& scene = test::spheresOnFloor()) {
     const NaiveAccelerator accel(scene.primitives);
     RenderStats stats;
     return render(scene, accel, settings, stats);
@@ -96,4 +95,11 @@ TEST(RenderGolden, DistributedSoftShadowsGlossyReflectionsSupersampling) {
     s.softShadows = s.glossyReflections = true;
     s.distributedSamples = 8;
     expectMatchesGolden(renderTestScene(s), "distributed");
+}
+
+TEST(RenderGolden, CylindersAndCones) {
+    RenderSettings s = golden();
+    s.shadows = true;
+    s.maxDepth = 3;
+    expectMatchesGolden(renderTestScene(s, test::cylindersAndCones()), "cylinders_cones");
 }

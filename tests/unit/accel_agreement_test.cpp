@@ -145,6 +145,15 @@ Primitives hardCases() {
     prims.add<Sphere>({{0.2f, 0.1f, 0}, Real(0.3)}, 0);
     prims.add<Sphere>({{0.2f, 0.1f, 0}, Real(0.3)}, 0);
     prims.add<Sphere>({{0, 0, 0}, Real(4)}, 0);  // everything is inside
+    // Axis-aligned in split planes, coincident, and one around everything.
+    for (int i = 0; i < 3; ++i) {
+        Vec3 a{0, Real(0.5), Real(-0.25)}, b = a;
+        b[i] += 1;
+        prims.add<Cylinder>({{a, b, Real(0.25), Real(0.25)}}, 0);
+        prims.add<Cylinder>({{a, b, Real(0.25), Real(0.25)}}, 0);
+        prims.add<Cone>({{b, a, Real(0.5), 0}}, 0);
+    }
+    prims.add<Cone>({{{0, 0, -5}, {0, 0, 5}, Real(5), Real(3)}}, 0);
     return prims;
 }
 
@@ -158,6 +167,16 @@ TEST(AccelAgreement, UniformTrianglesAndSpheres) {
 TEST(AccelAgreement, ClusteredTrianglesAndSpheres) {
     const Scene scene = generateScene({240, 80, Placement::Clustered, 2});
     EXPECT_EQ(disagreements(scene.primitives, kRays, 12), "");
+}
+
+TEST(AccelAgreement, UniformWithCylindersAndCones) {
+    const Scene scene = generateScene({120, 40, Placement::Uniform, 3, 60, 60});
+    EXPECT_EQ(disagreements(scene.primitives, kRays, 14), "");
+}
+
+TEST(AccelAgreement, ClusteredWithCylindersAndCones) {
+    const Scene scene = generateScene({120, 40, Placement::Clustered, 4, 60, 60});
+    EXPECT_EQ(disagreements(scene.primitives, kRays, 15), "");
 }
 
 TEST(AccelAgreement, PlanesHugeTinyAndCoincidentPrimitives) {

@@ -81,6 +81,18 @@ TEST(AccelPathological, NestedSpheres) {
     expectBoundedAndCorrect(prims, 500);
 }
 
+TEST(AccelPathological, NestedCylindersAndCones) {
+    // Coaxial shells, long and thin along a diagonal: every box near the axis meets most of them.
+    Primitives prims;
+    const Vec3 a{-1, -1, -1}, b{1, 1, 1};
+    for (int i = 1; i <= 500; ++i) {
+        const Real r = Real(1e-3) * Real(i);
+        prims.add<Cylinder>({{a, b, r, r}}, 0);
+        prims.add<Cone>({{b, a, 2 * r, 0}}, 0);
+    }
+    expectBoundedAndCorrect(prims, 500);
+}
+
 TEST(AccelPathological, OneHugeTriangleAmongManyTinyOnes) {
     Primitives prims = generateScene({20000, 0, Placement::Uniform, 12}).primitives;
     prims.add<Triangle>({{-100, -100, -0.3f}, {100, -100, 0.2f}, {0, 100, 0.1f}}, 0);

@@ -33,14 +33,15 @@ TEST(BspTree, SplitsTheLongestAxisInTheMiddle) {
     const auto tree = buildBspTree(longBox(), settings);
     const auto nodes = nodesOf(*tree);
     ASSERT_GE(nodes.size(), 3u);
-    EXPECT_EQ(nodes[0].axis, 0);  // x is 4 long
-    EXPECT_FLOAT_EQ(float(nodes[0].split), 2.0f);
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(nodes[i].plane) << "node " << i;
+    EXPECT_EQ(nodes[0].plane->axis, 0);  // x is 4 long
+    EXPECT_FLOAT_EQ(float(nodes[0].plane->position), 2.0f);
     // The lower half [0, 2] x [0, 2] x [0, 1]: x and y tie and ties go to x; then y is longest.
-    EXPECT_EQ(nodes[1].axis, 0);
+    EXPECT_EQ(nodes[1].plane->axis, 0);
     EXPECT_EQ(nodes[1].depth, 1u);
-    EXPECT_FLOAT_EQ(float(nodes[1].split), 1.0f);
-    EXPECT_EQ(nodes[2].axis, 1);
-    EXPECT_FLOAT_EQ(float(nodes[2].split), 1.0f);
+    EXPECT_FLOAT_EQ(float(nodes[1].plane->position), 1.0f);
+    EXPECT_EQ(nodes[2].plane->axis, 1);
+    EXPECT_FLOAT_EQ(float(nodes[2].plane->position), 1.0f);
 }
 
 TEST(BspTree, RoundRobinCyclesTheAxes) {
@@ -51,7 +52,8 @@ TEST(BspTree, RoundRobinCyclesTheAxes) {
     const auto tree = buildBspTree(longBox(), settings);
     for (const TreeNodeInfo& n : nodesOf(*tree)) {
         if (!n.leaf) {
-            EXPECT_EQ(n.axis, int(n.depth % 3)) << "node " << n.id;
+            ASSERT_TRUE(n.plane) << "node " << n.id;
+            EXPECT_EQ(n.plane->axis, int(n.depth % 3)) << "node " << n.id;
         }
     }
 }

@@ -20,7 +20,7 @@ public:
     static FixedTree sample() {
         const auto inner = [](std::uint32_t id, std::uint32_t depth, Aabb b, int axis, Real split) {
             TreeNodeInfo n;
-            n.id = id, n.depth = depth, n.bounds = b, n.leaf = false, n.axis = axis, n.split = split;
+            n.id = id, n.depth = depth, n.bounds = b, n.leaf = false, n.plane = SplitPlane{axis, split};
             return n;
         };
         const auto leaf = [](std::uint32_t id, std::uint32_t depth, Aabb b, std::uint32_t prims) {

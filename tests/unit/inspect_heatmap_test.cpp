@@ -29,7 +29,7 @@ public:
             Real t0 = 0, t1 = tMax;
             if (!clipRay(prims_.bounds(id), ray, inv, t0, t1)) continue;
             ++counters.intersectionTests;
-            if (prims_.intersect(id, ray, tMax, hit)) tMax = hit.t, found = true;
+            if (prims_.view().intersect(id, ray, tMax, hit)) tMax = hit.t, found = true;
         }
         return found;
     }

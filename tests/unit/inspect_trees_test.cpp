@@ -66,9 +66,10 @@ TEST_P(InspectTrees, TwoClustersSplitBetweenThem) {
     ASSERT_GE(nodes.size(), 3u);
     const TreeNodeInfo& root = nodes[0];
     ASSERT_FALSE(root.leaf);
-    EXPECT_EQ(root.axis, 0);
-    EXPECT_GE(root.split, Real(-8.3) - kTol);  // on a cluster's face counts as between them
-    EXPECT_LE(root.split, Real(8.3) + kTol);
+    ASSERT_TRUE(root.plane);
+    EXPECT_EQ(root.plane->axis, 0);
+    EXPECT_GE(root.plane->position, Real(-8.3) - kTol);  // on a cluster's face counts as between them
+    EXPECT_LE(root.plane->position, Real(8.3) + kTol);
     // Each side of the root holds one cluster: 64 spheres, perhaps referenced more than once.
     std::uint64_t left = 0, right = 0;
     bool inRight = false;

@@ -146,3 +146,83 @@ TEST(Primitives, StoreUnderHundredBytesPerTriangle) {
     for (int i = 0; i < 1000; ++i) prims.add<Triangle>(kTriangle, 0);
     EXPECT_LT(prims.memoryBytes() / prims.size(), 100u);
 }
+
+// A cylinder of radius 1 along z from 0 to 2, and a cone from radius 1 at z = 0 to a point at z = 2.
+const Cylinder kCylinder{{{0, 0, 0}, {0, 0, 2}, 1, 1}};
+const Cone kCone{{{0, 0, 0}, {0, 0, 2}, 1, 0}};
+
+TEST(Frustum, HitsTheSideAtTheExactDistance) {
+    Hit hit;
+    ASSERT_TRUE(intersect(kCylinder, {{-5, 0, 1}, {1, 0, 0}}, kInfinity, hit));
+    EXPECT_NEAR(hit.t, 4, 1e-5);
+    EXPECT_NEAR(hit.u, 0.5, 1e-5);
+    expectNear(kCylinder.normal({-1, 0, 1}), {-1, 0, 0});
+    ASSERT_TRUE(intersect(kCone, {{-5, 0, 1}, {1, 0, 0}}, kInfinity, hit));  // radius 0.5 at z = 1
+    EXPECT_NEAR(hit.t, 4.5, 1e-5);
+    expectNear(kCone.normal({-0.5f, 0, 1}), normalize(Vec3{-1, 0, 0.5f}));
+}
+
+TEST(Frustum, HitsTheCapsAndFromInsideTheFarSide) {
+    Hit hit;
+    ASSERT_TRUE(intersect(kCylinder, {{0.5f, 0, -3}, {0, 0, 1}}, kInfinity, hit));  // base cap
+    EXPECT_NEAR(hit.t, 3, 1e-5);
+    expectNear(kCylinder.normal({0.5f, 0, 0}), {0, 0, -1});
+    ASSERT_TRUE(intersect(kCylinder, {{0.5f, 0, 5}, {0, 0, -1}}, kInfinity, hit));  // top cap
+    EXPECT_NEAR(hit.t, 3, 1e-5);
+    expectNear(kCylinder.normal({0.5f, 0, 2}), {0, 0, 1});
+    ASSERT_TRUE(intersect(kCylinder, {{0, 0, 1}, {1, 0, 0}}, kInfinity, hit));  // from inside
+    EXPECT_NEAR(hit.t, 1, 1e-5);
+    ASSERT_TRUE(intersect(kCone, {{0.25f, 0, -1}, {0, 0, 1}}, kInfinity, hit));  // base cap of the cone
+    EXPECT_NEAR(hit.t, 1, 1e-5);
+}
+
+TEST(Frustum, MissesBesideBeyondAndBehind) {
+    Hit hit;
+    EXPECT_FALSE(intersect(kCylinder, {{-5, 0, 2.5f}, {1, 0, 0}}, kInfinity, hit));  // above the top
+    EXPECT_FALSE(intersect(kCylinder, {{-5, 1.5f, 1}, {1, 0, 0}}, kInfinity, hit));  // beside
+    EXPECT_FALSE(intersect(kCylinder, {{-5, 0, 1}, {1, 0, 0}}, 3, hit));              // beyond tMax
+    EXPECT_FALSE(intersect(kCylinder, {{5, 0, 1}, {1, 0, 0}}, kInfinity, hit));       // behind
+    EXPECT_FALSE(intersect(kCone, {{-5, 0.75f, 1}, {1, 0, 0}}, kInfinity, hit));      // outside the narrowing side
+    EXPECT_FALSE(intersectsAny(kCone, {{-5, 0.75f, 1}, {1, 0, 0}}, kInfinity));
+}
+
+TEST(Frustum, BoundsAreTightForAnyAxis) {
+    const Aabb b = kCylinder.bounds();
+    expectNear(b.lo, {-1, -1, 0}, Real(1e-5));
+    expectNear(b.hi, {1, 1, 2}, Real(1e-5));
+    // Along the diagonal every surface point lies inside the bounds, and the bounds reach no
+    // further than the extreme surface points.
+    const Cone tilted{{{0, 0, 0}, {1, 2, 3}, Real(0.5), Real(0.2)}};
+    const Aabb t = tilted.bounds();
+    Aabb reached;
+    for (int i = 0; i <= 64; ++i)
+        for (int j = 0; j < 256; ++j) {
+            const Vec3 p = tilted.surfacePoint(Real(i) / 64, Real(j) / 256);
+            EXPECT_TRUE(intersection(t, {p, p}) == (Aabb{p, p})) << p;
+            reached.extend(p);
+        }
+    expectNear(reached.lo, t.lo, Real(1e-3));
+    expectNear(reached.hi, t.hi, Real(1e-3));
+}
+
+TEST(Frustum, OverlapNeverMissesTheSurfaceAndSkipsBoxesInside) {
+    const Cone tilted{{{0, 0, 0}, {1, 2, 3}, Real(0.5), Real(0.2)}};
+    EXPECT_FALSE(overlaps(tilted, {Vec3{0.5f, 1, 1.5f} - Vec3{0.05f, 0.05f, 0.05f}, Vec3{0.5f, 1, 1.5f} + Vec3{0.05f, 0.05f, 0.05f}}));
+    EXPECT_FALSE(overlaps(tilted, {{2, 2, 2}, {3, 3, 3}}));
+    for (int i = 0; i <= 32; ++i)
+        for (int j = 0; j < 32; ++j) {
+            const Vec3 p = tilted.surfacePoint(Real(i) / 32, Real(j) / 32);
+            const Aabb box{p - Vec3{0.01f, 0.02f, 0.03f}, p + Vec3{0.03f, 0.01f, 0.02f}};
+            EXPECT_TRUE(overlaps(tilted, box)) << p;
+            const Aabb clipped = clippedBounds(tilted, box);
+            EXPECT_TRUE(intersection(clipped, {p, p}) == (Aabb{p, p})) << p;
+        }
+}
+
+TEST(Frustum, DegenerateWithoutLengthOrRadius) {
+    EXPECT_TRUE((Cylinder{{{0, 0, 0}, {0, 0, 0}, 1, 1}}).degenerate());
+    EXPECT_TRUE((Cone{{{0, 0, 0}, {0, 0, 1}, 0, 0}}).degenerate());
+    EXPECT_TRUE((Cone{{{0, 0, 0}, {0, 0, 1}, -1, 1}}).degenerate());
+    EXPECT_FALSE(kCone.degenerate());
+    EXPECT_NEAR(kCylinder.area(), 2 * kPi * 2 + 2 * kPi, 1e-4);
+}

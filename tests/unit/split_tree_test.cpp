@@ -89,7 +89,9 @@ TEST(SplitTree, StatsAndVisitorDescribeTheTree) {
     std::vector<TreeNodeInfo> nodes;
     s.tree->forEachNode([&](const TreeNodeInfo& n) { nodes.push_back(n); });
     ASSERT_EQ(nodes.size(), 3u);
-    EXPECT_EQ(nodes[0].axis, 2);
+    ASSERT_TRUE(nodes[0].plane);
+    EXPECT_EQ(nodes[0].plane->axis, 2);
+    EXPECT_FALSE(nodes[1].plane);  // a leaf
     EXPECT_EQ(nodes[1].id, 1u);
     EXPECT_EQ(nodes[1].bounds.hi.z, 0);  // the lower child first
     EXPECT_EQ(nodes[2].bounds.lo.z, 0);

@@ -467,3 +467,24 @@ TEST(XmlLoader, MissingSceneFile) {
     EXPECT_EQ(inputErrorOf([] { loadSceneXml("/nonexistent/scene.xml"); }),
               "/nonexistent/scene.xml: cannot open: No such file or directory");
 }
+
+TEST(XmlLoader, CylindersAndConesUnderTransforms) {
+    const Scene scene = load(R"(<objects>
+        <scale factor="2"><translate x="1">
+          <cylinder x0="0" y0="0" z0="0" x1="0" y1="1" z1="0" r="0.5"/>
+          <cone x0="0" y0="0" z0="0" r0="1" x1="0" y1="0" z1="3" r1="0"/>
+        </translate></scale>
+        <cone x0="0" y0="0" z0="0" r0="0" x1="0" y1="0" z1="1" r1="0"/></objects>)");
+    ASSERT_EQ(scene.looseObjects.count<Cylinder>(), 1u);
+    ASSERT_EQ(scene.looseObjects.count<Cone>(), 1u);  // the one without a radius is dropped
+    EXPECT_EQ(scene.droppedDegenerate, 1u);
+    const Cylinder& c = scene.looseObjects.all<Cylinder>()[0];
+    expectNear(c.base, {1, 0, 0});  // the outer <scale> applies first
+    expectNear(c.top, {1, 2, 0});
+    EXPECT_NEAR(c.baseRadius, 1, kTol);
+    EXPECT_NEAR(c.topRadius, 1, kTol);
+    const Cone& k = scene.looseObjects.all<Cone>()[0];
+    expectNear(k.top, {1, 0, 6});
+    EXPECT_NEAR(k.baseRadius, 2, kTol);
+    EXPECT_EQ(k.topRadius, 0);
+}

@@ -33,6 +33,8 @@ const std::string kScene = R"(<scene>
       <model name="ship/one" material="red steel &amp; more"/>
       <triangle><vertex x="0.1" y="0.2" z="0.3"/><vertex x="1e10"/><vertex y="-7.77"/></triangle>
       <quad material="blue"><vertex/><vertex x="1"/><vertex x="1" y="1"/><vertex y="1"/></quad>
+      <cylinder x0="0.1" y0="-2" z0="3" x1="1" y1="1" z1="1" r="0.3" material="blue"/>
+      <cone x0="1" y0="0" z0="0" r0="0.7" x1="0" y1="0.1" z1="0" r1="0"/>
     </translate></scale></rotate>
     <model name="balls"/>
     <translate x="5"><model name="balls" material="blue"/></translate>
