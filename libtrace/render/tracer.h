@@ -13,6 +13,7 @@
 #include "render/render_settings.h"
 #include "render/render_stats.h"
 #include "render/sampling.h"
+#include "render/surface.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -35,10 +36,10 @@ public:
 private:
     Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
-    // Fraction of `light` seen from p (1 without shadows); n faces the side p is lit from.
-    float visibility(const Vec3& p, const Vec3& n, const Light& light, bool inBundle, SampleRng& rng,
+    // Fraction of `light` seen from the surface (1 without shadows).
+    float visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
                      RenderCounters& counters) const;
-    Color reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Material& m, int depth, bool inBundle,
+    Color reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
                      SampleRng& rng, RenderCounters& counters) const;
 
     const Scene& scene_;

@@ -58,6 +58,11 @@ struct Model {
     Format format = Format::Raw;
     std::vector<float> triangleVertices;  // 9 floats per triangle
     std::vector<float> sphereData;        // 4 floats per sphere: centre, radius
+    // Per-corner shading data of the triangles, in the corners' order; each is empty or
+    // holds every triangle's (docs/scene-format.md, the RAW extension).
+    std::vector<float> vertexNormals;  // 9 floats per triangle: unit normals, or zeros for a flat triangle
+    std::vector<float> vertexUvs;      // 6 floats per triangle: texture coordinates u, v
+    std::vector<float> vertexColors;   // 9 floats per triangle: linear RGB
 
     std::size_t triangleCount() const { return triangleVertices.size() / 9; }
     std::size_t sphereCount() const { return sphereData.size() / 4; }
