@@ -15,7 +15,7 @@
 
 #include "core/error.h"
 #include "import/camera_3ds.h"
-#include "import/mesh_data.h"
+#include "import/scene_assembly.h"
 #include "import/scene_defaults.h"
 
 namespace rt {
@@ -72,7 +72,7 @@ UpAxis importerUpAxis(const std::string& format) { return format == k3dsImporter
 class AssimpSceneBuilder {
 public:
     AssimpSceneBuilder(const aiScene& ai, const std::string& file, const ImportOptions& options, ImportResult& out)
-        : ai_(ai), file_(file), options_(options), out_(out), models_(ai.mNumMeshes), materials_(ai.mNumMaterials) {}
+        : ai_(ai), file_(file), options_(options), out_(out), assembly_(out) {}
 
     void build(const Transform& root) {
         // 3DS file coordinates in the scene: the quarter turn about x with which Assimp's 3DS
@@ -113,12 +113,8 @@ private:
         if (meshIndex >= ai_.mNumMeshes)
             fail("a node names mesh " + std::to_string(meshIndex) + ", which does not exist");
         meshesPlaced_.insert(meshIndex);
-        if (!models_[meshIndex]) models_[meshIndex] = convertMesh(meshIndex);
-        const ConvertedMesh& converted = *models_[meshIndex];
-        out_.report.droppedDegenerateInScene += converted.dropped;
-        if (converted.model)
-            out_.scene.instances.push_back(
-                {*converted.model, materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex), world});
+        const ConvertedMesh converted = assembly_.mesh(meshIndex, [&] { return convertMesh(meshIndex); });
+        assembly_.place(converted, [&] { return materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex); }, world);
     }
 
     ConvertedMesh convertMesh(unsigned meshIndex) {
@@ -131,39 +127,30 @@ private:
                 fail(what + " vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
             points[i] = {float(v.x), float(v.y), float(v.z)};
         }
-        Model model;
-        model.name = modelNames_.claim(mesh.mName.C_Str(), "mesh" + std::to_string(meshIndex));
-        ConvertedMesh converted;
-        for (unsigned f = 0; f < mesh.mNumFaces; ++f) converted.dropped += addFace(mesh.mFaces[f], points, model, what);
-        out_.report.droppedDegenerate += converted.dropped;
-        if (model.triangleCount() == 0) return converted;
-        out_.scene.models.push_back(std::move(model));
-        converted.model = std::uint32_t(out_.scene.models.size() - 1);
-        return converted;
+        ModelBuilder model = assembly_.newModel(mesh.mName.C_Str(), "mesh" + std::to_string(meshIndex));
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) addFace(mesh.mFaces[f], points, model, what);
+        return assembly_.addModel(std::move(model));
     }
 
     // Triangles as they are; a polygon Triangulate left (it should leave none) as a fan.
-    // Returns the number of degenerate triangles dropped.
-    std::size_t addFace(const aiFace& face, const std::vector<Point3f>& points, Model& model, const std::string& what) {
-        if (face.mNumIndices == 1) ++out_.report.droppedPoints;
-        if (face.mNumIndices == 2) ++out_.report.droppedLines;
+    void addFace(const aiFace& face, const std::vector<Point3f>& points, ModelBuilder& model, const std::string& what) {
+        assembly_.countFaceWithoutArea(face.mNumIndices);
         for (unsigned i = 0; i < face.mNumIndices; ++i)
             if (face.mIndices[i] >= points.size())
                 fail(what + " has a face with vertex index " + std::to_string(face.mIndices[i]) + " out of range");
-        std::size_t dropped = 0;
         for (unsigned i = 1; i + 1 < face.mNumIndices; ++i)
-            if (!appendTriangle(model, points[face.mIndices[0]], points[face.mIndices[i]],
-                                points[face.mIndices[i + 1]]))
-                ++dropped;
-        return dropped;
+            model.addTriangle(points[face.mIndices[0]], points[face.mIndices[i]], points[face.mIndices[i + 1]]);
+    }
+
+    std::uint32_t materialFor(unsigned index) {
+        return assembly_.material(index, "material" + std::to_string(index), [&] { return convertMaterial(index); });
     }
 
     // Diffuse colour, specular = luminance(Ks) * shininess strength, shininess as the Phong
     // exponent, reflectivity as the mirror coefficient (docs/conversion.md).
-    std::uint32_t materialFor(unsigned index) {
+    Material convertMaterial(unsigned index) {
         if (index >= ai_.mNumMaterials)
             fail("a mesh names material " + std::to_string(index) + ", which does not exist");
-        if (materials_[index]) return *materials_[index];
         const aiMaterial& am = *ai_.mMaterials[index];
         aiColor3D kd(1, 1, 1), ks(0, 0, 0);
         float strength = 1, shininess = 0, reflectivity = 0;
@@ -176,9 +163,8 @@ private:
         m.reflection = std::isfinite(reflectivity) ? std::clamp(reflectivity, 0.0f, 1.0f) : 0.0f;
         aiString name;
         am.Get(AI_MATKEY_NAME, name);
-        m.name = materialNames_.claim(name.C_Str(), "material" + std::to_string(index));
-        out_.scene.materials.push_back(m);
-        return *(materials_[index] = std::uint32_t(out_.scene.materials.size() - 1));
+        m.name = name.C_Str();
+        return m;
     }
 
     static Color toColor(const aiColor3D& c) { return fileColor(c.r, c.g, c.b); }
@@ -275,13 +261,10 @@ private:
     const std::string& file_;
     const ImportOptions& options_;
     ImportResult& out_;
-    std::vector<std::optional<ConvertedMesh>> models_;  // per aiMesh, once converted
-    std::vector<std::optional<std::uint32_t>> materials_;
+    SceneAssembly<unsigned, unsigned> assembly_;  // models by aiMesh, materials by aiMaterial
     std::set<unsigned> meshesPlaced_;
     std::map<std::string, Transform> worldByName_;
     Transform fileToWorld_;  // from a 3DS file's own coordinates
-    NameTable modelNames_;
-    NameTable materialNames_;
 };
 
 }  // namespace

@@ -13,9 +13,9 @@
 
 #include "core/error.h"
 #include "import/gltf_accessor.h"
-#include "import/mesh_data.h"
 #include "import/phong_from_pbr.h"
 #include "import/primitive_topology.h"
+#include "import/scene_assembly.h"
 #include "import/scene_defaults.h"
 
 namespace rt {
@@ -155,7 +155,7 @@ class GltfSceneBuilder {
 public:
     GltfSceneBuilder(const tinygltf::Model& gltf, const std::string& file, const ImportOptions& options,
                      ImportResult& out)
-        : gltf_(gltf), file_(file), options_(options), out_(out), reader_(gltf, file) {}
+        : gltf_(gltf), file_(file), options_(options), out_(out), assembly_(out), reader_(gltf, file) {}
 
     void build(const Transform& root) {
         const tinygltf::Scene& scene = gltf_.scenes[chooseScene()];
@@ -235,19 +235,10 @@ private:
         meshesPlaced_.insert(mesh);
         const std::vector<tinygltf::Primitive>& primitives = gltf_.meshes[std::size_t(mesh)].primitives;
         for (std::size_t p = 0; p < primitives.size(); ++p) {
-            const ConvertedMesh converted = modelFor(mesh, int(p));
-            out_.report.droppedDegenerateInScene += converted.dropped;
-            if (converted.model)
-                out_.scene.instances.push_back({*converted.model, materialFor(primitives[p].material), world});
+            const ConvertedMesh converted =
+                assembly_.mesh({mesh, int(p)}, [&] { return convertPrimitive(mesh, int(p)); });
+            assembly_.place(converted, [&] { return materialFor(primitives[p].material); }, world);
         }
-    }
-
-    // The Model of one primitive, converted the first time a node places it.
-    ConvertedMesh modelFor(int mesh, int primitive) {
-        const auto key = std::make_pair(mesh, primitive);
-        const auto cached = models_.find(key);
-        if (cached != models_.end()) return cached->second;
-        return models_[key] = convertPrimitive(mesh, primitive);
     }
 
     ConvertedMesh convertPrimitive(int meshIndex, int primitiveIndex) {
@@ -270,20 +261,14 @@ private:
             std::iota(vertices.begin(), vertices.end(), 0u);
         }
         const std::vector<std::uint32_t> corners = triangleCorners(*topology, vertices);
-        Model model;
         const std::string base = mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name;
-        model.name = modelNames_.claim(mesh.primitives.size() > 1 ? base + "_" + std::to_string(primitiveIndex) : base,
-                                       "mesh" + std::to_string(meshIndex));
-        model.triangleVertices.reserve(corners.size() * 3);
-        ConvertedMesh converted;
+        ModelBuilder model = assembly_.newModel(
+            mesh.primitives.size() > 1 ? base + "_" + std::to_string(primitiveIndex) : base,
+            "mesh" + std::to_string(meshIndex));
+        model.reserveTriangles(corners.size() / 3);
         for (std::size_t i = 0; i + 3 <= corners.size(); i += 3)
-            if (!appendTriangle(model, points[corners[i]], points[corners[i + 1]], points[corners[i + 2]]))
-                ++converted.dropped;
-        out_.report.droppedDegenerate += converted.dropped;
-        if (model.triangleCount() == 0) return converted;
-        out_.scene.models.push_back(std::move(model));
-        converted.model = std::uint32_t(out_.scene.models.size() - 1);
-        return converted;
+            model.addTriangle(points[corners[i]], points[corners[i + 1]], points[corners[i + 2]]);
+        return assembly_.addModel(std::move(model));
     }
 
     std::optional<Topology> topologyOf(int mode, const std::string& what) {
@@ -308,22 +293,22 @@ private:
     }
 
     std::uint32_t materialFor(int index) {
-        const auto cached = materials_.find(index);
-        if (cached != materials_.end()) return cached->second;
+        return assembly_.material(index, "material" + std::to_string(index), [&] { return convertMaterial(index); });
+    }
+
+    Material convertMaterial(int index) {
         if (index < -1 || index >= int(gltf_.materials.size()))
             fail("material " + std::to_string(index) + " does not exist (the file has " +
                  std::to_string(gltf_.materials.size()) + ")");
         Material m;  // a primitive without material: rt's plain white diffuse default (docs/conversion.md)
-        std::string name = "default";
+        m.name = "default";
         if (index >= 0) {
             const tinygltf::Material& gm = gltf_.materials[std::size_t(index)];
             m = phongFromMetallicRoughness(metallicRoughness(gm, "material " + std::to_string(index)));
-            name = gm.name;
+            m.name = gm.name;
             if (gm.pbrMetallicRoughness.baseColorTexture.index >= 0) ++texturedMaterials_;
         }
-        m.name = materialNames_.claim(name, "material" + std::to_string(index));
-        out_.scene.materials.push_back(m);
-        return materials_[index] = std::uint32_t(out_.scene.materials.size() - 1);
+        return m;
     }
 
     MetallicRoughness metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
@@ -437,14 +422,11 @@ private:
     const std::string& file_;
     const ImportOptions& options_;
     ImportResult& out_;
+    SceneAssembly<std::pair<int, int>, int> assembly_;  // models by (mesh, primitive), materials by index
     GltfAccessorReader reader_;
-    std::map<std::pair<int, int>, ConvertedMesh> models_;
-    std::map<int, std::uint32_t> materials_;
     std::set<int> meshesPlaced_;
     std::vector<Placed> cameras_;
     std::vector<Placed> lights_;
-    NameTable modelNames_;
-    NameTable materialNames_;
     std::size_t texturedMaterials_ = 0;
 };
 
@@ -452,7 +434,7 @@ private:
 
 bool hasGlbMagic(const std::string& path) { return fileStartsWith(path, kGlbMagic); }
 
-ImportResult importGltf(const std::string& path, const ImportOptions& options, const Transform& root) {
+ImportResult importGltf(const std::string& path, const ImportOptions& options) {
     if (!std::ifstream(path, std::ios::binary)) throw InputError(path + ": cannot open the file");
     ImportResult result;
     const bool binary = hasGlbMagic(path);
@@ -461,12 +443,11 @@ ImportResult importGltf(const std::string& path, const ImportOptions& options, c
             return binary ? loader.LoadBinaryFromFile(&model, &e, &w, path)
                           : loader.LoadASCIIFromFile(&model, &e, &w, path);
         });
-    GltfSceneBuilder(gltf, path, options, result).build(root);
+    GltfSceneBuilder(gltf, path, options, result).build(rootTransform(options));
     return result;
 }
 
-ImportResult importGltfBytes(const std::string& bytes, const std::string& name, const ImportOptions& options,
-                             const Transform& root) {
+ImportResult importGltfBytes(const std::string& bytes, const std::string& name, const ImportOptions& options) {
     if (bytes.size() > std::numeric_limits<unsigned>::max()) throw InputError(name + ": larger than 4 GiB");
     ImportResult result;
     const bool binary = bytes.starts_with(kGlbMagic);
@@ -477,7 +458,7 @@ ImportResult importGltfBytes(const std::string& bytes, const std::string& name, 
                                                         reinterpret_cast<const unsigned char*>(bytes.data()), size, ".")
                           : loader.LoadASCIIFromString(&model, &e, &w, bytes.data(), size, ".");
         });
-    GltfSceneBuilder(gltf, name, options, result).build(root);
+    GltfSceneBuilder(gltf, name, options, result).build(rootTransform(options));
     return result;
 }
 

@@ -18,12 +18,12 @@ bool hasGlbMagic(const std::string& path);
 // primitive (strips and fans unrolled; points and lines skipped and counted), one Model per
 // (mesh, primitive) however many nodes place it, materials through phongFromMetallicRoughness,
 // the chosen perspective camera and the KHR_lights_punctual lights. Camera and light defaults
-// are left to the caller. Throws rt::InputError for anything invalid.
-ImportResult importGltf(const std::string& path, const ImportOptions& options, const Transform& root);
+// are left to the caller. The scene sits under rootTransform(options). Throws rt::InputError
+// for anything invalid.
+ImportResult importGltf(const std::string& path, const ImportOptions& options);
 
 // The same from a GLB or glTF JSON held in memory (standard input), named `name` in messages;
 // relative URIs resolve against the working folder.
-ImportResult importGltfBytes(const std::string& bytes, const std::string& name, const ImportOptions& options,
-                             const Transform& root);
+ImportResult importGltfBytes(const std::string& bytes, const std::string& name, const ImportOptions& options);
 
 }  // namespace rt

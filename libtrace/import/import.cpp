@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 #include "core/error.h"
 #include "import/assimp_import.h"
@@ -47,6 +49,33 @@ void noteDrops(ImportReport& r) {
         r.notes.push_back("dropped " + std::to_string(r.droppedDegenerate) + " degenerate (zero-area) triangle(s)");
 }
 
+// The importers by format: the first entry whose extensions hold the file's (in lower case)
+// or whose signature starts the file reads it; Assimp reads everything else. glTF comes first
+// so that a GLB is read as one under any name.
+struct FormatImporter {
+    std::vector<std::string_view> extensions;  // lower case, with the dot
+    std::string_view signature;  // the file's first bytes, whatever its name; empty: none
+    ImportResult (*read)(const std::string& path, const ImportOptions& options);
+};
+
+const FormatImporter kFormatImporters[] = {
+    {{".gltf", ".glb"}, kGlbMagic, importGltf},
+    {{".obj"}, {}, importObj},
+    {{".raw"}, "raw3d", importRaw},
+};
+
+bool reads(const FormatImporter& importer, const std::string& path, const std::string& extension) {
+    return std::find(importer.extensions.begin(), importer.extensions.end(), extension) != importer.extensions.end() ||
+           (!importer.signature.empty() && fileStartsWith(path, importer.signature));
+}
+
+ImportResult importByFormat(const std::string& path, const ImportOptions& options) {
+    const std::string extension = lowerCaseExtension(path);
+    for (const FormatImporter& importer : kFormatImporters)
+        if (reads(importer, path, extension)) return importer.read(path, options);
+    return importAssimp(path, options);
+}
+
 // What every import ends with: something to render, its drops noted, a camera and a light.
 ImportResult finishImport(ImportResult result, const std::string& name, const ImportOptions& options) {
     if (result.scene.instances.empty()) throw InputError(name + ": nothing to convert: the scene places no triangles");
@@ -61,11 +90,6 @@ std::string lowerCaseExtension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
-}
-
-bool isGltfPath(const std::string& path) {
-    const std::string ext = lowerCaseExtension(path);
-    return ext == ".gltf" || ext == ".glb";
 }
 
 Transform rootTransform(const ImportOptions& options, UpAxis importerUp) {
@@ -100,12 +124,7 @@ ImportResult importScene(const std::string& path, const ImportOptions& options) 
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a model file");
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
-    const std::string ext = lowerCaseExtension(path);
-    ImportResult result = isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, rootTransform(options))
-                          : ext == ".obj"                       ? importObj(path, options, rootTransform(options))
-                          : ext == ".raw" || fileStartsWith(path, "raw3d") ? importRaw(path, options)
-                                                                           : importAssimp(path, options);
-    return finishImport(std::move(result), path, options);
+    return finishImport(importByFormat(path, options), path, options);
 }
 
 ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportOptions& options) {
@@ -114,7 +133,7 @@ ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportO
     if (!looksLikeGltf(bytes))
         throw InputError(
             name + ": standard input takes a glTF 2.0 model (binary GLB or JSON); give other model files by name");
-    return finishImport(importGltfBytes(bytes, name, options, rootTransform(options)), name, options);
+    return finishImport(importGltfBytes(bytes, name, options), name, options);
 }
 
 }  // namespace rt

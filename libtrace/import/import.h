@@ -7,7 +7,8 @@
 // primitive, which carries the material; Assimp: per aiMesh; OBJ: per object, group and
 // material), one Instance per place a node puts it, with the node's world transform.
 // Degenerate triangles (a cross product of exactly zero from the float corners: repeated or
-// collinear corners; mesh_data.h appendTriangle) are dropped and counted, the same in every importer.
+// collinear corners; mesh_data.h appendTriangle) are dropped and counted, the same in every importer:
+// they share their scaffolding (scene_assembly.h) and are chosen by format in import.cpp.
 #pragma once
 
 #include <cstddef>
@@ -62,9 +63,6 @@ struct ImportResult {
 // The extension of a path in lower case, with its dot (".gltf"); empty if there is none.
 std::string lowerCaseExtension(const std::string& path);
 
-// True for the extensions that importScene reads through tinygltf (.gltf, .glb).
-bool isGltfPath(const std::string& path);
-
 // True when the file at `path` starts with the bytes `magic` ("glTF", "raw3d").
 bool fileStartsWith(const std::string& path, std::string_view magic);
 
@@ -73,7 +71,8 @@ bool fileStartsWith(const std::string& path, std::string_view magic);
 bool looksLikeGltf(std::string_view bytes);
 
 // Reads any supported model file: glTF, OBJ, a thesis RAW model (appendix D, wrapped in a scene
-// with one instance), everything else through Assimp. "-" reads standard input, which must hold
+// with one instance), everything else through Assimp; the format is told by the extension, or
+// by the first bytes (GLB, RAW) under any name (import.cpp kFormatImporters). "-" reads standard input, which must hold
 // a glTF 2.0 model (GLB or JSON). Throws rt::InputError (naming the file) for a missing,
 // unreadable, unknown or invalid file; never reads out of bounds or allocates more than the
 // file's data can justify.

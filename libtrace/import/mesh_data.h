@@ -4,8 +4,6 @@
 #pragma once
 
 #include <array>
-#include <cstdint>
-#include <optional>
 #include <set>
 #include <string>
 
@@ -20,13 +18,6 @@ using Point3f = std::array<float, 3>;
 // the precision the model is stored in; returns false when it was dropped. The points
 // must be finite (the importers reject files with NaN or infinite positions).
 bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Point3f& c);
-
-// A converted mesh: its index in Scene::models (none when nothing was left of it) and how
-// many degenerate triangles were dropped from it.
-struct ConvertedMesh {
-    std::optional<std::uint32_t> model;
-    std::size_t dropped = 0;
-};
 
 // A colour read from a file: NaN, infinite and negative channels read as 0.
 Color fileColor(float r, float g, float b);

@@ -16,9 +16,9 @@
 
 #include "core/error.h"
 #include "import/line_tracking_file.h"
-#include "import/mesh_data.h"
 #include "import/obj_syntax.h"
 #include "import/polygon.h"
+#include "import/scene_assembly.h"
 
 namespace rt {
 namespace {
@@ -107,7 +107,8 @@ Material materialFromMtl(const tinyobj::material_t& mtl) {
 
 class ObjSceneBuilder {
 public:
-    ObjSceneBuilder(const std::string& path, ImportResult& out) : path_(path), file_(path), out_(out) {}
+    ObjSceneBuilder(const std::string& path, ImportResult& out)
+        : path_(path), file_(path), out_(out), assembly_(out) {}
 
     void read() {
         tinyobj::callback_t callbacks;
@@ -144,20 +145,8 @@ public:
 
     // The models, one per part, each placed once under `root`.
     void build(const Transform& root) {
-        for (Part& part : parts_) {
-            Model model;
-            model.name = modelNames_.claim(part.name, "mesh");
-            model.triangleVertices.reserve(part.corners.size() * 3);
-            for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3)
-                if (!appendTriangle(model, positions_[part.corners[i]], positions_[part.corners[i + 1]],
-                                    positions_[part.corners[i + 2]]))
-                    ++out_.report.droppedDegenerate;
-            part.corners = {};  // free as we go: the models take their place
-            if (model.triangleCount() == 0) continue;
-            out_.scene.models.push_back(std::move(model));
-            out_.scene.instances.push_back({std::uint32_t(out_.scene.models.size() - 1), materialFor(part.material), root});
-        }
-        out_.report.droppedDegenerateInScene = out_.report.droppedDegenerate;
+        for (Part& part : parts_)
+            assembly_.place(convertPart(part), [&] { return materialFor(part.material); }, root);
         out_.report.meshes = out_.scene.models.size();
         dropped_.note(out_.report.notes);
         if (fannedConcave_)
@@ -174,6 +163,17 @@ private:
         int material = -1;
         std::deque<std::uint32_t> corners;
     };
+
+    // Each part is converted once and placed once, so no cache is needed.
+    ConvertedMesh convertPart(Part& part) {
+        ModelBuilder model = assembly_.newModel(part.name, "mesh");
+        model.reserveTriangles(part.corners.size() / 3);
+        for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3)
+            model.addTriangle(positions_[part.corners[i]], positions_[part.corners[i + 1]],
+                              positions_[part.corners[i + 2]]);
+        part.corners = {};  // free as we go: the models take their place
+        return assembly_.addModel(std::move(model));
+    }
 
     [[noreturn]] void fail(const std::string& message) const {
         throw inputErrorAt(path_, int(file_.lineNumber()), message);
@@ -209,12 +209,11 @@ private:
                  std::string(file_.lineText()) + "\"");
         polygon_.clear();
         for (int i = 0; i < count; ++i) polygon_.push_back(vertexIndex(corners[i].vertex_index));
-        if (count == 1) ++out_.report.droppedPoints;
-        if (count == 2) ++out_.report.droppedLines;
+        assembly_.countFaceWithoutArea(std::size_t(count));
         if (count < 3) return;
         if (count > 3) dropRepeatedCorners();
         // Each polygon accounts for n - 2 triangles, kept or dropped, as Assimp's counts do.
-        out_.report.droppedDegenerate += std::size_t(count) - std::max<std::size_t>(polygon_.size(), 2);
+        assembly_.dropDegenerate(std::size_t(count) - std::max<std::size_t>(polygon_.size(), 2));
         if (polygon_.size() < 3) return;
         cornerPositions_.clear();
         for (const std::uint32_t v : polygon_) cornerPositions_.push_back(positions_[v]);
@@ -267,19 +266,23 @@ private:
     }
 
     std::uint32_t materialFor(int index) {
-        auto [it, added] = materialIndex_.try_emplace(index, 0);
-        if (!added) return it->second;
-        const bool known = index >= 0 && std::size_t(index) < mtl_.size();
-        Material m = known ? materialFromMtl(mtl_[std::size_t(index)]) : Material{};
-        if (known) dropped_.count(mtl_[std::size_t(index)]);
-        m.name = materialNames_.claim(known ? mtl_[std::size_t(index)].name : "", "default");
-        out_.scene.materials.push_back(m);
-        return it->second = std::uint32_t(out_.scene.materials.size() - 1);
+        return assembly_.material(index, "default", [&] { return convertMaterial(index); });
+    }
+
+    // A material of the .mtl files, or rt's default for an index tinyobjloader does not know.
+    Material convertMaterial(int index) {
+        if (index < 0 || std::size_t(index) >= mtl_.size()) return Material{};
+        const tinyobj::material_t& mtl = mtl_[std::size_t(index)];
+        dropped_.count(mtl);
+        Material m = materialFromMtl(mtl);
+        m.name = mtl.name;
+        return m;
     }
 
     const std::string& path_;
     LineTrackingFile file_;
     ImportResult& out_;
+    SceneAssembly<std::size_t, int> assembly_;  // materials by .mtl index (models are not looked up)
     std::deque<Point3f> positions_;
     std::vector<tinyobj::material_t> mtl_;
     std::string object_, group_;
@@ -287,10 +290,8 @@ private:
     std::deque<Part> parts_;  // stable addresses for partByKey_
     std::map<std::tuple<std::string, std::string, int>, Part*> partByKey_;
     Part* current_ = nullptr;
-    std::map<int, std::uint32_t> materialIndex_;
     std::set<std::string> missingMaterials_;  // each named once in the notes
     DroppedMaterialData dropped_;             // of the materials used
-    NameTable modelNames_, materialNames_;
     std::size_t fannedConcave_ = 0;
     std::vector<std::uint32_t> polygon_, triangles_;  // scratch for face()
     std::vector<Point3f> cornerPositions_;
@@ -298,13 +299,13 @@ private:
 
 }  // namespace
 
-ImportResult importObj(const std::string& path, const ImportOptions& options, const Transform& root) {
+ImportResult importObj(const std::string& path, const ImportOptions& options) {
     if (!options.camera.empty()) throw InputError(path + ": OBJ files hold no cameras, so --camera cannot pick one");
     ImportResult result;
     result.report.format = "Wavefront OBJ";
     ObjSceneBuilder builder(path, result);
     builder.read();
-    builder.build(root);
+    builder.build(rootTransform(options));
     return result;
 }
 

@@ -11,13 +11,13 @@
 
 namespace rt {
 
-// One Model per (object, group, material) run of faces, each placed once under `root`, in
-// the order the file first uses them. Polygons are triangulated as Assimp does (n - 2
-// triangles each, concave ones ear-clipped); faces of one or two corners are points and
-// lines, skipped and counted. Materials: Kd, Ks, Ns and illum of the .mtl files
+// One Model per (object, group, material) run of faces, each placed once under
+// rootTransform(options), in the order the file first uses them. Polygons are triangulated as
+// Assimp does (n - 2 triangles each, concave ones ear-clipped); faces of one or two corners
+// are points and lines, skipped and counted. Materials: Kd, Ks, Ns and illum of the .mtl files
 // (docs/conversion.md); faces without a known material get a default one. Normals and texture
 // coordinates are not used. Throws rt::InputError with file:line for a coordinate that is
 // not a finite number, a face index of 0 or out of range, or a line longer than 1 MiB.
-ImportResult importObj(const std::string& path, const ImportOptions& options, const Transform& root);
+ImportResult importObj(const std::string& path, const ImportOptions& options);
 
 }  // namespace rt

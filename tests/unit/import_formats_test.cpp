@@ -275,6 +275,29 @@ TEST(ImportFormats, ThesisRawModelIsOneInstance) {
     }
 }
 
+// The format table (import.cpp): the extension in any case, or a signature (GLB, RAW) under
+// any name, picks the importer; Assimp reads the rest.
+TEST(ImportFormats, TheExtensionInAnyCaseOrTheSignatureChoosesTheImporter) {
+    TempDir dir;
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_EQ(importScene(dir.write("tri.OBJ", triangle)).report.format, "Wavefront OBJ");
+    EXPECT_EQ(importScene(dir.write("tri.Obj", triangle)).report.format, "Wavefront OBJ");
+    Model ball;
+    ball.sphereData = {0, 0, 0, 1};
+    for (const char* name : {"ball.RAW", "ball.stl"}) {
+        writeRawFile(dir.path(name), ball);
+        EXPECT_EQ(importScene(dir.path(name)).report.format, "thesis RAW model") << name;
+    }
+    test::GltfFixture gltf;
+    gltf.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    gltf.indices = {0, 1, 2};
+    EXPECT_EQ(importScene(dir.write("tri.GLTF", gltf.json())).report.format, "glTF 2.0");
+    EXPECT_NE(importScene(dir.write("tri.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                               "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n"))
+                  .report.format.find("STL"),
+              std::string::npos);
+}
+
 // An NFF polygon ("p", vertex count, then one vertex per line) after a fill colour
 // ("f" red green blue Kd Ks shine transmittance index of refraction).
 TEST(ImportFormats, NffPolygon) {
