@@ -40,9 +40,10 @@ Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
 
 }  // namespace
 
-Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings)
+Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+               const ImageTextures* images)
     : scene_(scene), accel_(accel), settings_(settings), camera_(scene.camera, settings.width, settings.height),
-      epsilon_(sceneEpsilon(scene.primitives)) {
+      epsilon_(sceneEpsilon(scene.primitives)), images_(images) {
     for (const Light& light : scene.lights) ambientLight_ += light.color;
 }
 
@@ -74,20 +75,31 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, Sa
                     RenderCounters& counters) const {
     const SurfacePoint s = surfaceAt(scene_.primitives, ray, hit);
     const Material& m = materialOf(scene_, hit.prim);
-    const Color surfaceColor = m.color * s.tint;
+    const Color color = surfaceColor(m, s);
     const Vec3 toViewer = -ray.direction;
 
-    Color c = phongAmbient(surfaceColor, m, ambientLight_);
+    Color c = phongAmbient(color, m, ambientLight_) + emitted(m, s);
     for (const Light& light : scene_.lights) {
         const Vec3 toLight = normalize(light.position - s.point);
         if (dot(s.shadingNormal, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
         const float seen = visibility(s, light, inBundle, rng, counters);
-        if (seen > 0) c += phongLight(m, surfaceColor, s.shadingNormal, toLight, toViewer, light.color) * seen;
+        if (seen > 0) c += phongLight(m, color, s.shadingNormal, toLight, toViewer, light.color) * seen;
     }
     // Thesis 2.1, step 6: the reflected intensity is added to the local one.
     if (m.reflection > 0 && depth < settings_.maxDepth)
         c += reflection(s, ray.direction, m, depth, inBundle, rng, counters) * m.reflection;
     return c;
+}
+
+Color Tracer::surfaceColor(const Material& m, const SurfacePoint& s) const {
+    const Color c = m.color * s.tint;
+    return m.colorTexture ? c * textureColor(scene_, *m.colorTexture, s, images_) : c;
+}
+
+// Whitted's model has no light transport from surfaces: an emitter is seen (directly, in
+// mirrors), but lights nothing else.
+Color Tracer::emitted(const Material& m, const SurfacePoint& s) const {
+    return m.emissionTexture ? m.emission * textureColor(scene_, *m.emissionTexture, s, images_) : m.emission;
 }
 
 float Tracer::visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,

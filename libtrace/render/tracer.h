@@ -14,14 +14,17 @@
 #include "render/render_stats.h"
 #include "render/sampling.h"
 #include "render/surface.h"
+#include "render/texture.h"
 #include "scene/scene.h"
 
 namespace rt {
 
 class Tracer {
 public:
-    // The scene must be flattened and `accel` built over scene.primitives; both must outlive the tracer.
-    Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings);
+    // The scene must be flattened and `accel` built over scene.primitives; both, and `images`
+    // (the lookups of image textures, none: white), must outlive the tracer.
+    Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+           const ImageTextures* images = nullptr);
 
     // The linear colour of pixel (x, y): the mean of its camera samples. A sample that comes
     // out NaN or infinite counts as black and is recorded in counters.nonFinite.
@@ -34,6 +37,9 @@ public:
     Real epsilon() const { return epsilon_; }
 
 private:
+    // The material's colour at the surface (vertex colour and texture applied), and what it emits.
+    Color surfaceColor(const Material& m, const SurfacePoint& s) const;
+    Color emitted(const Material& m, const SurfacePoint& s) const;
     Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
     // Fraction of `light` seen from the surface (1 without shadows).
@@ -48,6 +54,7 @@ private:
     CameraRays camera_;
     Color ambientLight_;
     Real epsilon_;
+    const ImageTextures* images_;
 };
 
 }  // namespace rt

@@ -27,6 +27,7 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
     app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
         ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
+    app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
 }
 
 void addImageOptions(CLI::App& app, RenderOptions& o) {

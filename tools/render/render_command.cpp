@@ -8,6 +8,7 @@
 #include "accel/build.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "image/texture_files.h"
 #include "import/load_scene.h"
 #include "progress.h"
 #include "render/renderer.h"
@@ -82,10 +83,11 @@ std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSetti
 
 // The bar's line ends (its destructor) before anything else is printed.
 Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-                                  ProgressMode mode, RenderStats& stats) {
+                                  ProgressMode mode, RenderStats& stats, const ImageTextures& images) {
     Progress progress(mode);
-    return render(scene, accel, settings, stats,
-                  [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); });
+    return render(
+        scene, accel, settings, stats,
+        [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); }, &images);
 }
 
 // What a run without -f or -o did, so that nobody waits for a picture that never comes.
@@ -105,7 +107,7 @@ int runRender(RenderOptions o) {
     prepareOutputs(o, output);
     const ProgressMode progress = progressMode(o.progress, o.quiet);
 
-    Scene scene = loadScene(o.scenePath);
+    Scene scene = loadScene(o.scenePath, o.import);
     scene.dropDescription();
     RenderStats stats;
     const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);
@@ -115,7 +117,8 @@ int runRender(RenderOptions o) {
     stats.lights = scene.lights.size();
 
     if (!o.preprocessOnly) {
-        const Framebuffer image = renderShowingProgress(scene, *accel, o.render, progress, stats);
+        const TextureFiles images(scene, scene.warnings);
+        const Framebuffer image = renderShowingProgress(scene, *accel, o.render, progress, stats, images);
         const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
                                  stats.renderSeconds};
         writeImage(image, output, meta);

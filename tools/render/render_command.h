@@ -7,6 +7,7 @@
 
 #include "accel/settings.h"
 #include "image/image_output.h"
+#include "import/import.h"
 #include "render/render_settings.h"
 
 namespace rt::render_tool {
@@ -26,6 +27,7 @@ struct RenderOptions {
     bool statsLine = false;               // -b
     bool preprocessOnly = false;          // -p
     std::optional<std::string> statsJson;  // --stats-json FILE ("-" is standard output)
+    ImportOptions import;                 // --flat, for a model file read directly
 };
 
 // "x0,y0,x1,y1" with x1 and y1 exclusive; throws rt::InputError if it is not four integers.
