@@ -3,6 +3,7 @@
 namespace rt {
 
 void Primitives::append(const Primitives& other) {
+    triangleShading_.append(other.triangleShading_, count<Triangle>());
     forEachKind([&]<class K>(std::type_identity<K>) {
         KindArray<K>& to = array<K>();
         const KindArray<K>& from = other.array<K>();
@@ -32,7 +33,7 @@ Aabb Primitives::bounds() const {
 }
 
 std::size_t Primitives::memoryBytes() const {
-    std::size_t bytes = 0;
+    std::size_t bytes = triangleShading_.memoryBytes();
     forEachArray([&](const auto& a) {
         bytes += a.items.capacity() * sizeof(a.items[0]) + a.materials.capacity() * sizeof(std::uint32_t);
     });

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/primitive_kinds.h"
+#include "geometry/triangle_shading.h"
 
 namespace rt {
 
@@ -126,6 +128,22 @@ public:
         });
         return v;
     }
+
+    // The index of primitive `id` in the array of kind K, if it is of that kind.
+    template <class K>
+    std::optional<std::uint32_t> indexIn(std::uint32_t id) const {
+        std::optional<std::uint32_t> index;
+        visitFrom<0>(id, [&](const auto& a, std::uint32_t i) {
+            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(a)>, KindArray<K>>) index = i;
+        });
+        return index;
+    }
+
+    // Vertex normals, texture coordinates and colours by triangle index, for shading only
+    // (geometry/triangle_shading.h); empty for scenes without them.
+    TriangleShading& triangleShading() { return triangleShading_; }
+    const TriangleShading& triangleShading() const { return triangleShading_; }
+
     // Calls f(primitive) with primitive `id` as its own type, and returns what f returns.
     template <class F>
     decltype(auto) visit(std::uint32_t id, F&& f) const {
@@ -147,6 +165,7 @@ public:
 
 private:
     typename ArraysOf<PrimitiveKinds>::type arrays_;
+    TriangleShading triangleShading_;
 };
 
 }  // namespace rt

@@ -72,7 +72,7 @@ UpAxis importerUpAxis(const std::string& format) { return format == k3dsImporter
 class AssimpSceneBuilder {
 public:
     AssimpSceneBuilder(const aiScene& ai, const std::string& file, const ImportOptions& options, ImportResult& out)
-        : ai_(ai), file_(file), options_(options), out_(out), assembly_(out) {}
+        : ai_(ai), file_(file), options_(options), out_(out), assembly_(out, options) {}
 
     void build(const Transform& root) {
         // 3DS file coordinates in the scene: the quarter turn about x with which Assimp's 3DS
@@ -128,18 +128,43 @@ private:
             points[i] = {float(v.x), float(v.y), float(v.z)};
         }
         ModelBuilder model = assembly_.newModel(mesh.mName.C_Str(), "mesh" + std::to_string(meshIndex));
-        for (unsigned f = 0; f < mesh.mNumFaces; ++f) addFace(mesh.mFaces[f], points, model, what);
+        const VertexData data = vertexData(mesh);
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) addFace(mesh.mFaces[f], points, data, model, what);
         return assembly_.addModel(std::move(model));
     }
 
+    // A mesh's normals, first texture coordinates and first colours; non-finite values read
+    // as 0. Assimp's v runs up the image (OpenGL), rt's down (glTF): v becomes 1 - v.
+    static VertexData vertexData(const aiMesh& mesh) {
+        const auto finite = [](ai_real v) { return std::isfinite(v) ? float(v) : 0.0f; };
+        VertexData data;
+        for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+            if (mesh.mNormals) {
+                const aiVector3D& n = mesh.mNormals[i];
+                data.normals.insert(data.normals.end(), {finite(n.x), finite(n.y), finite(n.z)});
+            }
+            if (mesh.mTextureCoords[0]) {
+                const aiVector3D& t = mesh.mTextureCoords[0][i];
+                data.uvs.insert(data.uvs.end(), {finite(t.x), 1 - finite(t.y)});
+            }
+            if (mesh.mColors[0]) {
+                const aiColor4D& c = mesh.mColors[0][i];
+                data.colors.insert(data.colors.end(), {finite(c.r), finite(c.g), finite(c.b)});
+            }
+        }
+        return data;
+    }
+
     // Triangles as they are; a polygon Triangulate left (it should leave none) as a fan.
-    void addFace(const aiFace& face, const std::vector<Point3f>& points, ModelBuilder& model, const std::string& what) {
+    void addFace(const aiFace& face, const std::vector<Point3f>& points, const VertexData& data, ModelBuilder& model,
+                 const std::string& what) {
         assembly_.countFaceWithoutArea(face.mNumIndices);
         for (unsigned i = 0; i < face.mNumIndices; ++i)
             if (face.mIndices[i] >= points.size())
                 fail(what + " has a face with vertex index " + std::to_string(face.mIndices[i]) + " out of range");
+        const unsigned* v = face.mIndices;
         for (unsigned i = 1; i + 1 < face.mNumIndices; ++i)
-            model.addTriangle(points[face.mIndices[0]], points[face.mIndices[i]], points[face.mIndices[i + 1]]);
+            model.addTriangleWithData(data.corner(points, v[0]), data.corner(points, v[i]), data.corner(points, v[i + 1]));
     }
 
     std::uint32_t materialFor(unsigned index) {
@@ -161,10 +186,33 @@ private:
         am.Get(AI_MATKEY_REFLECTIVITY, reflectivity);
         Material m = classicPhong(toColor(kd), toColor(ks) * (std::isfinite(strength) ? strength : 1), shininess);
         m.reflection = std::isfinite(reflectivity) ? std::clamp(reflectivity, 0.0f, 1.0f) : 0.0f;
+        aiColor3D ke(0, 0, 0);
+        am.Get(AI_MATKEY_COLOR_EMISSIVE, ke);
+        m.emission = toColor(ke);
+        m.colorTexture = diffuseTexture(am);
         aiString name;
         am.Get(AI_MATKEY_NAME, name);
         m.name = name.C_Str();
         return m;
+    }
+
+    // The first diffuse texture, a file relative to the model's folder (embedded ones, "*0",
+    // are not used), read by the first texture coordinates.
+    std::optional<std::uint32_t> diffuseTexture(const aiMaterial& am) {
+        aiString file;
+        aiTextureMapMode mode[2] = {aiTextureMapMode_Wrap, aiTextureMapMode_Wrap};
+        if (am.GetTexture(aiTextureType_DIFFUSE, 0, &file) != AI_SUCCESS || file.length == 0 || file.C_Str()[0] == '*')
+            return std::nullopt;
+        am.Get(AI_MATKEY_MAPPINGMODE_U(aiTextureType_DIFFUSE, 0), mode[0]);
+        am.Get(AI_MATKEY_MAPPINGMODE_V(aiTextureType_DIFFUSE, 0), mode[1]);
+        const auto wrap = [](aiTextureMapMode m) {
+            return m == aiTextureMapMode_Clamp ? Texture::Wrap::Clamp
+                   : m == aiTextureMapMode_Mirror ? Texture::Wrap::Mirror : Texture::Wrap::Repeat;
+        };
+        Texture t = textureBeside(file_, file.C_Str());
+        t.wrapS = wrap(mode[0]);
+        t.wrapT = wrap(mode[1]);
+        return addTexture(out_.scene, std::move(t));
     }
 
     static Color toColor(const aiColor3D& c) { return fileColor(c.r, c.g, c.b); }

@@ -266,6 +266,27 @@ std::vector<Point3f> GltfAccessorReader::points(int accessor, const std::string&
     return out;
 }
 
+std::vector<float> GltfAccessorReader::attribute(int accessor, int components, const std::string& what) const {
+    const std::string name = what + " (accessor " + std::to_string(accessor) + ")";
+    count(accessor, what);
+    const int type = gltf_.accessors[std::size_t(accessor)].type;
+    const bool colorWithAlpha = components == 3 && type == TINYGLTF_TYPE_VEC4;
+    const std::vector<double> values =
+        readAll(accessor, colorWithAlpha ? TINYGLTF_TYPE_VEC4 : components == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3,
+                what);
+    const std::size_t stride = colorWithAlpha ? 4 : std::size_t(components);
+    std::vector<float> out;
+    out.reserve(values.size() / stride * std::size_t(components));
+    for (std::size_t i = 0; i < values.size(); i += stride)
+        for (std::size_t c = 0; c < std::size_t(components); ++c) {
+            const double v = values[i + c];
+            if (!std::isfinite(v) || !std::isfinite(float(v)))
+                fail(name, "vertex " + std::to_string(i / stride) + " has a NaN or infinite value");
+            out.push_back(float(v));
+        }
+    return out;
+}
+
 std::vector<std::uint32_t> GltfAccessorReader::indices(int accessor, std::size_t vertexCount,
                                                        const std::string& what) const {
     const std::string name = what + " (accessor " + std::to_string(accessor) + ")";

@@ -156,7 +156,7 @@ class GltfSceneBuilder {
 public:
     GltfSceneBuilder(const tinygltf::Model& gltf, const std::string& file, const ImportOptions& options,
                      ImportResult& out)
-        : gltf_(gltf), file_(file), options_(options), out_(out), assembly_(out), reader_(gltf, file) {}
+        : gltf_(gltf), file_(file), options_(options), out_(out), assembly_(out, options), reader_(gltf, file) {}
 
     void build(const Transform& root) {
         const tinygltf::Scene& scene = gltf_.scenes[chooseScene()];
@@ -267,9 +267,31 @@ private:
             mesh.primitives.size() > 1 ? base + "_" + std::to_string(primitiveIndex) : base,
             "mesh" + std::to_string(meshIndex));
         model.reserveTriangles(corners.size() / 3);
+        const VertexData data = vertexData(prim, points.size(), what);
         for (std::size_t i = 0; i + 3 <= corners.size(); i += 3)
-            model.addTriangle(points[corners[i]], points[corners[i + 1]], points[corners[i + 2]]);
+            model.addTriangleWithData(data.corner(points, corners[i]), data.corner(points, corners[i + 1]),
+                              data.corner(points, corners[i + 2]));
         return assembly_.addModel(std::move(model));
+    }
+
+    // A primitive's NORMAL, TEXCOORD_0 and COLOR_0. One whose count differs from POSITION's
+    // is left out with a note: the geometry is still good.
+    VertexData vertexData(const tinygltf::Primitive& prim, std::size_t vertices, const std::string& what) {
+        VertexData data;
+        const auto read = [&](const char* attribute, int components, std::vector<float>& to) {
+            const auto found = prim.attributes.find(attribute);
+            if (found == prim.attributes.end()) return;
+            to = reader_.attribute(found->second, components, what + " " + attribute);
+            if (to.size() == vertices * std::size_t(components)) return;
+            assembly_.report().notes.push_back(what + " " + attribute + " has " +
+                                               std::to_string(to.size() / std::size_t(components)) + " values for " +
+                                               std::to_string(vertices) + " vertices: not used");
+            to.clear();
+        };
+        read("NORMAL", 3, data.normals);
+        read("TEXCOORD_0", 2, data.uvs);
+        read("COLOR_0", 3, data.colors);
+        return data;
     }
 
     std::optional<Topology> topologyOf(int mode, const std::string& what) {
@@ -305,11 +327,64 @@ private:
         m.name = "default";
         if (index >= 0) {
             const tinygltf::Material& gm = gltf_.materials[std::size_t(index)];
-            m = phongFromMetallicRoughness(metallicRoughness(gm, "material " + std::to_string(index)));
+            const std::string what = "material " + std::to_string(index);
+            m = phongFromMetallicRoughness(metallicRoughness(gm, what));
             m.name = gm.name;
-            if (gm.pbrMetallicRoughness.baseColorTexture.index >= 0) ++texturedMaterials_;
+            m.colorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture, what + " baseColorTexture");
+            m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
+            if (m.emission != Color{})
+                m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
         }
         return m;
+    }
+
+    float emissiveStrength(const tinygltf::Material& gm, const std::string& what) const {
+        const auto ext = gm.extensions.find("KHR_materials_emissive_strength");
+        if (ext == gm.extensions.end() || !ext->second.Has("emissiveStrength")) return 1;
+        return float(std::max(0.0, numberValue(ext->second.Get("emissiveStrength"), file_, what + " emissiveStrength")));
+    }
+
+    // The scene texture for a material's texture reference: its image must be a file beside
+    // the model (embedded images are not written yet: counted in a note), read by TEXCOORD_0.
+    template <class Info>
+    std::optional<std::uint32_t> textureFor(const Info& info, const std::string& what) {
+        if (info.index < 0) return std::nullopt;
+        if (std::size_t(info.index) >= gltf_.textures.size()) fail(what + " names texture " + std::to_string(info.index) + ", which does not exist");
+        const tinygltf::Texture& gt = gltf_.textures[std::size_t(info.index)];
+        if (gt.source < 0 || std::size_t(gt.source) >= gltf_.images.size()) return std::nullopt;
+        const tinygltf::Image& image = gltf_.images[std::size_t(gt.source)];
+        if (image.uri.empty() || image.uri.rfind("data:", 0) == 0 || info.texCoord != 0) {
+            ++unusedTextures_;
+            return std::nullopt;
+        }
+        Texture t = textureBeside(file_, image.uri);
+        if (!image.name.empty()) t.name = image.name;
+        if (gt.sampler >= 0 && std::size_t(gt.sampler) < gltf_.samplers.size()) {
+            t.wrapS = wrapOf(gltf_.samplers[std::size_t(gt.sampler)].wrapS);
+            t.wrapT = wrapOf(gltf_.samplers[std::size_t(gt.sampler)].wrapT);
+        }
+        readTextureTransform(info.extensions, t, what);
+        return addTexture(out_.scene, std::move(t));
+    }
+
+    static Texture::Wrap wrapOf(int glWrap) {
+        if (glWrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return Texture::Wrap::Clamp;
+        if (glWrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return Texture::Wrap::Mirror;
+        return Texture::Wrap::Repeat;
+    }
+
+    // KHR_texture_transform: offset, rotation, scale (texCoord overrides are not followed).
+    void readTextureTransform(const tinygltf::ExtensionMap& extensions, Texture& t, const std::string& what) const {
+        const auto ext = extensions.find("KHR_texture_transform");
+        if (ext == extensions.end()) return;
+        const tinygltf::Value& v = ext->second;
+        const auto pair = [&](const char* key, std::array<float, 2>& to) {
+            if (!v.Has(key) || !v.Get(key).IsArray() || v.Get(key).ArrayLen() < 2) return;
+            for (int i = 0; i < 2; ++i) to[std::size_t(i)] = float(numberValue(v.Get(key).Get(i), file_, what + " " + key));
+        };
+        pair("offset", t.offset);
+        pair("scale", t.scale);
+        if (v.Has("rotation")) t.rotation = float(numberValue(v.Get("rotation"), file_, what + " rotation"));
     }
 
     MetallicRoughness metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
@@ -318,6 +393,12 @@ private:
         in.baseColor = color(pbr.baseColorFactor, what + " baseColorFactor");
         in.metallic = float(finiteNumber(pbr.metallicFactor, file_, what + " metallicFactor"));
         in.roughness = float(finiteNumber(pbr.roughnessFactor, file_, what + " roughnessFactor"));
+        // The texture, which a Phong material cannot follow per hit, usually holds the real
+        // values and leaves the factors at 1 (rough metal): take a dielectric of middle roughness.
+        if (pbr.metallicRoughnessTexture.index >= 0) {
+            in.metallic = 0;
+            in.roughness *= 0.5f;
+        }
         const auto ior = gm.extensions.find("KHR_materials_ior");
         if (ior != gm.extensions.end() && ior->second.Has("ior"))
             in.ior = float(numberValue(ior->second.Get("ior"), file_, what + " ior"));
@@ -431,10 +512,10 @@ private:
     }
 
     void noteTextures() {
-        if (texturedMaterials_)
-            out_.report.notes.push_back(
-                std::to_string(texturedMaterials_) +
-                " material(s) have a base colour texture, which is ignored (the factor is kept)");
+        if (unusedTextures_)
+            out_.report.notes.push_back(std::to_string(unusedTextures_) +
+                                        " texture reference(s) to embedded images or other texture coordinates than "
+                                        "TEXCOORD_0 are not used (the factor is kept)");
     }
 
     const tinygltf::Model& gltf_;
@@ -446,7 +527,7 @@ private:
     std::set<int> meshesPlaced_;
     std::vector<Placed> cameras_;
     std::vector<Placed> lights_;
-    std::size_t texturedMaterials_ = 0;
+    std::size_t unusedTextures_ = 0;
 };
 
 }  // namespace

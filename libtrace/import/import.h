@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/names.h"
+#include "scene/crease_normals.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -36,6 +37,10 @@ struct ImportOptions {
     std::optional<UpAxis> upAxis;
     double aspect = 4.0 / 3.0;  // width/height used to turn a vertical fov into rt's horizontal
                                 // one when the file gives no aspect ratio
+    // Meshes without vertex normals get them by crease angle (scene/crease_normals.h), unless
+    // `flat` (rt-convert --flat): then they keep their facets.
+    bool flat = false;
+    double creaseDegrees = kDefaultCreaseDegrees;
 };
 
 // ImportOptions::camera value (rt-convert --camera auto) that ignores the file's cameras.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace rt {
 
@@ -15,6 +16,66 @@ bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Poin
     for (const Point3f* p : {&a, &b, &c})
         model.triangleVertices.insert(model.triangleVertices.end(), p->begin(), p->end());
     return true;
+}
+
+namespace {
+
+// One per-corner array of a model: its floats per corner and its neutral value.
+struct CornerArray {
+    std::vector<float> Model::*values;
+    const float* Corner::*source;
+    std::size_t floats;
+    float neutral;
+};
+constexpr CornerArray kCornerArrays[] = {
+    {&Model::vertexNormals, &Corner::normal, 3, 0},
+    {&Model::vertexUvs, &Corner::uv, 2, 0},
+    {&Model::vertexColors, &Corner::color, 3, 1},
+};
+
+}  // namespace
+
+bool appendTriangleWithData(Model& model, const Corner& a, const Corner& b, const Corner& c) {
+    if (!appendTriangle(model, a.point, b.point, c.point)) return false;
+    const std::size_t before = model.triangleCount() - 1;
+    for (const CornerArray& array : kCornerArrays) {
+        std::vector<float>& to = model.*array.values;
+        const bool has = a.*array.source || b.*array.source || c.*array.source;
+        if (!has && to.empty()) continue;
+        to.resize(before * 3 * array.floats, array.neutral);
+        for (const Corner* corner : {&a, &b, &c}) {
+            const float* from = corner->*array.source;
+            for (std::size_t i = 0; i < array.floats; ++i) to.push_back(from ? from[i] : array.neutral);
+        }
+    }
+    return true;
+}
+
+void finishCornerData(Model& model) {
+    for (const CornerArray& array : kCornerArrays) {
+        std::vector<float>& values = model.*array.values;
+        if (!values.empty()) values.resize(model.triangleCount() * 3 * array.floats, array.neutral);
+    }
+    // Files store normals of any length (quantized, scaled); zero ones stay zero: flat.
+    std::vector<float>& n = model.vertexNormals;
+    for (std::size_t i = 0; i + 3 <= n.size(); i += 3) {
+        const double len = std::sqrt(double(n[i]) * n[i] + double(n[i + 1]) * n[i + 1] + double(n[i + 2]) * n[i + 2]);
+        if (len > 0)
+            for (std::size_t a = 0; a < 3; ++a) n[i + a] = float(n[i + a] / len);
+    }
+}
+
+Texture textureBeside(const std::string& modelPath, const std::string& file) {
+    Texture t;
+    t.name = std::filesystem::path(file).stem().string();
+    t.path = (std::filesystem::path(modelPath).parent_path() / file).string();
+    t.file = t.path;
+    return t;
+}
+
+std::uint32_t addTexture(Scene& scene, Texture texture) {
+    scene.textures.push_back(std::move(texture));
+    return std::uint32_t(scene.textures.size() - 1);
 }
 
 Color fileColor(float r, float g, float b) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "core/aabb.h"
 #include "scene/scene.h"
@@ -16,6 +17,44 @@ using Point3f = std::array<float, 3>;
 // the precision the model is stored in; returns false when it was dropped. The points
 // must be finite (the importers reject files with NaN or infinite positions).
 bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Point3f& c);
+
+// A triangle corner as a file gives it: its point and the per-vertex data the file has
+// (each a pointer to that vertex's floats, or null).
+struct Corner {
+    Point3f point;
+    const float* normal = nullptr;  // 3 floats
+    const float* uv = nullptr;      // 2 floats, glTF's convention (v down the image)
+    const float* color = nullptr;   // 3 floats, linear RGB
+};
+
+// A mesh's per-vertex data as the importers read it: 3, 2 and 3 floats per vertex, each
+// array empty when the mesh does not have it.
+struct VertexData {
+    std::vector<float> normals, uvs, colors;
+
+    // The corner at vertex `v` of `points`, with the data there is for it.
+    Corner corner(const std::vector<Point3f>& points, std::size_t v) const {
+        const auto at = [v](const std::vector<float>& values, std::size_t n) {
+            return values.empty() ? nullptr : &values[v * n];
+        };
+        return {points[v], at(normals, 3), at(uvs, 2), at(colors, 3)};
+    }
+};
+
+// appendTriangle with the corners' data appended to the model's per-corner arrays. An array
+// starts with the first triangle that has the data; the triangles before it, and corners
+// without it, get the neutral value (zero normal: flat; uv 0, 0; white).
+bool appendTriangleWithData(Model& model, const Corner& a, const Corner& b, const Corner& c);
+
+// Pads the model's per-corner arrays with neutral values to cover every triangle, and makes
+// its normals unit length.
+void finishCornerData(Model& model);
+
+// An image texture that a model file names relative to its own folder (repeating, no transform).
+Texture textureBeside(const std::string& modelPath, const std::string& file);
+
+// Adds a texture to the scene; returns its index.
+std::uint32_t addTexture(Scene& scene, Texture texture);
 
 // A colour read from a file: NaN, infinite and negative channels read as 0.
 Color fileColor(float r, float g, float b);

@@ -3,6 +3,7 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <filesystem>
@@ -72,43 +73,53 @@ private:
 
 // What a material defines that rt's Phong material drops, counted for the notes.
 struct DroppedMaterialData {
-    std::size_t textured = 0;     // any map_* or bump/disp/refl texture
-    std::size_t emissive = 0;     // Ke not black
+    std::size_t textured = 0;     // any map_* or bump/disp/refl texture but map_Kd
     std::size_t transparent = 0;  // d < 1 (or Tr > 0)
 
     void count(const tinyobj::material_t& m) {
         const std::string* maps[] = {
-            &m.ambient_texname,   &m.diffuse_texname,      &m.specular_texname, &m.specular_highlight_texname,
+            &m.ambient_texname,   &m.specular_texname,     &m.specular_highlight_texname,
             &m.bump_texname,      &m.displacement_texname, &m.alpha_texname,    &m.reflection_texname,
             &m.roughness_texname, &m.metallic_texname,     &m.sheen_texname,    &m.emissive_texname,
             &m.normal_texname};
         textured += std::any_of(std::begin(maps), std::end(maps), [](const std::string* t) { return !t->empty(); });
-        emissive += m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0;
         transparent += m.dissolve < 1;
     }
 
     void note(std::vector<std::string>& notes) const {
-        if (textured) notes.push_back(std::to_string(textured) + " material(s) with texture maps: textures ignored");
-        if (emissive) notes.push_back(std::to_string(emissive) + " material(s) with emission (Ke): emission ignored");
+        if (textured)
+            notes.push_back(std::to_string(textured) + " material(s) with texture maps other than map_Kd: those ignored");
         if (transparent)
             notes.push_back(std::to_string(transparent) + " material(s) partly transparent (d, Tr): rendered opaque");
     }
 };
 
 // Kd, Ks and Ns as classic Phong; illum 3 ("reflection on, ray trace on") mirrors with
-// lum(Ks) as well (docs/conversion.md).
+// lum(Ks) as well; Ke is the emission (docs/conversion.md).
 Material materialFromMtl(const tinyobj::material_t& mtl) {
     const auto color = [](const tinyobj::real_t(&c)[3]) { return fileColor(c[0], c[1], c[2]); };
     Material m = classicPhong(color(mtl.diffuse), color(mtl.specular), mtl.shininess);
     if (mtl.illum == 3) m.reflection = m.specular;
+    m.emission = color(mtl.emission);
     return m;
+}
+
+// map_Kd as a texture, its file relative to the .obj's folder. OBJ's -o and -s work with v up
+// the image; rt's v runs down (v' = 1 - v), so the v offset becomes 1 - s - o.
+Texture diffuseTexture(const tinyobj::material_t& mtl, const std::string& objPath) {
+    Texture t = textureBeside(objPath, mtl.diffuse_texname);
+    const tinyobj::texture_option_t& o = mtl.diffuse_texopt;
+    t.wrapS = t.wrapT = o.clamp ? Texture::Wrap::Clamp : Texture::Wrap::Repeat;
+    t.scale = {float(o.scale[0]), float(o.scale[1])};
+    t.offset = {float(o.origin_offset[0]), float(1 - o.scale[1] - o.origin_offset[1])};
+    return t;
 }
 
 
 class ObjSceneBuilder {
 public:
-    ObjSceneBuilder(const std::string& path, ImportResult& out)
-        : path_(path), file_(path), out_(out), assembly_(out) {}
+    ObjSceneBuilder(const std::string& path, const ImportOptions& options, ImportResult& out)
+        : path_(path), file_(path), out_(out), assembly_(out, options) {}
 
     void read() {
         tinyobj::callback_t callbacks;
@@ -116,6 +127,13 @@ public:
         // what it cannot parse as 0.
         callbacks.vertex_cb = [](void* self, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t) {
             static_cast<ObjSceneBuilder*>(self)->vertex();
+        };
+        callbacks.normal_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
+            static_cast<ObjSceneBuilder*>(self)->normals_.push_back({finite(x), finite(y), finite(z)});
+        };
+        // OBJ's v runs up the image, rt's down (glTF's convention).
+        callbacks.texcoord_cb = [](void* self, tinyobj::real_t u, tinyobj::real_t v, tinyobj::real_t) {
+            static_cast<ObjSceneBuilder*>(self)->uvs_.push_back({finite(u), 1 - finite(v)});
         };
         callbacks.index_cb = [](void* self, tinyobj::index_t* corners, int count) {
             static_cast<ObjSceneBuilder*>(self)->face(corners, count);
@@ -149,6 +167,9 @@ public:
             assembly_.place(convertPart(part), [&] { return materialFor(part.material); }, root);
         out_.report.meshes = out_.scene.models.size();
         dropped_.note(out_.report.notes);
+        if (undefinedData_)
+            out_.report.notes.push_back(std::to_string(undefinedData_) +
+                                        " face corner(s) name texture coordinates or normals that are not defined: ignored");
         if (fannedConcave_)
             out_.report.notes.push_back(std::to_string(fannedConcave_) +
                                         " concave polygon(s) with more than " + std::to_string(kMaxEarClippedCorners) +
@@ -156,21 +177,33 @@ public:
     }
 
 private:
-    // The faces of one object, group and material, as corner indices (3 per triangle).
+    static constexpr std::uint32_t kNone = ~0u;
+    // A face corner: indices of its position, texture coordinates and normal (kNone: not given).
+    struct ObjCorner {
+        std::uint32_t v, vt = kNone, vn = kNone;
+    };
+
+    // The faces of one object, group and material, as corners (3 per triangle).
     // Deques grow without copying, so the peak stays near the data itself.
     struct Part {
         std::string name;
         int material = -1;
-        std::deque<std::uint32_t> corners;
+        std::deque<ObjCorner> corners;
     };
+
+    static float finite(tinyobj::real_t v) { return std::isfinite(v) ? float(v) : 0.0f; }
+
+    Corner corner(const ObjCorner& c) const {
+        return {positions_[c.v], c.vn == kNone ? nullptr : normals_[c.vn].data(),
+                c.vt == kNone ? nullptr : uvs_[c.vt].data()};
+    }
 
     // Each part is converted once and placed once, so no cache is needed.
     ConvertedMesh convertPart(Part& part) {
         ModelBuilder model = assembly_.newModel(part.name, "mesh");
         model.reserveTriangles(part.corners.size() / 3);
         for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3)
-            model.addTriangle(positions_[part.corners[i]], positions_[part.corners[i + 1]],
-                              positions_[part.corners[i + 2]]);
+            model.addTriangleWithData(corner(part.corners[i]), corner(part.corners[i + 1]), corner(part.corners[i + 2]));
         part.corners = {};  // free as we go: the models take their place
         return assembly_.addModel(std::move(model));
     }
@@ -202,13 +235,26 @@ private:
         return std::uint32_t(resolved);
     }
 
+    // A texture coordinate or normal index, counted as vertices are; 0 means none. One that
+    // is not defined is ignored and counted (files that worked before data was read keep working).
+    template <class Deque>
+    std::uint32_t dataIndex(int index, const Deque& values) {
+        const long long resolved = index > 0 ? index - 1LL : (long long)values.size() + index;
+        if (index == 0) return kNone;
+        if (resolved >= 0 && resolved < (long long)values.size()) return std::uint32_t(resolved);
+        ++undefinedData_;
+        return kNone;
+    }
+
     void face(const tinyobj::index_t* corners, int count) {
         checkLineLength();
         if (!isObjFace(file_.lineText()))
             fail("face corners are not v, v/t, v//n or v/t/n with vertex numbers of at most 9 digits: \"" +
                  std::string(file_.lineText()) + "\"");
         polygon_.clear();
-        for (int i = 0; i < count; ++i) polygon_.push_back(vertexIndex(corners[i].vertex_index));
+        for (int i = 0; i < count; ++i)
+            polygon_.push_back({vertexIndex(corners[i].vertex_index),
+                                dataIndex(corners[i].texcoord_index, uvs_), dataIndex(corners[i].normal_index, normals_)});
         assembly_.countFaceWithoutArea(std::size_t(count));
         if (count < 3) return;
         if (count > 3) dropRepeatedCorners();
@@ -216,10 +262,10 @@ private:
         assembly_.dropDegenerate(std::size_t(count) - std::max<std::size_t>(polygon_.size(), 2));
         if (polygon_.size() < 3) return;
         cornerPositions_.clear();
-        for (const std::uint32_t v : polygon_) cornerPositions_.push_back(positions_[v]);
+        for (const ObjCorner& c : polygon_) cornerPositions_.push_back(positions_[c.v]);
         triangles_.clear();
         if (!triangulatePolygon(cornerPositions_, triangles_)) ++fannedConcave_;
-        std::deque<std::uint32_t>& out = currentPart().corners;
+        std::deque<ObjCorner>& out = currentPart().corners;
         for (const std::uint32_t corner : triangles_) out.push_back(polygon_[corner]);
     }
 
@@ -227,7 +273,7 @@ private:
     // ear clipping cannot place; it is triangulated without the repeat, whose triangle (of
     // no area) counts as a dropped degenerate one.
     void dropRepeatedCorners() {
-        const auto same = [&](std::uint32_t a, std::uint32_t b) { return positions_[a] == positions_[b]; };
+        const auto same = [&](const ObjCorner& a, const ObjCorner& b) { return positions_[a.v] == positions_[b.v]; };
         polygon_.erase(std::unique(polygon_.begin(), polygon_.end(), same), polygon_.end());
         while (polygon_.size() > 1 && same(polygon_.front(), polygon_.back())) polygon_.pop_back();
     }
@@ -276,6 +322,7 @@ private:
         dropped_.count(mtl);
         Material m = materialFromMtl(mtl);
         m.name = mtl.name;
+        if (!mtl.diffuse_texname.empty()) m.colorTexture = addTexture(out_.scene, diffuseTexture(mtl, path_));
         return m;
     }
 
@@ -284,6 +331,8 @@ private:
     ImportResult& out_;
     SceneAssembly<std::size_t, int> assembly_;  // materials by .mtl index (models are not looked up)
     std::deque<Point3f> positions_;
+    std::deque<std::array<float, 3>> normals_;
+    std::deque<std::array<float, 2>> uvs_;
     std::vector<tinyobj::material_t> mtl_;
     std::string object_, group_;
     int material_ = -1;
@@ -293,7 +342,9 @@ private:
     std::set<std::string> missingMaterials_;  // each named once in the notes
     DroppedMaterialData dropped_;             // of the materials used
     std::size_t fannedConcave_ = 0;
-    std::vector<std::uint32_t> polygon_, triangles_;  // scratch for face()
+    std::size_t undefinedData_ = 0;  // corners naming a vt or vn that is not defined
+    std::vector<ObjCorner> polygon_;  // scratch for face()
+    std::vector<std::uint32_t> triangles_;
     std::vector<Point3f> cornerPositions_;
 };
 
@@ -303,7 +354,7 @@ ImportResult importObj(const std::string& path, const ImportOptions& options) {
     if (!options.camera.empty()) throw InputError(path + ": OBJ files hold no cameras, so --camera cannot pick one");
     ImportResult result;
     result.report.format = "Wavefront OBJ";
-    ObjSceneBuilder builder(path, result);
+    ObjSceneBuilder builder(path, options, result);
     builder.read();
     builder.build(rootTransform(options));
     return result;

@@ -8,8 +8,9 @@
 // - one Material per material of the file (MaterialKey), made the first time an instance uses it;
 // - one Instance per placement of a model that kept triangles.
 // An importer reads its format and hands the assembly keys, corner points and materials; how to
-// add one is in docs/architecture.md. Per-corner data (normals, texture coordinates) belongs in
-// ModelBuilder::addTriangle, beside the corner points.
+// add one is in docs/architecture.md. Per-corner data (normals, texture coordinates, colours)
+// comes with the corner points (Corner); meshes without normals get them by crease angle
+// unless ImportOptions::flat.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +23,7 @@
 #include "import/import.h"
 #include "import/mesh_data.h"
 #include "scene/names.h"
+#include "scene/crease_normals.h"
 
 namespace rt {
 
@@ -43,10 +45,17 @@ public:
     void addTriangle(const Point3f& a, const Point3f& b, const Point3f& c) {
         if (!appendTriangle(model_, a, b, c)) ++dropped_;
     }
+    void addTriangleWithData(const Corner& a, const Corner& b, const Corner& c) {
+        if (!appendTriangleWithData(model_, a, b, c)) ++dropped_;
+    }
 
     std::size_t dropped() const { return dropped_; }
 
-    Model take() { return std::move(model_); }
+    // The model, its per-corner arrays covering every triangle.
+    Model take() {
+        finishCornerData(model_);
+        return std::move(model_);
+    }
 
 private:
     Model model_;
@@ -56,7 +65,8 @@ private:
 template <class MeshKey, class MaterialKey>
 class SceneAssembly {
 public:
-    explicit SceneAssembly(ImportResult& out) : out_(out) {}
+    explicit SceneAssembly(ImportResult& out, const ImportOptions& options = {})
+        : out_(out), creaseDegrees_(options.flat ? std::nullopt : std::optional(options.creaseDegrees)) {}
 
     ImportReport& report() { return out_.report; }
 
@@ -72,6 +82,7 @@ public:
         out_.report.droppedDegenerate += converted.dropped;
         Model model = built.take();
         if (model.triangleCount() == 0) return converted;
+        if (creaseDegrees_) addCreaseNormals(model, *creaseDegrees_);
         out_.scene.models.push_back(std::move(model));
         converted.model = std::uint32_t(out_.scene.models.size() - 1);
         return converted;
@@ -123,6 +134,7 @@ public:
 
 private:
     ImportResult& out_;
+    std::optional<double> creaseDegrees_;  // none: meshes without normals stay flat
     std::map<MeshKey, ConvertedMesh> meshes_;
     std::map<MaterialKey, std::uint32_t> materials_;
     NameTable modelNames_;

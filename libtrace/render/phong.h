@@ -15,13 +15,14 @@
 
 namespace rt {
 
+// surfaceColor: the material's colour where the light falls (tinted by vertex colours);
 // n: unit normal facing the viewer; toLight, toViewer: unit vectors from the surface point.
-inline Color phongLight(const Material& m, const Vec3& n, const Vec3& toLight, const Vec3& toViewer,
-                        const Color& lightColor) {
+inline Color phongLight(const Material& m, const Color& surfaceColor, const Vec3& n, const Vec3& toLight,
+                        const Vec3& toViewer, const Color& lightColor) {
     assert(isUnitLength(n) && isUnitLength(toLight) && isUnitLength(toViewer));  // else (R.V)^n is unbounded
     const Real cosine = dot(n, toLight);
     if (cosine <= 0) return {};
-    Color c = lightColor * m.color * (m.diffuse * float(cosine));
+    Color c = lightColor * surfaceColor * (m.diffuse * float(cosine));
     if (m.specular > 0) {
         const Vec3 mirrored = n * (2 * cosine) - toLight;
         const Real rv = dot(mirrored, toViewer);
@@ -32,7 +33,9 @@ inline Color phongLight(const Material& m, const Vec3& n, const Vec3& toLight, c
 
 // The ambient term k_a i_a. The thesis takes i_a as the sum of the lights' intensities,
 // precomputed once per scene; it is tinted by the surface colour like the diffuse part.
-inline Color phongAmbient(const Material& m, const Color& ambientLight) { return ambientLight * m.color * m.ambient; }
+inline Color phongAmbient(const Color& surfaceColor, const Material& m, const Color& ambientLight) {
+    return ambientLight * surfaceColor * m.ambient;
+}
 
 // The mirror direction of a unit direction d about the unit normal n (thesis 2.1.3, b = a - 2(a.n)n).
 // The result is unit only if both are: |b|^2 = |a|^2 + 4 (a.n)^2 (|n|^2 - 1).

@@ -42,9 +42,9 @@ std::vector<PixelWindow> spreadOut(const std::vector<PixelWindow>& blocks) {
 }  // namespace
 
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
-                   const RenderProgress& progress) {
+                   const RenderProgress& progress, const ImageTextures* images) {
     validate(settings);
-    const Tracer tracer(scene, accel, settings);
+    const Tracer tracer(scene, accel, settings, images);
     Framebuffer image(settings.width, settings.height, settings.window(), scene.background, settings.aovs);
     const std::vector<PixelWindow> blocks = spreadOut(blocksOf(settings.window()));
     const int total = int(blocks.size());

@@ -10,6 +10,7 @@
 #include "render/framebuffer.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
+#include "render/texture.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -24,8 +25,9 @@ using RenderProgress = std::function<void(std::uint64_t samplesDone, std::uint64
 // Renders settings.window() of the scene. Fills the render part of `stats` (render time,
 // rays, tests, non-finite samples written as black, objects, lights, threads); preprocessing
 // time and tree nodes are the caller's.
+// Image textures are looked up through `images` (none: they are white).
 // Throws rt::InputError for bad settings or a degenerate camera.
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
-                   const RenderProgress& progress = {});
+                   const RenderProgress& progress = {}, const ImageTextures* images = nullptr);
 
 }  // namespace rt

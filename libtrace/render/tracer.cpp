@@ -40,9 +40,10 @@ Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
 
 }  // namespace
 
-Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings)
+Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+               const ImageTextures* images)
     : scene_(scene), accel_(accel), settings_(settings), camera_(scene.camera, settings.width, settings.height),
-      epsilon_(sceneEpsilon(scene.primitives)) {
+      epsilon_(sceneEpsilon(scene.primitives)), images_(images) {
     for (const Light& light : scene.lights) ambientLight_ += light.color;
 }
 
@@ -116,34 +117,44 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                     RenderCounters& counters) const {
-    const Vec3 p = ray.at(hit.t);
-    Vec3 n = scene_.primitives.normal(hit.prim, p);
-    if (dot(n, ray.direction) > 0) n = -n;  // surfaces are two-sided: light the side the ray sees
+    const SurfacePoint s = surfaceAt(scene_.primitives, ray, hit);
     const Material& m = materialOf(scene_, hit.prim);
+    const Color color = surfaceColor(m, s);
     const Vec3 toViewer = -ray.direction;
 
-    Color c = phongAmbient(m, ambientLight_);
+    Color c = phongAmbient(color, m, ambientLight_) + emitted(m, s);
     for (const Light& light : scene_.lights) {
-        const Vec3 toLight = normalize(light.position - p);
-        if (dot(n, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
-        const float seen = visibility(p, n, light, inBundle, rng, counters);
-        if (seen > 0) c += phongLight(m, n, toLight, toViewer, light.color) * seen;
+        const Vec3 toLight = normalize(light.position - s.point);
+        if (dot(s.shadingNormal, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
+        const float seen = visibility(s, light, inBundle, rng, counters);
+        if (seen > 0) c += phongLight(m, color, s.shadingNormal, toLight, toViewer, light.color) * seen;
     }
     // Thesis 2.1, step 6: the reflected intensity is added to the local one.
     if (m.reflection > 0 && depth < settings_.reflectionDepth)
-        c += reflection(p, n, ray.direction, m, depth, inBundle, rng, counters) * m.reflection;
+        c += reflection(s, ray.direction, m, depth, inBundle, rng, counters) * m.reflection;
     return c;
 }
 
-float Tracer::visibility(const Vec3& p, const Vec3& n, const Light& light, bool inBundle, SampleRng& rng,
+Color Tracer::surfaceColor(const Material& m, const SurfacePoint& s) const {
+    const Color c = m.color * s.tint;
+    return m.colorTexture ? c * textureColor(scene_, *m.colorTexture, s, images_) : c;
+}
+
+// Whitted's model has no light transport from surfaces: an emitter is seen (directly, in
+// mirrors), but lights nothing else.
+Color Tracer::emitted(const Material& m, const SurfacePoint& s) const {
+    return m.emissionTexture ? m.emission * textureColor(scene_, *m.emissionTexture, s, images_) : m.emission;
+}
+
+float Tracer::visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
                          RenderCounters& counters) const {
     if (!settings_.shadows) return 1;
-    const Vec3 origin = p + n * epsilon_;
+    const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
     const bool area = settings_.softShadows && light.size > 0;
     const int samples = area && !inBundle ? settings_.distributedSamples : 1;
     const Vec3 axis = area ? normalize(light.position - origin) : Vec3{};  // only area lights need it
     int visible = 0;
-    for (int s = 0; s < samples; ++s) {
+    for (int i = 0; i < samples; ++i) {
         const Vec3 target = area ? pointOnDisc(light.position, axis, light.size, rng) : light.position;
         const Vec3 d = target - origin;
         const Real distance = length(d);
@@ -153,10 +164,11 @@ float Tracer::visibility(const Vec3& p, const Vec3& n, const Light& light, bool 
     return samples == 1 ? float(visible) : float(visible) / float(samples);
 }
 
-Color Tracer::reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Material& m, int depth,
-                         bool inBundle, SampleRng& rng, RenderCounters& counters) const {
-    const Vec3 origin = p + n * epsilon_;
-    const Vec3 r = mirror(dir, n);
+Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
+                         SampleRng& rng, RenderCounters& counters) const {
+    const Vec3 origin = s.point + s.geometricNormal * epsilon_;
+    Vec3 r = mirror(dir, s.shadingNormal);
+    if (dot(r, s.geometricNormal) <= 0) r = mirror(r, s.geometricNormal);  // a shading normal can send it inside
     if (!settings_.glossyReflections || !(m.spread > 0)) {
         ++counters.reflection.rays;
         return trace({origin, r}, depth + 1, inBundle, rng, counters);
@@ -167,11 +179,11 @@ Color Tracer::reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Ma
     orthonormalBasis(r, t, b);
     const int samples = inBundle ? 1 : settings_.distributedSamples;
     Color sum;
-    for (int s = 0; s < samples; ++s) {
+    for (int i = 0; i < samples; ++i) {
         Real g1, g2;
         rng.normalPair(g1, g2);
         Vec3 d = normalize(r + (t * g1 + b * g2) * Real(m.spread));
-        if (dot(d, n) <= 0) d = mirror(d, n);  // below the surface: fold it back above
+        if (dot(d, s.geometricNormal) <= 0) d = mirror(d, s.geometricNormal);  // below the surface: fold it back above
         ++counters.reflection.rays;
         sum += trace({origin, d}, depth + 1, true, rng, counters);
     }

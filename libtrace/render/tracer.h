@@ -14,14 +14,18 @@
 #include "render/render_settings.h"
 #include "render/render_stats.h"
 #include "render/sampling.h"
+#include "render/surface.h"
+#include "render/texture.h"
 #include "scene/scene.h"
 
 namespace rt {
 
 class Tracer {
 public:
-    // The scene must be flattened and `accel` built over scene.primitives; both must outlive the tracer.
-    Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings);
+    // The scene must be flattened and `accel` built over scene.primitives; both, and `images`
+    // (the lookups of image textures, none: white), must outlive the tracer.
+    Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+           const ImageTextures* images = nullptr);
 
     // The linear colour of pixel (x, y): the mean of its camera samples. A sample that comes
     // out NaN or infinite counts as black and is recorded in counters.nonFinite. `coverage`
@@ -43,12 +47,15 @@ private:
     void addHit(PixelAovs& aovs, const Ray& ray, const Hit& hit, bool first) const;
     static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
                         const RenderCounters& after);
+    // The material's colour at the surface (vertex colour and texture applied), and what it emits.
+    Color surfaceColor(const Material& m, const SurfacePoint& s) const;
+    Color emitted(const Material& m, const SurfacePoint& s) const;
     Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
-    // Fraction of `light` seen from p (1 without shadows); n faces the side p is lit from.
-    float visibility(const Vec3& p, const Vec3& n, const Light& light, bool inBundle, SampleRng& rng,
+    // Fraction of `light` seen from the surface (1 without shadows).
+    float visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
                      RenderCounters& counters) const;
-    Color reflection(const Vec3& p, const Vec3& n, const Vec3& dir, const Material& m, int depth, bool inBundle,
+    Color reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
                      SampleRng& rng, RenderCounters& counters) const;
 
     const Scene& scene_;
@@ -57,6 +64,7 @@ private:
     CameraRays camera_;
     Color ambientLight_;
     Real epsilon_;
+    const ImageTextures* images_;
 };
 
 }  // namespace rt

@@ -9,6 +9,33 @@ namespace rt {
 
 namespace {
 
+// Triangle `i`'s values from one of a model's per-corner arrays.
+template <class T>
+T cornerValues(const std::vector<float>& from, std::size_t i) {
+    T to;
+    std::copy_n(from.begin() + std::ptrdiff_t(i * to.values.size()), to.values.size(), to.values.begin());
+    return to;
+}
+
+// The normals of triangle `i` placed by `xf` (inverse transpose, renormalised); zeros stay zeros.
+CornerNormals placedNormals(const Model& model, std::size_t i, const Transform& xf) {
+    CornerNormals n = cornerValues<CornerNormals>(model.vertexNormals, i);
+    for (int c = 0; c < 3; ++c) {
+        const Vec3 placed = xf.normal(n.corner(c));
+        const Real len = length(placed);
+        if (!(len > 0)) continue;
+        for (int a = 0; a < 3; ++a) n.values[3 * c + a] = float(placed[a] / len);
+    }
+    return n;
+}
+
+// Gives the triangle just added as number `index` the model's shading data for its triangle `i`.
+void addShading(const Model& model, std::size_t i, const Transform& xf, std::size_t index, TriangleShading& to) {
+    if (!model.vertexNormals.empty()) to.normals.set(index, placedNormals(model, i, xf));
+    if (!model.vertexUvs.empty()) to.uvs.set(index, cornerValues<CornerUvs>(model.vertexUvs, i));
+    if (!model.vertexColors.empty()) to.colors.set(index, cornerValues<CornerColors>(model.vertexColors, i));
+}
+
 // Adds one instance of a model to `out`. A sphere under a non-uniform scale would be
 // an ellipsoid, which the renderer has no primitive for: its radius takes the largest
 // stretch of the transform.
@@ -16,13 +43,15 @@ std::size_t addInstance(const Model& model, const Instance& inst, Primitives& ou
     std::size_t dropped = 0;
     const Transform& xf = inst.transform;
     const std::vector<float>& v = model.triangleVertices;
-    for (std::size_t i = 0; i + 9 <= v.size(); i += 9) {
-        const Triangle t{xf.point({v[i], v[i + 1], v[i + 2]}), xf.point({v[i + 3], v[i + 4], v[i + 5]}),
-                         xf.point({v[i + 6], v[i + 7], v[i + 8]})};
-        if (t.degenerate())
+    for (std::size_t i = 0; i < model.triangleCount(); ++i) {
+        const float* c = &v[9 * i];
+        const Triangle t{xf.point({c[0], c[1], c[2]}), xf.point({c[3], c[4], c[5]}), xf.point({c[6], c[7], c[8]})};
+        if (t.degenerate()) {
             ++dropped;
-        else
-            out.add<Triangle>(t, inst.material);
+            continue;
+        }
+        addShading(model, i, xf, out.count<Triangle>(), out.triangleShading());
+        out.add<Triangle>(t, inst.material);
     }
     const std::vector<float>& s = model.sphereData;
     const Real radiusScale = xf.maxScale();

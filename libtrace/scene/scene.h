@@ -5,6 +5,7 @@
 // that accelerators and the renderer use.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,6 +18,24 @@
 
 namespace rt {
 
+// A texture a material takes colour from (docs/scene-format.md, <textures>; rt extension).
+// An image is looked up by the hit's texture coordinates, transformed as KHR_texture_transform
+// does (scale, then rotate, then offset); a checker is a solid 3-D checkerboard of cubes of
+// side `size` in world space, alternating colorA and colorB (thesis chapter 5's procedural textures).
+struct Texture {
+    enum class Kind { Image, Checker };
+    enum class Wrap { Repeat, Clamp, Mirror };
+    std::string name;
+    Kind kind = Kind::Image;
+    std::string file{};  // Image: as the scene gives it
+    std::string path{};  // Image: the file to read (`file` resolved against the scene's folder)
+    Wrap wrapS = Wrap::Repeat, wrapT = Wrap::Repeat;
+    std::array<float, 2> offset{0, 0}, scale{1, 1};
+    float rotation = 0;  // radians
+    Color colorA{1, 1, 1}, colorB{0, 0, 0};
+    float size = 1;
+};
+
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -27,6 +46,11 @@ struct Material {
     float shininess = 20.0f;  // n, the sharpness of the highlight
     float reflection = 0.0f;  // mirror reflectivity, 0-1
     float spread = 0.0f;      // sigma of the glossy reflection lobe (thesis 2.6.2), radians
+    // rt extensions: the colour is multiplied by a texture's; the emitted colour is added to
+    // what the surface reflects (multiplied by its own texture), lighting nothing else.
+    std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
+    Color emission{0, 0, 0};
+    std::optional<std::uint32_t> emissionTexture{};
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.
@@ -45,6 +69,11 @@ struct Model {
     Format format = Format::Raw;
     std::vector<float> triangleVertices;  // 9 floats per triangle
     std::vector<float> sphereData;        // 4 floats per sphere: centre, radius
+    // Per-corner shading data of the triangles, in the corners' order; each is empty or
+    // holds every triangle's (docs/scene-format.md, the RAW extension).
+    std::vector<float> vertexNormals;  // 9 floats per triangle: unit normals, or zeros for a flat triangle
+    std::vector<float> vertexUvs;      // 6 floats per triangle: texture coordinates u, v
+    std::vector<float> vertexColors;   // 9 floats per triangle: linear RGB
 
     std::size_t triangleCount() const { return triangleVertices.size() / 9; }
     std::size_t sphereCount() const { return sphereData.size() / 4; }
@@ -61,6 +90,7 @@ struct Scene {
     Camera camera;                    // the camera rendered: the file's first, or the one --camera picked
     std::vector<Camera> extraCameras;  // rt extension: the file's other cameras, in file order
     std::vector<Material> materials;
+    std::vector<Texture> textures;
     std::vector<Model> models;
     std::vector<Instance> instances;
     Primitives looseObjects;  // spheres, triangles and quads placed directly, in world space

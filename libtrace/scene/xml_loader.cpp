@@ -49,6 +49,8 @@ private:
     void readCamera(const XmlElement& e, bool& seen);
     Vec3 readPoint(pugi::xml_node node) const;
     void readMaterial(const XmlElement& e);
+    void readTexture(const XmlElement& e);
+    void resolveTextures();
     void readModel(const XmlElement& e);
     Model readModelData(const XmlElement& e, const std::string& name) const;
     void readLight(const XmlElement& e);
@@ -73,6 +75,15 @@ private:
     std::unordered_map<std::string, Definition> materials_;
     std::unordered_map<std::string, Definition> models_;
     std::unordered_map<std::string, Definition> cameras_;
+    std::unordered_map<std::string, Definition> textures_;
+    // Texture names of materials, resolved when every <texture> is known.
+    struct TextureUse {
+        std::uint32_t material;
+        std::optional<std::uint32_t> Material::*slot;
+        std::string name;
+        pugi::xml_node node;
+    };
+    std::vector<TextureUse> textureUses_;
     std::size_t dropped_ = 0;
 };
 
@@ -82,7 +93,7 @@ Scene SceneBuilder::build() {
     for (const pugi::xml_node& n : file_.document().children())
         if (n != root) file_.failAt(n, "the file must hold one <scene> element and nothing else");
     const XmlElement scene(file_, root, {});
-    scene.requireOnlyChildren({"background", "camera", "materials", "models", "objects", "lights"});
+    scene.requireOnlyChildren({"background", "camera", "materials", "textures", "models", "objects", "lights"});
     bool hasBackground = false, hasCamera = false;
     std::vector<pugi::xml_node> objects;
     for (const pugi::xml_node& section : root.children()) {
@@ -99,6 +110,7 @@ Scene SceneBuilder::build() {
         }
     }
     if (!hasCamera) scene.fail("<scene> needs a <camera>");
+    resolveTextures();
     for (const pugi::xml_node& section : objects) readObjects(section, Transform(), 0);
 
     dropped_ += scene_.flatten();
@@ -114,14 +126,17 @@ void SceneBuilder::once(const XmlElement& e, bool& seen) {
     seen = true;
 }
 
-// <materials>, <models> and <lights>: lists of <material>, <model> and <light>.
+// <materials>, <textures>, <models> and <lights>: lists of <material>, <texture>, <model> and <light>.
 void SceneBuilder::readList(const XmlElement& list) {
     const std::string_view tag = list.node().name();
     list.requireOnlyChildren({tag.substr(0, tag.size() - 1)});
     for (const pugi::xml_node& item : list.node().children()) {
         if (tag == "materials")
             readMaterial(XmlElement(file_, item, {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess",
-                                                  "reflection", "spread"}));
+                                                  "reflection", "spread", "texture", "emission", "emission_texture"}));
+        else if (tag == "textures")
+            readTexture(XmlElement(file_, item, {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale",
+                                                 "rotation", "color_a", "color_b", "size"}));
         else if (tag == "models")
             readModel(XmlElement(file_, item, {"name", "file", "type", "encoding"}));
         else
@@ -199,7 +214,59 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     m.reflection = float(e.nonNegative("reflection", m.reflection));
     m.spread = float(e.nonNegative("spread", m.spread));
     if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
+    m.emission = e.color("emission", m.emission);
+    const auto index = std::uint32_t(scene_.materials.size());
+    if (const auto name = e.optionalString("texture")) textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});
+    if (const auto name = e.optionalString("emission_texture"))
+        textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
     scene_.materials.push_back(std::move(m));
+}
+
+// rt extension: an image file (any format OpenImageIO reads) or a procedural checker.
+void SceneBuilder::readTexture(const XmlElement& e) {
+    e.requireNoChildren();
+    Texture t;
+    t.name = e.string("name");
+    define(textures_, "texture", t.name, std::uint32_t(scene_.textures.size()), e);
+    const std::string type = e.optionalString("type").value_or("image");
+    if (type != "image" && type != "checker") e.fail("unknown texture type '" + type + "' (image or checker)");
+    t.kind = type == "image" ? Texture::Kind::Image : Texture::Kind::Checker;
+    if (t.kind == Texture::Kind::Image) {
+        t.file = e.string("file");
+        std::filesystem::path path(t.file);
+        t.path = (path.is_relative() ? std::filesystem::path(baseDir_) / path : path).string();
+    }
+    const auto wrap = [&](const char* attribute, Texture::Wrap fallback) {
+        const std::optional<std::string> w = e.optionalString(attribute);
+        if (!w) return fallback;
+        if (*w == "repeat") return Texture::Wrap::Repeat;
+        if (*w == "clamp") return Texture::Wrap::Clamp;
+        if (*w == "mirror") return Texture::Wrap::Mirror;
+        e.fail("unknown " + std::string(attribute) + " '" + *w + "' (repeat, clamp or mirror)");
+    };
+    const Texture::Wrap both = wrap("wrap", Texture::Wrap::Repeat);
+    t.wrapS = wrap("wrap_s", both);
+    t.wrapT = wrap("wrap_t", both);
+    const auto pair = [&](const char* attribute, std::array<float, 2> fallback) {
+        if (!e.has(attribute)) return fallback;
+        const std::vector<Real> v = e.numbers(attribute, 2);
+        return std::array<float, 2>{float(v[0]), float(v[1])};
+    };
+    t.offset = pair("offset", t.offset);
+    t.scale = pair("scale", t.scale);
+    t.rotation = float(e.number("rotation", 0));
+    t.colorA = e.color("color_a", t.colorA);
+    t.colorB = e.color("color_b", t.colorB);
+    if (e.has("size")) t.size = float(e.positive("size"));
+    scene_.textures.push_back(std::move(t));
+}
+
+void SceneBuilder::resolveTextures() {
+    for (const TextureUse& use : textureUses_) {
+        const auto it = textures_.find(use.name);
+        if (it == textures_.end()) file_.failAt(use.node, "unknown texture '" + use.name + "'");
+        scene_.materials[use.material].*use.slot = it->second.index;
+    }
 }
 
 void SceneBuilder::readModel(const XmlElement& e) {

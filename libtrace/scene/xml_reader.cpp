@@ -139,6 +139,13 @@ Color XmlElement::rgb(float fallback) const {
     return {float(nonNegative("r", fallback)), float(nonNegative("g", fallback)), float(nonNegative("b", fallback))};
 }
 
+Color XmlElement::color(const char* attribute, Color fallback) const {
+    if (!has(attribute)) return fallback;
+    const std::vector<Real> v = numbers(attribute, 3);
+    if (v[0] < 0 || v[1] < 0 || v[2] < 0) fail(std::string(attribute) + " must not be negative");
+    return {float(v[0]), float(v[1]), float(v[2])};
+}
+
 void XmlElement::requireOnlyChildren(std::initializer_list<std::string_view> allowed) const {
     for (const pugi::xml_node& child : node_.children()) {
         if (child.type() != pugi::node_element) file_->failAt(child, "unexpected text in " + tag());

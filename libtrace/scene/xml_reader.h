@@ -63,6 +63,7 @@ public:
 
     Vec3 xyz(Real fallback) const;         // attributes x, y, z
     Color rgb(float fallback) const;       // attributes r, g, b, each >= 0
+    Color color(const char* attribute, Color fallback) const;  // "r g b", each >= 0
 
     // Child elements other than those named in `allowed`, and any text, are errors.
     void requireOnlyChildren(std::initializer_list<std::string_view> allowed) const;

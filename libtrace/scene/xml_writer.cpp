@@ -39,6 +39,15 @@ void setRgb(pugi::xml_node node, const Color& c) {
     setNumber(node, "b", c.b);
 }
 
+std::string numberList(std::initializer_list<float> values) {
+    std::string text;
+    for (float v : values) {
+        if (!text.empty()) text += ' ';
+        text += shortest(v);
+    }
+    return text;
+}
+
 // A loose object as its element, one overload per primitive kind (the loader reads them back).
 pugi::xml_node addObject(pugi::xml_node parent, const Triangle& t) {
     pugi::xml_node node = parent.append_child("triangle");
@@ -94,12 +103,15 @@ std::vector<std::string> cameraNames(const Scene& scene) {
 
 class SceneXmlWriter {
 public:
-    SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles);
+    // `folder`: where the XML goes, for texture files relative to it; empty: standard output.
+    SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles, std::string folder);
     void build(pugi::xml_document& doc) const;
 
 private:
     static void addCamera(pugi::xml_node parent, const Camera& c, const std::string& name);
     void addMaterials(pugi::xml_node parent) const;
+    void addTextures(pugi::xml_node parent) const;
+    std::string textureFile(const Texture& t) const;
     void addModels(pugi::xml_node parent) const;
     void addObjects(pugi::xml_node parent) const;
     void addLights(pugi::xml_node parent) const;
@@ -112,6 +124,8 @@ private:
     std::vector<std::string> materialNames_;
     std::vector<std::string> modelNames_;
     std::vector<std::string> cameraNames_;  // the camera's, then each extra camera's
+    std::vector<std::string> textureNames_;
+    std::string folder_;
 };
 
 template <typename Named>
@@ -121,12 +135,15 @@ std::vector<std::string> namesOf(const std::vector<Named>& items) {
     return names;
 }
 
-SceneXmlWriter::SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles)
+SceneXmlWriter::SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles, std::string folder)
     : scene_(scene),
       modelFiles_(std::move(modelFiles)),
       materialNames_(uniqueNames(namesOf(scene.materials), "material", false)),
       modelNames_(uniqueNames(namesOf(scene.models), "model", false)),
-      cameraNames_(cameraNames(scene)) {}
+      cameraNames_(cameraNames(scene)),
+
+      textureNames_(uniqueNames(namesOf(scene.textures), "texture", false)),
+      folder_(std::move(folder)) {}
 
 void SceneXmlWriter::build(pugi::xml_document& doc) const {
     pugi::xml_node decl = doc.append_child(pugi::node_declaration);
@@ -136,6 +153,7 @@ void SceneXmlWriter::build(pugi::xml_document& doc) const {
     addCamera(root, scene_.camera, cameraNames_[0]);
     for (std::size_t i = 0; i < scene_.extraCameras.size(); ++i)
         addCamera(root, scene_.extraCameras[i], cameraNames_[i + 1]);
+    if (!scene_.textures.empty()) addTextures(root.append_child("textures"));
     if (!scene_.materials.empty()) addMaterials(root.append_child("materials"));
     if (!scene_.models.empty()) addModels(root.append_child("models"));
     if (scene_.looseObjects.size() > 0 || !scene_.instances.empty()) addObjects(root.append_child("objects"));
@@ -165,7 +183,41 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         setNumber(node, "shininess", m.shininess);
         setNumber(node, "reflection", m.reflection);
         setNumber(node, "spread", m.spread);
+        if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
+        if (m.emission != Color{}) node.append_attribute("emission").set_value(numberList({m.emission.r, m.emission.g, m.emission.b}).c_str());
+        if (m.emissionTexture)
+            node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emissionTexture).c_str());
     }
+}
+
+void SceneXmlWriter::addTextures(pugi::xml_node parent) const {
+    static const char* const kWraps[] = {"repeat", "clamp", "mirror"};
+    for (std::size_t i = 0; i < scene_.textures.size(); ++i) {
+        const Texture& t = scene_.textures[i];
+        pugi::xml_node node = parent.append_child("texture");
+        node.append_attribute("name").set_value(textureNames_[i].c_str());
+        if (t.kind == Texture::Kind::Checker) {
+            node.append_attribute("type").set_value("checker");
+            node.append_attribute("color_a").set_value(numberList({t.colorA.r, t.colorA.g, t.colorA.b}).c_str());
+            node.append_attribute("color_b").set_value(numberList({t.colorB.r, t.colorB.g, t.colorB.b}).c_str());
+            setNumber(node, "size", t.size);
+            continue;
+        }
+        node.append_attribute("file").set_value(textureFile(t).c_str());
+        node.append_attribute("wrap_s").set_value(kWraps[int(t.wrapS)]);
+        node.append_attribute("wrap_t").set_value(kWraps[int(t.wrapT)]);
+        node.append_attribute("offset").set_value(numberList({t.offset[0], t.offset[1]}).c_str());
+        node.append_attribute("scale").set_value(numberList({t.scale[0], t.scale[1]}).c_str());
+        setNumber(node, "rotation", t.rotation);
+    }
+}
+
+// The image's file as the written scene must name it: relative to the XML's folder, or
+// absolute for a scene on standard output.
+std::string SceneXmlWriter::textureFile(const Texture& t) const {
+    const std::filesystem::path image = std::filesystem::absolute(t.path);
+    if (folder_.empty()) return image.lexically_normal().generic_string();
+    return image.lexically_normal().lexically_relative(std::filesystem::absolute(folder_)).generic_string();
 }
 
 void SceneXmlWriter::addModels(pugi::xml_node parent) const {
@@ -225,9 +277,11 @@ std::string modelFolderFor(const std::string& xmlPath) {
 }
 
 void saveSceneXml(const Scene& scene, const std::string& path) {
+    const std::string xmlFolder =
+        path == "-" ? "" : std::filesystem::absolute(path).parent_path().lexically_normal().string();
     const auto saveXml = [&](std::vector<std::string> modelFiles, std::ostream& out) {
         pugi::xml_document doc;
-        SceneXmlWriter(scene, std::move(modelFiles)).build(doc);
+        SceneXmlWriter(scene, std::move(modelFiles), xmlFolder).build(doc);
         doc.save(out, "  ");
         out.flush();
         return bool(out);

@@ -316,5 +316,23 @@ TEST(ImportGltf, AGlbUnderAnyNameNeverReachesAssimp) {
     }
 }
 
+
+// NORMAL, TEXCOORD_0 and COLOR_0 reach the models: the Duck has normals and texture
+// coordinates, VertexColorTest colours.
+TEST(ImportGltf, VertexNormalsTextureCoordinatesAndColoursAreKept) {
+    SKIP_WITHOUT_SHARED_MODELS();
+    const ImportResult duck = importScene(sharedModels() + "/glb/Duck/Duck.glb");
+    ASSERT_EQ(duck.scene.models.size(), 1u);
+    const Model& m = duck.scene.models[0];
+    EXPECT_EQ(m.vertexNormals.size(), 9 * m.triangleCount());
+    EXPECT_EQ(m.vertexUvs.size(), 6 * m.triangleCount());
+    for (std::size_t i = 0; i < m.vertexNormals.size(); i += 3)
+        EXPECT_NEAR(std::hypot(m.vertexNormals[i], m.vertexNormals[i + 1], m.vertexNormals[i + 2]), 1, 1e-5);
+    const ImportResult colors = importScene(sharedModels() + "/glb/VertexColorTest/VertexColorTest.glb");
+    std::size_t coloured = 0;
+    for (const Model& c : colors.scene.models) coloured += !c.vertexColors.empty();
+    EXPECT_GT(coloured, 0u);
+}
+
 }  // namespace
 }  // namespace rt

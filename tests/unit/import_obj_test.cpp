@@ -297,7 +297,7 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
     TempDir dir;
     std::string mtl;
     for (const char* name : {"a", "b", "c"})
-        mtl += std::string("newmtl ") + name + "\nKd 1 1 1\nd 0.5\nTr 0.5\nmap_Kd wood.png\nKe 1 1 1\n";
+        mtl += std::string("newmtl ") + name + "\nKd 1 1 1\nd 0.5\nTr 0.5\nmap_Kd wood.png\nbump b.png\nKe 1 1 1\n";
     mtl += "newmtl plain\nKd 1 0 0\n";
     dir.write("m.mtl", mtl);
     const ImportResult r = importScene(dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare +
@@ -309,10 +309,45 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
                              [&](const std::string& n) { return n.find(text) != std::string::npos; });
     };
     EXPECT_EQ(count("`Tr`"), 0) << "d and Tr are not used: no warning about them";
-    EXPECT_EQ(count("3 material(s) with texture maps"), 1);
-    EXPECT_EQ(count("3 material(s) with emission (Ke)"), 1);
+    EXPECT_EQ(count("3 material(s) with texture maps other than map_Kd"), 1);
     EXPECT_EQ(count("3 material(s) partly transparent"), 1);
-    EXPECT_EQ(count("material"), 3) << "one note per kind, not per material";
+    EXPECT_EQ(count("material"), 2) << "one note per kind, not per material";
+    // Ke is the emission, map_Kd the colour texture, beside the OBJ.
+    const Material& a = r.scene.materials[r.scene.instances[0].material];
+    EXPECT_EQ(a.emission, (Color{1, 1, 1}));
+    ASSERT_TRUE(a.colorTexture);
+    EXPECT_EQ(r.scene.textures[*a.colorTexture].path, dir.path("wood.png"));
+}
+
+
+// vn and vt go with their corners; OBJ's v (up the image) becomes rt's (down).
+TEST(ImportObj, NormalsAndTextureCoordinatesFollowTheirCorners) {
+    TempDir dir;
+    const ImportResult r = importScene(dir.write(
+        "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0.25\nvn 0 0 2\nvn 0 1 1\nf 1/1/1 2/2/2 3/1/1\n"));
+    ASSERT_EQ(r.scene.models.size(), 1u);
+    const Model& m = r.scene.models[0];
+    const float s = float(1 / std::sqrt(2.0));
+    EXPECT_EQ(m.vertexNormals, std::vector<float>({0, 0, 1, 0, s, s, 0, 0, 1}));  // made unit length
+    EXPECT_EQ(m.vertexUvs, std::vector<float>({0, 1, 1, 0.75f, 0, 1}));
+    EXPECT_TRUE(m.vertexColors.empty());
+}
+
+// Without vn the mesh gets normals by crease angle, unless --flat; a vt or vn index that is
+// not defined is ignored with a note.
+TEST(ImportObj, MeshesWithoutNormalsAreSmoothedUnlessFlat) {
+    TempDir dir;
+    const std::string path = dir.write("m.obj", std::string(kSquare) + "v 2 0 0.1\nf 1 2 3 4\nf 2 5 3/7/9\n");
+    const ImportResult smooth = importScene(path);
+    ASSERT_EQ(smooth.scene.models.size(), 1u);
+    EXPECT_EQ(smooth.scene.models[0].vertexNormals.size(), 27u);
+    EXPECT_TRUE(smooth.scene.models[0].vertexUvs.empty());
+    EXPECT_NE(std::find_if(smooth.report.notes.begin(), smooth.report.notes.end(),
+                           [](const std::string& n) { return n.find("not defined: ignored") != std::string::npos; }),
+              smooth.report.notes.end());
+    ImportOptions flat;
+    flat.flat = true;
+    EXPECT_TRUE(importScene(path, flat).scene.models[0].vertexNormals.empty());
 }
 
 }  // namespace

@@ -118,3 +118,46 @@ TEST(RawModel, FileErrorsNameTheFile) {
 TEST(RawModel, WriterRefusesMixedModels) {
     EXPECT_THROW(rawBytes(rawModel({1, 2, 3, 4, 5, 6, 7, 8, 9}, {0, 0, 0, 1})), std::invalid_argument);
 }
+
+// rt extension: per-corner sections after the triangles.
+TEST(RawModel, VertexDataRoundTripsAsSectionsAfterTheTriangles) {
+    Model m = rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    m.vertexNormals = {0, 0, 1, 0, 0.6f, 0.8f, 0, 0, -1};
+    m.vertexUvs = {0, 0, 1, 0, 0.25f, 2};
+    m.vertexColors = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const std::string bytes = rawBytes(m);
+    EXPECT_EQ(bytes, header('T', 1) + floatBytes({0, 0, 0, 1, 0, 0, 0, 1, 0}) + "vnrm" +
+                         floatBytes({0, 0, 1, 0, 0.6f, 0.8f, 0, 0, -1}) + "vtex" + floatBytes({0, 0, 1, 0, 0.25f, 2}) +
+                         "vcol" + floatBytes({1, 0, 0, 0, 1, 0, 0, 0, 1}));
+    const Model back = fromBytes(bytes);
+    EXPECT_EQ(back.triangleVertices, m.triangleVertices);
+    EXPECT_EQ(back.vertexNormals, m.vertexNormals);
+    EXPECT_EQ(back.vertexUvs, m.vertexUvs);
+    EXPECT_EQ(back.vertexColors, m.vertexColors);
+    // Any order, any subset; a thesis file has none.
+    const Model uvsOnly = fromBytes(header('T', 1) + floatBytes({0, 0, 0, 1, 0, 0, 0, 1, 0}) + "vtex" +
+                                    floatBytes({0, 0, 1, 0, 0.25f, 2}));
+    EXPECT_TRUE(uvsOnly.vertexNormals.empty());
+    EXPECT_EQ(uvsOnly.vertexUvs, m.vertexUvs);
+    EXPECT_TRUE(rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0}).vertexNormals.empty());
+    EXPECT_EQ(rawBytes(rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0})), header('T', 1) + floatBytes({0, 0, 0, 1, 0, 0, 0, 1, 0}));
+}
+
+TEST(RawModel, BadSectionsNameTheByteOffset) {
+    const std::string tri = header('T', 1) + floatBytes({1, 2, 3, 4, 5, 6, 7, 8, 9});
+    const std::string normals = floatBytes({0, 0, 1, 0, 0, 1, 0, 0, 1});
+    EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "junk"); }),
+              "m.raw: byte 46: 4 bytes after the triangles that are no section (vnrm, vtex or vcol)");
+    EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vn"); }),
+              "m.raw: byte 46: 2 bytes after the triangles that are no section (vnrm, vtex or vcol)");
+    EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vnrm" + normals.substr(0, 8)); }),
+              "m.raw: byte 58: truncated RAW data: 36 bytes of vertex normals for 1 triangle, the file has 8");
+    EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vnrm" + normals + "vnrm" + normals); }),
+              "m.raw: byte 86: a second vertex normals section");
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vcol" + floatBytes({1, 1, 1, nan, 1, 1, 1, 1, 1})); }),
+              "m.raw: byte 62: NaN in RAW data");
+    Model partial = rawModel({1, 2, 3, 4, 5, 6, 7, 8, 9, 1, 2, 3, 4, 5, 6, 7, 8, 9});
+    partial.vertexUvs = {0, 0, 1, 0, 0, 1};  // one triangle of two
+    EXPECT_THROW(rawBytes(partial), std::invalid_argument);
+}

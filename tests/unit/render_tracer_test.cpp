@@ -164,11 +164,11 @@ TEST(Phong, HighlightPeaksAtTheMirrorDirection) {
     const Material m{.name = "shiny", .color = {1, 1, 1}, .diffuse = 0, .specular = 1, .shininess = 10};
     const Vec3 n{0, 1, 0};
     const Vec3 toLight = normalize(Vec3{1, 1, 0});
-    const Color peak = phongLight(m, n, toLight, normalize(Vec3{-1, 1, 0}), {1, 1, 1});
-    const Color off = phongLight(m, n, toLight, normalize(Vec3{-1, 2, 0}), {1, 1, 1});
+    const Color peak = phongLight(m, m.color, n, toLight, normalize(Vec3{-1, 1, 0}), {1, 1, 1});
+    const Color off = phongLight(m, m.color, n, toLight, normalize(Vec3{-1, 2, 0}), {1, 1, 1});
     EXPECT_NEAR(peak.r, 1.0f, 1e-5);
     EXPECT_LT(off.r, 0.9f);
-    EXPECT_EQ(phongLight(m, n, normalize(Vec3{1, -1, 0}), n, {1, 1, 1}), Color{});  // light below the surface
+    EXPECT_EQ(phongLight(m, m.color, n, normalize(Vec3{1, -1, 0}), n, {1, 1, 1}), Color{});  // light below the surface
     expectNear(mirror(normalize(Vec3{1, -1, 0}), n), normalize(Vec3{1, 1, 0}));
 }
 

@@ -204,3 +204,66 @@ TEST(XmlWriter, ModelFolderFollowsTheXmlName) {
     EXPECT_EQ(modelFolderFor("out/scene.xml"), "out/scene");
     EXPECT_EQ(modelFolderFor("scene"), "scene.models");
 }
+
+// Textures, material textures and emission, and RAW per-corner sections survive a save and a
+// load; an image's file is written relative to the new scene's folder.
+TEST(XmlWriter, TexturesEmissionAndVertexDataRoundTrip) {
+    TempDir dir;
+    const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
+      <textures>
+        <texture name="wood" file="pictures/wood.png" wrap_s="clamp" wrap_t="mirror" offset="0.5 0.25" scale="2 3" rotation="0.5"/>
+        <texture name="floor" type="checker" color_a="1 0.5 0" color_b="0 0 0.25" size="0.5"/>
+      </textures>
+      <materials>
+        <material name="lamp" texture="floor" emission="2 1 0.5" emission_texture="wood"/>
+      </materials></scene>)";
+    Scene first = loadSceneXml(dir.write("in/scene.xml", xml), readModelFile);
+    Model m;
+    m.name = "smooth";
+    m.triangleVertices = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    m.vertexNormals = {0, 0, 1, 0, 0.6f, 0.8f, 0, 0, 1};
+    m.vertexUvs = {0, 0, 1, 0, 0, 1};
+    first.models.push_back(m);
+    first.instances.push_back({0, 0, Transform()});
+    saveSceneXml(first, dir.path("out/deeper/scene.xml"));
+    const Scene second = loadSceneXml(dir.path("out/deeper/scene.xml"), readModelFile);
+    ASSERT_EQ(second.textures.size(), 2u);
+    const Texture& wood = second.textures[0];
+    EXPECT_EQ(wood.file, "../../in/pictures/wood.png");
+    EXPECT_EQ(std::filesystem::weakly_canonical(wood.path), std::filesystem::weakly_canonical(dir.path("in/pictures/wood.png")));
+    EXPECT_EQ(wood.wrapS, Texture::Wrap::Clamp);
+    EXPECT_EQ(wood.wrapT, Texture::Wrap::Mirror);
+    EXPECT_EQ(wood.offset, (std::array<float, 2>{0.5f, 0.25f}));
+    EXPECT_EQ(wood.scale, (std::array<float, 2>{2, 3}));
+    EXPECT_EQ(wood.rotation, 0.5f);
+    const Texture& floor = second.textures[1];
+    EXPECT_EQ(floor.kind, Texture::Kind::Checker);
+    EXPECT_EQ(floor.colorA, (Color{1, 0.5f, 0}));
+    EXPECT_EQ(floor.colorB, (Color{0, 0, 0.25f}));
+    EXPECT_EQ(floor.size, 0.5f);
+    const Material& lamp = second.materials[0];
+    EXPECT_EQ(lamp.colorTexture, std::optional<std::uint32_t>(1));
+    EXPECT_EQ(lamp.emission, (Color{2, 1, 0.5f}));
+    EXPECT_EQ(lamp.emissionTexture, std::optional<std::uint32_t>(0));
+    ASSERT_EQ(second.models.size(), 1u);
+    EXPECT_EQ(second.models[0].vertexNormals, m.vertexNormals);
+    EXPECT_EQ(second.models[0].vertexUvs, m.vertexUvs);
+    EXPECT_TRUE(second.models[0].vertexColors.empty());
+}
+
+TEST(XmlLoader, UnknownTexturesAndTypesAreErrors) {
+    TempDir dir;
+    const auto error = [&](const std::string& body) {
+        return inputErrorOf([&] {
+            loadSceneXml(dir.write("s.xml", "<scene><camera><origin z=\"-5\"/><destination/></camera>" + body +
+                                                "</scene>"),
+                         readModelFile);
+        });
+    };
+    EXPECT_EQ(error("<materials><material name=\"m\" texture=\"none\"/></materials>"),
+              dir.path("s.xml") + ":1: unknown texture 'none'");
+    EXPECT_EQ(error("<textures><texture name=\"t\" type=\"noise\"/></textures>"),
+              dir.path("s.xml") + ":1: unknown texture type 'noise' (image or checker)");
+    EXPECT_EQ(error("<textures><texture name=\"t\" file=\"a.png\" wrap=\"tile\"/></textures>"),
+              dir.path("s.xml") + ":1: unknown wrap 'tile' (repeat, clamp or mirror)");
+}

@@ -14,6 +14,10 @@
 
 namespace rt::tool {
 
+// --flat of rt-convert and rt-render (a model file read directly): ImportOptions::flat.
+inline constexpr const char* kFlatHelp =
+    "Keep the facets of meshes without vertex normals (default: normals by a crease angle of 30 degrees)";
+
 // Parses the command line. Returns the exit code when the tool must stop (0 after --help or
 // --version, 2 after a parse error, printed as "tool ERROR: what"), nothing when it runs.
 // An unknown argument is reported before anything else: "--treads 2" is a typo, and a

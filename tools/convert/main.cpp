@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
     app.add_option("--aspect", o.import.aspect,
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")
         ->check(rt::tool::positiveNumber());
+    app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp);
     app.add_flag("--json", o.json, "Print the summary as JSON on standard output");
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no summary or notes on standard error (errors still are)");
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-convert", argc, argv)) return *exitCode;

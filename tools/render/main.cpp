@@ -36,6 +36,7 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--seed", o.render.seed,
                    "Random seed of the samples: another seed, independent noise (default 0, always the same)")
         ->capture_default_str()->group(group);
+    app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
 }
 
 void addCameraOptions(CLI::App& app, RenderOptions& o) {

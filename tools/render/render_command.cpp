@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "image/texture_files.h"
 #include "import/load_scene.h"
 #include "progress.h"
 #include "render/renderer.h"
@@ -143,7 +144,7 @@ CameraOverrides cameraOverrides(const RenderOptions& o) {
 
 // The scene with the camera the options ask for: --camera picks one, the overrides change it.
 Scene loadWithCamera(const RenderOptions& o) {
-    ImportOptions import;
+    ImportOptions import = o.import;
     import.camera = o.camera.value_or("");
     import.aspect = double(o.render.width) / double(o.render.height);
     Scene scene = loadScene(o.scenePath, import);
@@ -167,10 +168,11 @@ std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSetti
 
 // The bar's line ends (its destructor) before anything else is printed.
 Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-                                  ProgressMode mode, RenderStats& stats) {
+                                  ProgressMode mode, RenderStats& stats, const ImageTextures& images) {
     Progress progress(mode);
-    return rt::render(scene, accel, settings, stats,
-                  [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); });
+    return rt::render(
+        scene, accel, settings, stats,
+        [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); }, &images);
 }
 
 // What a run without -f or -o did, so that nobody waits for a picture that never comes.
@@ -183,12 +185,12 @@ std::string outputNote(const RenderOptions& o, const ImageOutputSettings& output
 
 // Renders one picture (a turntable's frame `frame`) once and writes every output of it.
 void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& accel, const TreeReport& tree,
-                 const std::vector<ImageOutputSettings>& outputs, int frame, ProgressMode progress,
+                 const ImageTextures& images, const std::vector<ImageOutputSettings>& outputs, int frame, ProgressMode progress,
                  RenderStats& stats) {
     std::vector<ImageOutputSettings> frameOutputs = outputs;
     for (ImageOutputSettings& out : frameOutputs) out.path = framePath(out.path, frame);
     if (!o.preprocessOnly) {
-        const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats);
+        const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats, images);
         const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
                                  stats.renderSeconds};
         for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
@@ -219,6 +221,7 @@ int runRender(RenderOptions o) {
 
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
+    const TextureFiles images(scene, scene.warnings);  // before the warnings are shown: it adds its own
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;
@@ -235,7 +238,7 @@ int runRender(RenderOptions o) {
             scene.camera = orbited(camera, Real(360) * Real(frame) / Real(o.orbit));
             announce(progress, "frame " + std::to_string(frame) + " of 0.." + std::to_string(o.orbit - 1));
         }
-        renderFrame(o, scene, *accel, tree, outputs, frame, progress, stats);
+        renderFrame(o, scene, *accel, tree, images, outputs, frame, progress, stats);
     }
     return 0;
 }

@@ -10,6 +10,7 @@
 #include "core/vec3.h"
 #include "image/image_output.h"
 #include "progress.h"
+#include "import/import.h"
 #include "render/render_settings.h"
 
 namespace rt::tool::render {
@@ -41,6 +42,7 @@ struct RenderOptions {
     bool frame = false;
     int orbit = 0;                      // --orbit N: N frames around the look-at point; 0 is one picture
     std::optional<std::string> frames;  // --frames A..B: only frames A to B (inclusive) of the orbit
+    ImportOptions import;                 // --flat, for a model file read directly
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.

@@ -1,0 +1,83 @@
+#include "image/texture_files.h"
+
+#include <OpenImageIO/texture.h>
+
+#include <cmath>
+
+namespace rt {
+
+namespace {
+
+OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
+    switch (w) {
+        case Texture::Wrap::Clamp:
+            return OIIO::TextureOpt::WrapClamp;
+        case Texture::Wrap::Mirror:
+            return OIIO::TextureOpt::WrapMirror;
+        case Texture::Wrap::Repeat:
+            break;
+    }
+    return OIIO::TextureOpt::WrapPeriodic;
+}
+
+// The sRGB transfer function, inverted (IEC 61966-2-1).
+float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
+
+}  // namespace
+
+// One texture as the lookups need it; `file` empty for one that cannot be read (or a checker).
+struct TextureFiles::Impl {
+    struct Entry {
+        OIIO::ustring file;
+        OIIO::TextureOpt options;
+        int channels = 0;
+        bool srgb = false;
+    };
+    OIIO::TextureSystem* system = nullptr;
+    std::vector<Entry> entries;
+
+    Entry open(const Texture& t, std::vector<std::string>& warnings) const {
+        Entry e;
+        if (t.kind != Texture::Kind::Image) return e;
+        const OIIO::ustring file(t.path);
+        const OIIO::ImageSpec* spec = system->imagespec(file);
+        if (!spec) {
+            warnings.push_back("texture '" + t.name + "': cannot read " + t.path + " (" + system->geterror() +
+                               "): white is used");
+            return e;
+        }
+        e.file = file;
+        e.channels = std::min(spec->nchannels, 3);
+        e.srgb = !spec->format.is_floating_point();
+        e.options.swrap = wrapOf(t.wrapS);
+        e.options.twrap = wrapOf(t.wrapT);
+        // Bilinear: OpenImageIO's default (smart bicubic) blurs a magnified texture with a B-spline.
+        e.options.interpmode = OIIO::TextureOpt::InterpBilinear;
+        return e;
+    }
+};
+
+TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->system = OIIO::TextureSystem::create(false);
+    impl_->system->attribute("max_memory_MB", cacheMegabytes);
+    impl_->system->attribute("automip", 1);
+    for (const Texture& t : scene.textures) impl_->entries.push_back(impl_->open(t, warnings));
+}
+
+TextureFiles::~TextureFiles() { OIIO::TextureSystem::destroy(impl_->system); }
+
+Color TextureFiles::lookup(std::uint32_t index, float s, float t) const {
+    const Impl::Entry& e = impl_->entries[index];
+    if (e.file.empty()) return {1, 1, 1};
+    float rgb[3] = {1, 1, 1};
+    OIIO::TextureOpt options = e.options;  // per call: the system may write to it
+    // No ray differentials yet: the finest level, filtered bilinearly.
+    if (!impl_->system->texture(e.file, options, s, t, 0, 0, 0, 0, e.channels, rgb)) return {1, 1, 1};
+    if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
+    if (e.srgb)
+        for (float& c : rgb) c = srgbToLinear(c);
+    return {rgb[0], rgb[1], rgb[2]};
+}
+
+}  // namespace rt

@@ -1,0 +1,66 @@
+#include "render/surface.h"
+
+#include <algorithm>
+
+namespace rt {
+
+namespace {
+
+// The interpolated vertex normal of a smooth triangle, each vertex normal turned to the side
+// the geometric normal faces, and the shadow origin moved onto the smooth surface; no change
+// for a flat triangle (zero normals).
+void applyVertexNormals(const Triangle& tri, const CornerNormals& corners, const Hit& hit, SurfacePoint& s) {
+    Vec3 normals[3];
+    for (int c = 0; c < 3; ++c) {
+        normals[c] = corners.corner(c);
+        if (dot(normals[c], s.geometricNormal) < 0) normals[c] = -normals[c];
+    }
+    const Vec3 n = normals[0] * (1 - hit.u - hit.v) + normals[1] * hit.u + normals[2] * hit.v;
+    const Real len = length(n);
+    if (!(len > 0)) return;
+    s.shadingNormal = n / len;
+    s.shadowOrigin = offsetToSmoothSurface(s.point, tri, normals, hit.u, hit.v);
+}
+
+void applyTriangleData(const Primitives& primitives, std::uint32_t index, const Hit& hit, SurfacePoint& s) {
+    const TriangleShading& data = primitives.triangleShading();
+    if (const CornerNormals* normals = data.normals.find(index))
+        applyVertexNormals(primitives.all<Triangle>()[index], *normals, hit, s);
+    if (const CornerUvs* uvs = data.uvs.find(index)) {
+        const auto uv = uvs->at(hit.u, hit.v);
+        s.u = uv[0];
+        s.v = uv[1];
+    }
+    if (const CornerColors* colors = data.colors.find(index)) {
+        const auto rgb = colors->at(hit.u, hit.v);
+        s.tint = {float(rgb[0]), float(rgb[1]), float(rgb[2])};
+    }
+}
+
+}  // namespace
+
+SurfacePoint surfaceAt(const Primitives& primitives, const Ray& ray, const Hit& hit) {
+    SurfacePoint s;
+    s.point = ray.at(hit.t);
+    s.geometricNormal = primitives.normal(hit.prim, s.point);
+    if (dot(s.geometricNormal, ray.direction) > 0) s.geometricNormal = -s.geometricNormal;  // two-sided surfaces
+    s.shadingNormal = s.geometricNormal;
+    s.shadowOrigin = s.point;
+    if (primitives.triangleShading().empty()) return s;
+    if (const std::optional<std::uint32_t> index = primitives.indexIn<Triangle>(hit.prim))
+        applyTriangleData(primitives, *index, hit, s);
+    return s;
+}
+
+Vec3 offsetToSmoothSurface(const Vec3& p, const Triangle& tri, const Vec3 (&normals)[3], Real b1, Real b2) {
+    const Vec3 corners[3] = {tri.p0, tri.p1, tri.p2};
+    const Real weights[3] = {1 - b1 - b2, b1, b2};
+    Vec3 moved = p;
+    for (int c = 0; c < 3; ++c) {
+        const Real below = std::min(Real(0), dot(p - corners[c], normals[c]));  // how far p is under the plane
+        moved -= normals[c] * (weights[c] * below);
+    }
+    return moved;
+}
+
+}  // namespace rt

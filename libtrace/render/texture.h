@@ -1,0 +1,30 @@
+// Colours from the scene's textures (scene/scene.h Texture). A checker is evaluated here;
+// image textures are looked up through ImageTextures, which image/ implements with
+// OpenImageIO's TextureSystem, so that the renderer needs no image library. Without one (unit
+// tests, rt-inspect) an image texture gives white: the material's own colour.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "render/surface.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+class ImageTextures {
+public:
+    virtual ~ImageTextures() = default;
+    // Linear RGB of the scene's image texture `index` at (s, t), texture coordinates already
+    // transformed (transformUv), with the texture's wrap modes. Thread-safe.
+    virtual Color lookup(std::uint32_t index, float s, float t) const = 0;
+};
+
+// Texture coordinates after the texture's transform, as KHR_texture_transform defines it:
+// scaled, then rotated, then offset.
+std::array<float, 2> transformUv(const Texture& t, Real u, Real v);
+
+// The colour of texture `index` of the scene at the surface point.
+Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);
+
+}  // namespace rt

@@ -1,0 +1,57 @@
+#include "render/texture.h"
+
+#include "accel/naive.h"
+#include "render/tracer.h"
+#include "render_test_scenes.h"
+#include "test_util.h"
+
+using namespace rt;
+
+TEST(Texture, CoordinatesAreScaledRotatedThenOffset) {
+    Texture t;
+    t.scale = {2, 3};
+    t.rotation = float(kPi / 2);
+    t.offset = {0.5f, 0.25f};
+    const std::array<float, 2> uv = transformUv(t, 1, 0);  // scaled (2, 0), rotated (0, -2), offset
+    EXPECT_NEAR(uv[0], 0.5f, 1e-6);
+    EXPECT_NEAR(uv[1], -1.75f, 1e-6);
+    const std::array<float, 2> same = transformUv(Texture{}, 0.25, 0.75);
+    EXPECT_EQ(same, (std::array<float, 2>{0.25f, 0.75f}));
+}
+
+TEST(Texture, CheckerAlternatesCubesAndIsOneColourOnABoundaryPlane) {
+    Scene scene;
+    scene.textures.push_back({.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}});
+    SurfacePoint s;
+    s.geometricNormal = {0, 1, 0};  // a floor at y = 0 seen from above: the cubes below it
+    s.point = {0.5, 0, 0.5};
+    const Color a = textureColor(scene, 0, s, nullptr);
+    s.point = {1.5, 0, 0.5};
+    const Color b = textureColor(scene, 0, s, nullptr);
+    s.point = {1.5, 0, 1.5};
+    EXPECT_EQ(textureColor(scene, 0, s, nullptr), a);
+    EXPECT_NE(a, b);
+    EXPECT_TRUE((a == Color{1, 0, 0} && b == Color{0, 0, 1}) || (a == Color{0, 0, 1} && b == Color{1, 0, 0}));
+    // Image textures without lookups are white: the material's colour alone.
+    scene.textures.push_back({.name = "i", .path = "x.png"});
+    EXPECT_EQ(textureColor(scene, 1, s, nullptr), (Color{1, 1, 1}));
+}
+
+TEST(Tracer, AnEmitterIsSeenInAMirrorWithoutLights) {
+    // A mirror at z = 0 facing -z, an emitting quad behind the ray's start at z = -5; no light.
+    Scene s;
+    s.camera.origin = {0, 0, -2};
+    s.camera.destination = {0, 0, 0};
+    const auto mirror = test::addMaterial(s, {.name = "mirror", .ambient = 0, .diffuse = 0, .reflection = 1});
+    const auto lamp = test::addMaterial(s, {.name = "lamp", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0,
+                                            .emission = {1, 0.5f, 0.25f}});
+    test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, mirror);
+    test::addQuad(s, {-9, -9, -5}, {-9, 9, -5}, {9, 9, -5}, {9, -9, -5}, lamp);
+    s.flatten();
+    const NaiveAccelerator accel(s.primitives);
+    const Tracer tracer(s, accel, test::picture(4, 4));
+    SampleRng rng{0, 0, 0};
+    RenderCounters c;
+    EXPECT_EQ(tracer.trace({{0, 0, -2}, {0, 0, 1}}, 0, false, rng, c), (Color{1, 0.5f, 0.25f}));
+    EXPECT_EQ(tracer.trace({{0, 0, -2}, {0, 0, -1}}, 0, false, rng, c), (Color{1, 0.5f, 0.25f}));  // directly
+}
