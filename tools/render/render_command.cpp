@@ -9,8 +9,10 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "import/load_scene.h"
+#include "image/image_check.h"
 #include "progress.h"
 #include "render/renderer.h"
+#include "render/tiles.h"
 #include "stats_report.h"
 #include "version.h"
 
@@ -23,6 +25,18 @@ PixelWindow parseRegion(const std::string& text) {
         used != int(text.size()))
         throw InputError("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
     return w;
+}
+
+PixelWindow parseTile(const std::string& tiles, const std::string& tile, int width, int height) {
+    TileGrid grid;
+    int index = -1, count = -1, used = -1;
+    if (std::sscanf(tiles.c_str(), "%dx%d%n", &grid.columns, &grid.rows, &used) != 2 || used != int(tiles.size()))
+        throw InputError("--tiles: expected CxR (columns x rows, e.g. 4x4), got '" + tiles + "'");
+    if (std::sscanf(tile.c_str(), "%d/%d%n", &index, &count, &used) != 2 || used != int(tile.size()))
+        throw InputError("--tile: expected I/N (tile I of N, from 0), got '" + tile + "'");
+    if (count != grid.count())
+        throw InputError("--tile " + tile + ": --tiles " + tiles + " makes " + std::to_string(grid.count()) + " tiles");
+    return tileWindow(width, height, grid, index);
 }
 
 namespace {
@@ -60,6 +74,15 @@ void prepareOutputs(const RenderOptions& o, const ImageOutputSettings& output) {
     ColorPipeline check(output.color);
     if (output.format != ImageFormat::Null) prepareOutputFile(output.path);
     if (o.statsJson) prepareOutputFile(*o.statsJson);
+}
+
+// --skip-existing: the output a task wrote before it was requeued is kept if it reads back whole.
+bool outputIsComplete(const RenderOptions& o, const ImageOutputSettings& output, ProgressMode progress) {
+    if (!o.skipExisting || output.format == ImageFormat::Null || output.path == "-") return false;
+    const std::string why = whyNotCompleteImage(output.path, o.render.width, o.render.height, o.render.window());
+    if (why.empty()) announce(progress, output.path + " is complete: nothing to render (--skip-existing)");
+    else if (why != "missing") announce(progress, "rendering " + output.path + " again: " + why);
+    return why.empty();
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -100,10 +123,12 @@ std::string outputNote(const RenderOptions& o, const ImageOutputSettings& output
 
 int runRender(RenderOptions o) {
     if (o.region) o.render.region = parseRegion(*o.region);
+    if (o.tile) o.render.region = parseTile(o.tiles.value_or(""), *o.tile, o.render.width, o.render.height);
     validate(o.render);
     const ImageOutputSettings output = outputSettings(o);
-    prepareOutputs(o, output);
     const ProgressMode progress = progressMode(o.progress, o.quiet);
+    if (outputIsComplete(o, output, progress)) return 0;
+    prepareOutputs(o, output);
 
     Scene scene = loadScene(o.scenePath);
     scene.dropDescription();
