@@ -29,6 +29,8 @@ expect_exit 2 "$farm" submit "$scene" "${opts[@]}" -f x.exr --tiles 4x4 -o "$WOR
 expect_one_error rt-farm "-f: rt-farm sets it"
 expect_exit 2 "$farm" submit "$scene" -S 0 --tiles 4x4 -o "$WORK/bad"
 grep -q "nothing submitted" "$WORK/stderr" || fail "a bad rt-render option was not caught: $(cat "$WORK/stderr")"
+expect_exit 2 "$farm" submit "$scene" -x 3 --tiles 4x4 -o "$WORK/bad"
+grep -q "every tile needs a pixel" "$WORK/stderr" || fail "a grid larger than the image was not caught: $(cat "$WORK/stderr")"
 expect_exit 2 "$farm" submit "$scene" --tiles 4 -o "$WORK/bad"
 expect_one_error rt-farm "--tiles: expected CxR"
 [ ! -e "$SBATCH_LOG" ] || fail "a refused submit called sbatch"
