@@ -11,6 +11,7 @@ packages=(
     libpugixml-dev libgtest-dev libbenchmark-dev
     openimageio-tools opencolorio-tools
     python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
+    slurm-wlm munge  # tests/cli/farm_slurm.sh starts a one-node Slurm cluster (as root) for rt-farm
 )
 [ "${1:-}" = "--bench" ] && packages+=(libembree-dev clang-14 libomp-14-dev)
 missing=()

@@ -133,8 +133,8 @@ public:
     template <class K>
     std::optional<std::uint32_t> indexIn(std::uint32_t id) const {
         std::optional<std::uint32_t> index;
-        visitFrom<0>(id, [&](const auto& a, std::uint32_t i) {
-            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(a)>, KindArray<K>>) index = i;
+        view().visitFrom<0>(id, [&](const auto& span, std::uint32_t i) {
+            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(span)>, PrimitiveView::KindSpan<K>>) index = i;
         });
         return index;
     }

@@ -100,6 +100,6 @@ TEST(RenderGolden, DistributedSoftShadowsGlossyReflectionsSupersampling) {
 TEST(RenderGolden, CylindersAndCones) {
     RenderSettings s = golden();
     s.shadows = true;
-    s.maxDepth = 3;
+    s.reflectionDepth = 3;
     expectMatchesGolden(renderTestScene(s, test::cylindersAndCones()), "cylinders_cones");
 }

@@ -30,7 +30,15 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     bsp->excludes(kd);
     addNamedOption(app, "--accel", kind, rt::kAccelKindNames, "Ray-scene intersection: the naive list or a tree")
         ->excludes(bsp)->excludes(kd)->group(group);
-    app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
+    auto* region = app.add_option("--region", o.region,
+                                  "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")->group(group);
+    auto* tiles = app.add_option("--tiles", o.tiles, "A farm's grid of tiles, CxR (columns x rows), for --tile")
+        ->group(group);
+    auto* tile = app.add_option("--tile", o.tile, "Render only tile I of the N of --tiles (I/N, from 0, row by row)")
+        ->needs(tiles)->excludes(region)->group(group);
+    tiles->needs(tile);
+    app.add_flag("--skip-existing", o.skipExisting,
+                 "Exit 0 at once if -f already holds this render, complete (read back: size, window, pixels)")
         ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
     app.add_option("--seed", o.render.seed,

@@ -12,8 +12,10 @@
 #include "core/stopwatch.h"
 #include "image/texture_files.h"
 #include "import/load_scene.h"
+#include "image/image_check.h"
 #include "progress.h"
 #include "render/renderer.h"
+#include "render/tiles.h"
 #include "stats_report.h"
 #include "version.h"
 
@@ -59,6 +61,18 @@ std::string framePath(const std::string& path, int frame) {
     std::string number = std::to_string(frame);
     if (number.size() < end + 1 - begin) number.insert(0, end + 1 - begin - number.size(), '0');
     return path.substr(0, begin) + number + path.substr(end + 1);
+}
+
+PixelWindow parseTile(const std::string& tiles, const std::string& tile, int width, int height) {
+    TileGrid grid;
+    int index = -1, count = -1, used = -1;
+    if (std::sscanf(tiles.c_str(), "%dx%d%n", &grid.columns, &grid.rows, &used) != 2 || used != int(tiles.size()))
+        throw InputError("--tiles: expected CxR (columns x rows, e.g. 4x4), got '" + tiles + "'");
+    if (std::sscanf(tile.c_str(), "%d/%d%n", &index, &count, &used) != 2 || used != int(tile.size()))
+        throw InputError("--tile: expected I/N (tile I of N, from 0), got '" + tile + "'");
+    if (count != grid.count())
+        throw InputError("--tile " + tile + ": --tiles " + tiles + " makes " + std::to_string(grid.count()) + " tiles");
+    return tileWindow(width, height, grid, index);
 }
 
 namespace {
@@ -152,6 +166,29 @@ Scene loadWithCamera(const RenderOptions& o) {
     return scene;
 }
 
+// --skip-existing: the output a task wrote before it was requeued is kept if it reads back whole.
+bool outputIsComplete(const RenderOptions& o, const ImageOutputSettings& output, ProgressMode progress) {
+    if (output.path == "-") return false;
+    const std::string why = whyNotCompleteImage(output.path, o.render.width, o.render.height, o.render.window());
+    if (why.empty()) announce(progress, output.path + " is complete: nothing to render (--skip-existing)");
+    else if (why != "missing") announce(progress, "rendering " + output.path + " again: " + why);
+    return why.empty();
+}
+
+// --skip-existing on a run of one picture (one frame): every file it writes is already complete.
+bool outputsComplete(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs,
+                     const FrameRange& frames, ProgressMode progress) {
+    if (!o.skipExisting || frames.first != frames.last) return false;
+    bool any = false;
+    for (ImageOutputSettings output : outputs) {
+        if (output.format == ImageFormat::Null) continue;
+        output.path = framePath(output.path, frames.first);
+        if (!outputIsComplete(o, output, progress)) return false;
+        any = true;
+    }
+    return any;
+}
+
 std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSettings& settings, ProgressMode progress,
                                             RenderStats& stats) {
     announce(progress, std::string("building the ") + accelKindName(settings.kind) + " tree over " +
@@ -212,12 +249,14 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
 
 int runRender(RenderOptions o) {
     if (o.region) o.render.region = parseRegion(*o.region);
+    if (o.tile) o.render.region = parseTile(o.tiles.value_or(""), *o.tile, o.render.width, o.render.height);
     validate(o.render);
     const FrameRange frames = parseFrames(o.frames, o.orbit);
     const std::vector<ImageOutputSettings> outputs = outputSettings(o);
     o.render.aovs = std::any_of(outputs.begin(), outputs.end(), [](const ImageOutputSettings& s) { return !s.aovs.empty(); });
-    prepareOutputs(o, outputs, frames.first);
     const ProgressMode progress = progressMode(o.progress, o.quiet);
+    if (outputsComplete(o, outputs, frames, progress)) return 0;
+    prepareOutputs(o, outputs, frames.first);
 
     Scene scene = loadWithCamera(o);
     scene.dropDescription();

@@ -28,6 +28,9 @@ struct RenderOptions {
     RenderSettings render;
     AccelSettings accel;                  // kind Kd unless -B or --accel says otherwise
     std::optional<std::string> region;    // --region x0,y0,x1,y1 (x1, y1 exclusive)
+    std::optional<std::string> tiles;     // --tiles CxR: the farm's grid of tiles
+    std::optional<std::string> tile;      // --tile I/N: render tile I of the N = C x R
+    bool skipExisting = false;            // --skip-existing: a complete output exits 0 at once
     bool quiet = false;                   // -q (implies --progress none)
     ProgressMode progress = ProgressMode::Auto;  // --progress auto|bar|lines|none
     bool statsLine = false;               // -b
@@ -60,6 +63,9 @@ std::string framePath(const std::string& path, int frame);
 
 // "x0,y0,x1,y1" with x1 and y1 exclusive; throws rt::InputError if it is not four integers.
 PixelWindow parseRegion(const std::string& text);
+
+// The window of "--tiles CxR --tile I/N"; throws rt::InputError if either is malformed or N is not C x R.
+PixelWindow parseTile(const std::string& tiles, const std::string& tile, int width, int height);
 
 // Loads the scene, builds the accelerator, renders and writes what the options ask for.
 // Returns the exit code; throws rt::InputError for bad input (exit 2), others for failures (exit 1).
