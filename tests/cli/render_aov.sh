@@ -17,7 +17,7 @@ iinfo "$WORK/n.exr" | grep -q "3 channel" || fail "the N layer: $(iinfo "$WORK/n
 
 # The mean of cost.tests over the picture is the intersection tests per camera ray.
 mean=$(oiiotool "$WORK/all.exr" --ch cost.tests --printstats | awk '$1 == "Stats" && $2 == "Avg:" {print $3}')
-rays=$(grep -o '"primaryRays": [0-9]*' "$WORK/s.json" | grep -o '[0-9]*$')
+rays=$(grep -o '"cameraRays": [0-9]*' "$WORK/s.json" | grep -o '[0-9]*$')
 awk -v m="$mean" -v r="$rays" 'BEGIN { exit !(m > 0 && r == 48 * 36) }' || fail "cost.tests mean $mean over $rays camera rays"
 
 # A subset in the order of the table; the colour is the same as without AOVs.

@@ -7,7 +7,7 @@ opts=(-s -x 40 -y 30 --exr-pixels float --progress lines)
 expect_exit 0 "$RT_RENDER" "$scene" "${opts[@]}" --orbit 4 -f "$WORK/turn/f_###.exr" --stats-json "$WORK/turn/s_#.json"
 [ "$(grep -c "tree built" "$WORK/stderr")" = 1 ] || fail "the tree was not built exactly once: $(cat "$WORK/stderr")"
 for f in 000 001 002 003; do [ -f "$WORK/turn/f_$f.exr" ] || fail "no frame $f: $(ls "$WORK/turn")"; done
-for f in 0 1 2 3; do grep -q '"primaryRays": 1200' "$WORK/turn/s_$f.json" || fail "no statistics for frame $f"; done
+for f in 0 1 2 3; do grep -q '"cameraRays": 1200' "$WORK/turn/s_$f.json" || fail "no statistics for frame $f"; done
 "$RT_RENDER" "$scene" "${opts[@]}" -q -f "$WORK/plain.exr"
 idiff -fail 0 -warn 0 "$WORK/plain.exr" "$WORK/turn/f_000.exr" >/dev/null || fail "frame 0 is not the plain render"
 if idiff -fail 0 -warn 0 "$WORK/plain.exr" "$WORK/turn/f_001.exr" >/dev/null; then fail "frame 1 did not turn"; fi

@@ -194,7 +194,7 @@ TEST(XmlWriter, EveryCameraIsWrittenTheFirstFirstAndAllNamed) {
     EXPECT_EQ(back.camera.focalDistance, Real(700));
     ASSERT_EQ(back.extraCameras.size(), 2u);
     EXPECT_EQ(back.extraCameras[0].name, "camera");  // several cameras: each can be picked by name
-    EXPECT_EQ(back.extraCameras[1].name, "main-2");
+    EXPECT_EQ(back.extraCameras[1].name, "main_2");
     EXPECT_EQ(back.extraCameras[1].origin, Vec3(1, 2, 3));
     Scene one;  // one unnamed camera stays unnamed, as the thesis wrote it
     EXPECT_EQ(savedToStdout(one).find("name="), std::string::npos);
