@@ -2,7 +2,7 @@
 // materials, names and drop counts behave the same whichever format a file is in:
 // - one Model per distinct mesh of the file, converted the first time it is asked for (the
 //   importer's MeshKey says what a distinct mesh is: a glTF (mesh, primitive), an aiMesh, an
-//   OBJ part), named uniquely and safely (scene/names.h);
+//   OBJ part), named uniquely and safely (scene/unique_names.h);
 // - triangles without area dropped and counted once per model (ImportReport::droppedDegenerate)
 //   and once per placement (droppedDegenerateInScene);
 // - one Material per material of the file (MaterialKey), made the first time an instance uses it;
@@ -22,7 +22,7 @@
 
 #include "import/import.h"
 #include "import/mesh_data.h"
-#include "scene/names.h"
+#include "scene/unique_names.h"
 #include "scene/crease_normals.h"
 
 namespace rt {

@@ -8,7 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "scene/base64.h"
-#include "scene/names.h"
+#include "scene/unique_names.h"
 #include "scene/raw_model.h"
 
 namespace rt {

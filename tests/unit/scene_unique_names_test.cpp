@@ -1,8 +1,8 @@
 // Names safe as identifiers and file names, unique within their table, by one rule for the
-// importers and the scene writer (scene/names.*).
+// importers and the scene writer (scene/unique_names.*).
 #include <gtest/gtest.h>
 
-#include "scene/names.h"
+#include "scene/unique_names.h"
 
 namespace rt {
 namespace {

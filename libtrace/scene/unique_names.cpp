@@ -1,4 +1,4 @@
-#include "scene/names.h"
+#include "scene/unique_names.h"
 
 #include <cctype>
 
