@@ -22,7 +22,7 @@ std::optional<ImageFormat> parseImageFormat(const std::string& name);
 // From a file name's extension (.png .exr .tga .txt .jpg .jpeg .tif .tiff .hdr .pfm .webp), case-insensitive.
 std::optional<ImageFormat> imageFormatFromPath(const std::string& path);
 const char* imageFormatName(ImageFormat format);
-// "null", "png", "exr", "tga", "text": the names parseImageFormat knows.
+// Every format's name, as parseImageFormat knows it (rt-render -o takes these).
 std::vector<std::string> imageFormatNames();
 
 // The pixel type of EXR files: half (16-bit float, the default) or float (32-bit).
