@@ -31,6 +31,11 @@ inline constexpr NamedValues<ExrPixelType, 2> kExrPixelTypeNames{
     {{"half", ExrPixelType::Half}, {"float", ExrPixelType::Float}}};
 // The bits per channel PNG files may have.
 inline constexpr std::array<int, 2> kPngBits{8, 16};
+// The bits per channel TIFF files may have: 8 and 16 display-referred, 32 float and linear.
+inline constexpr std::array<int, 3> kTiffBits{8, 16, 32};
+// OpenEXR's compression methods, as OpenImageIO names them.
+inline constexpr std::array<const char*, 10> kExrCompressions{"none", "rle",   "zips", "zip",  "piz",
+                                                              "pxr24", "b44", "b44a", "dwaa", "dwab"};
 // Whether the installed OpenImageIO writes the format (PFM needs OpenImageIO 2.5, WebP libwebp).
 bool imageFormatWritable(ImageFormat format);
 std::string imageFormatExtensions();  // ".png .exr ...", for help and messages
@@ -48,7 +53,7 @@ struct ImageOutputSettings {
     ImageFormat format = ImageFormat::Null;
     std::string path;     // "-" is standard output
     ExrPixelType exrPixels = ExrPixelType::Half;
-    std::string exrCompression = "zip";  // OpenEXR's compression: none zip zips piz pxr24 b44 b44a dwaa dwab rle
+    std::string exrCompression = "zip";  // one of kExrCompressions
     int pngBits = 8;      // 8 or 16
     int tiffBits = 8;     // 8 or 16 (display-referred), or 32: float, linear
     int jpegQuality = 90;  // 1-100

@@ -84,11 +84,11 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember(rt::kPngBits))
         ->capture_default_str()->group(group);
     app.add_option("--tiff-bits", o.tiffBits, "TIFF bits per channel: 8 or 16 (display-referred), 32 (float, linear)")
-        ->check(CLI::IsMember({8, 16, 32}))->capture_default_str()->group(group);
+        ->check(CLI::IsMember(rt::kTiffBits))->capture_default_str()->group(group);
     app.add_option("--jpeg-quality", o.jpegQuality, "JPEG quality, 1-100")->check(numberIn(1, 100))
         ->capture_default_str()->group(group);
     app.add_option("--exr-compression", o.exrCompression, "EXR compression")
-        ->check(CLI::IsMember({"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"}))
+        ->check(CLI::IsMember(std::vector<std::string>(rt::kExrCompressions.begin(), rt::kExrCompressions.end())))
         ->capture_default_str()->group(group);
 }
 
