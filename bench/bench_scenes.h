@@ -11,10 +11,8 @@ namespace rt::bench {
 
 inline const std::map<std::string, SceneRecipe>& generatedRecipes() {
     static const std::map<std::string, SceneRecipe> all = {
-        {"tri10k", {10000, 0, Placement::Uniform, 1}},
-        {"tri100k", {100000, 0, Placement::Uniform, 1}},
-        {"tri1M", {1000000, 0, Placement::Uniform, 1}},
-        {"spheres100k", {0, 100000, Placement::Clustered, 1}},
+        {"tri10k", {10000, 0, Placement::Uniform, 1}},         {"tri100k", {100000, 0, Placement::Uniform, 1}},
+        {"tri1M", {1000000, 0, Placement::Uniform, 1}},        {"spheres100k", {0, 100000, Placement::Clustered, 1}},
         {"stadium100k", {100000, 0, Placement::Clustered, 1}},
     };
     return all;
@@ -27,8 +25,10 @@ inline Scene generatedScene(const std::string& name) {
     Scene scene = generateScene(generatedRecipes().at(name));
     if (name == "stadium100k") {
         constexpr Real kHalf = 50, kFloor = Real(-1.2);
-        scene.looseObjects.add<Triangle>({{-kHalf, kFloor, -kHalf}, {kHalf, kFloor, kHalf}, {kHalf, kFloor, -kHalf}}, 0);
-        scene.looseObjects.add<Triangle>({{-kHalf, kFloor, -kHalf}, {-kHalf, kFloor, kHalf}, {kHalf, kFloor, kHalf}}, 0);
+        scene.looseObjects.add<Triangle>({{-kHalf, kFloor, -kHalf}, {kHalf, kFloor, kHalf}, {kHalf, kFloor, -kHalf}},
+                                         0);
+        scene.looseObjects.add<Triangle>({{-kHalf, kFloor, -kHalf}, {-kHalf, kFloor, kHalf}, {kHalf, kFloor, kHalf}},
+                                         0);
         scene.flatten();
     }
     return scene;

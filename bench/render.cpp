@@ -8,8 +8,8 @@
 #include <cstdlib>
 
 #include "accel/build.h"
-#include "render/renderer.h"
 #include "import/load_scene.h"
+#include "render/renderer.h"
 
 namespace {
 

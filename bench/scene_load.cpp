@@ -5,9 +5,9 @@
 // index) and of the model kept for instancing, and primitives per second.
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "scene/raw_model.h"
 #include "scene/xml_loader.h"

@@ -10,6 +10,7 @@ packages=(
     libassimp-dev libtinygltf-dev libtinyobjloader-dev libopenimageio-dev libopencolorio-dev libcli11-dev
     libpugixml-dev libgtest-dev libbenchmark-dev
     openimageio-tools opencolorio-tools
+    clang-format-14  # the `format` test: scripts/check-format.sh against .clang-format
     python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
     slurm-wlm munge  # tests/cli/farm_slurm.sh starts a one-node Slurm cluster (as root) for rt-farm
 )

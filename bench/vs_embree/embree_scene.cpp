@@ -51,8 +51,7 @@ void attachTriangles(RTCDevice device, RTCScene scene, const Primitives& prims) 
 void sphereBounds(const RTCBoundsFunctionArguments* args) {
     const auto* prims = static_cast<const Primitives*>(args->geometryUserPtr);
     const Aabb b = prims->bounds(prims->count<Triangle>() + args->primID);
-    *args->bounds_o = {float(b.lo.x), float(b.lo.y), float(b.lo.z), 0,
-                       float(b.hi.x), float(b.hi.y), float(b.hi.z), 0};
+    *args->bounds_o = {float(b.lo.x), float(b.lo.y), float(b.lo.z), 0, float(b.hi.x), float(b.hi.y), float(b.hi.z), 0};
 }
 
 // The direction is normalised again in Real: rounded to float it is unit only to about
@@ -85,8 +84,8 @@ void sphereOccluded(const RTCOccludedFunctionNArguments* args) {
     const Sphere& sphere = prims->all<Sphere>()[args->primID];
     for (unsigned i = 0; i < args->N; ++i) {
         Real t;
-        if (args->valid[i] == -1 && intersectSphere(sphere, rayOf(args->ray, args->N, i),
-                                                    RTCRayN_tfar(args->ray, args->N, i), t))
+        if (args->valid[i] == -1 &&
+            intersectSphere(sphere, rayOf(args->ray, args->N, i), RTCRayN_tfar(args->ray, args->N, i), t))
             RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();  // Embree's "occluded"
     }
 }
@@ -182,7 +181,8 @@ void EmbreeScene::intersect8(const Ray* rays, Hit* hits, bool* found) const {
         found[i] = rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
         if (!found[i]) continue;
         hits[i].t = rh.ray.tfar[i];
-        hits[i].prim = rh.hit.geomID[i] == kSphereGeometry ? prims_.count<Triangle>() + rh.hit.primID[i] : rh.hit.primID[i];
+        hits[i].prim =
+            rh.hit.geomID[i] == kSphereGeometry ? prims_.count<Triangle>() + rh.hit.primID[i] : rh.hit.primID[i];
         hits[i].u = rh.hit.u[i], hits[i].v = rh.hit.v[i];
     }
 }

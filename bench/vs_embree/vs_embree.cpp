@@ -24,9 +24,9 @@
 // for shadow rays, both say occluded or both say not. Disagreeing rays are counted per set and the first
 // few are listed on stderr; more than kMaxDisagreement of a set fails the run (exit 1).
 // The tables go to stdout as Markdown.
-#include <CLI/CLI.hpp>
 #include <omp.h>
 #include <time.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +70,7 @@ Scene loadScene(const std::string& name) {
 }
 
 struct RaySet {
-    std::string name;  // camera, shadow, reflection
+    std::string name;     // camera, shadow, reflection
     bool anyHit = false;  // shadow rays ask only whether something is closer than tMax
     std::vector<Ray> rays;
     std::vector<Real> tMax;
@@ -193,7 +193,8 @@ bool agree(const RaySet& set, const Answers& a, const Answers& b, std::size_t i)
     if (set.anyHit || !a.found[i]) return true;
     const Hit &x = a.hits[i], &y = b.hits[i];
     const Ray& r = set.rays[i];
-    const Real scale = std::max({std::abs(r.origin.x), std::abs(r.origin.y), std::abs(r.origin.z)}) + std::max(x.t, y.t);
+    const Real scale =
+        std::max({std::abs(r.origin.x), std::abs(r.origin.y), std::abs(r.origin.z)}) + std::max(x.t, y.t);
     return x.prim == y.prim && std::abs(x.t - y.t) <= kRelativeTolerance * scale;
 }
 
@@ -205,13 +206,14 @@ std::size_t countDisagreements(const std::string& scene, const std::string& trac
         if (++count > kListedDisagreements) continue;
         const Hit &x = rtAnswers.hits[i], &y = other.hits[i];
         const Ray& r = set.rays[i];
-        std::fprintf(stderr,
-                     "  differ %s %s %s ray %zu (o %.9g %.9g %.9g, d %.9g %.9g %.9g): rt %s prim %u t %.9g u %.3g v %.3g, "
-                     "Embree %s prim %u t %.9g u %.3g v %.3g\n",
-                     scene.c_str(), set.name.c_str(), tracer.c_str(), i, double(r.origin.x), double(r.origin.y),
-                     double(r.origin.z), double(r.direction.x), double(r.direction.y), double(r.direction.z),
-                     rtAnswers.found[i] ? "hit" : "miss", x.prim, double(x.t), double(x.u), double(x.v),
-                     other.found[i] ? "hit" : "miss", y.prim, double(y.t), double(y.u), double(y.v));
+        std::fprintf(
+            stderr,
+            "  differ %s %s %s ray %zu (o %.9g %.9g %.9g, d %.9g %.9g %.9g): rt %s prim %u t %.9g u %.3g v %.3g, "
+            "Embree %s prim %u t %.9g u %.3g v %.3g\n",
+            scene.c_str(), set.name.c_str(), tracer.c_str(), i, double(r.origin.x), double(r.origin.y),
+            double(r.origin.z), double(r.direction.x), double(r.direction.y), double(r.direction.z),
+            rtAnswers.found[i] ? "hit" : "miss", x.prim, double(x.t), double(x.u), double(x.v),
+            other.found[i] ? "hit" : "miss", y.prim, double(y.t), double(y.u), double(y.v));
     }
     return count;
 }
@@ -220,8 +222,10 @@ std::size_t countDisagreements(const std::string& scene, const std::string& trac
 
 std::string rate(double perSecond) {
     char text[32];
-    if (perSecond >= 1e6) std::snprintf(text, sizeof text, "%.2fM", perSecond / 1e6);
-    else std::snprintf(text, sizeof text, "%.0fk", perSecond / 1e3);
+    if (perSecond >= 1e6)
+        std::snprintf(text, sizeof text, "%.2fM", perSecond / 1e6);
+    else
+        std::snprintf(text, sizeof text, "%.0fk", perSecond / 1e3);
     return text;
 }
 
@@ -232,7 +236,9 @@ std::string fixed(double value, int digits) {
 }
 
 std::string count(std::size_t n) {
-    return n >= 1000000 ? fixed(double(n) / 1e6, 2) + "M" : n >= 1000 ? fixed(double(n) / 1e3, 1) + "k" : std::to_string(n);
+    return n >= 1000000 ? fixed(double(n) / 1e6, 2) + "M"
+           : n >= 1000  ? fixed(double(n) / 1e3, 1) + "k"
+                        : std::to_string(n);
 }
 
 std::string disagreement(std::size_t differ, std::size_t rays) {
@@ -258,7 +264,8 @@ std::string measureSet(const std::string& scene, std::size_t prims, const RaySet
     std::string row = "| " + scene + " | " + count(prims) + " | " + set.name + " | " + count(set.rays.size()) + " | " +
                       rate(n / seconds[0]) + " | " + rate(n / seconds[1]) + " | " + fixed(seconds[1] / seconds[0], 2) +
                       " | ";
-    std::size_t differ = countDisagreements(scene, set.anyHit ? "rtcOccluded1" : "rtcIntersect1", set, answers[0], answers[1]);
+    std::size_t differ =
+        countDisagreements(scene, set.anyHit ? "rtcOccluded1" : "rtcIntersect1", set, answers[0], answers[1]);
     if (packets) {
         row += rate(n / seconds[2]) + " | " + fixed(seconds[2] / seconds[0], 2) + " | ";
         differ = std::max(differ, countDisagreements(scene, "rtcIntersect8", set, answers[0], answers[2]));
@@ -302,11 +309,12 @@ SceneReport measureScene(const std::string& name, int passes) {
         report.rayRows.push_back(measureSet(name, prims.size(), *set, *kd, embree, passes, report.agreed));
     }
     const double n = double(prims.size());
-    const double geometryBytes = double(prims.count<Triangle>() * sizeof(Triangle) + prims.count<Sphere>() * sizeof(Sphere));
+    const double geometryBytes =
+        double(prims.count<Triangle>() * sizeof(Triangle) + prims.count<Sphere>() * sizeof(Sphere));
     report.buildRow = "| " + name + " | " + count(prims.size()) + " | " + fixed(kdSeconds * 1e3, 0) + " ms | " +
-                      fixed(embreeSeconds * 1e3, 0) + " ms | " + fixed(kdSeconds / embreeSeconds, 2) +
-                      " | " + fixed(double(kd->stats().memoryBytes) / n, 1) + " + " + fixed(geometryBytes / n, 1) +
-                      " | " + fixed(double(embree.memoryBytes()) / n, 1) + " |";
+                      fixed(embreeSeconds * 1e3, 0) + " ms | " + fixed(kdSeconds / embreeSeconds, 2) + " | " +
+                      fixed(double(kd->stats().memoryBytes) / n, 1) + " + " + fixed(geometryBytes / n, 1) + " | " +
+                      fixed(double(embree.memoryBytes()) / n, 1) + " |";
     return report;
 }
 
@@ -327,7 +335,7 @@ void printTables(const std::vector<SceneReport>& reports) {
 
 int main(int argc, char** argv) {
     CLI::App app{"rt's KD tree against Intel Embree 3: the same scenes and rays, rays per second and build times"};
-    std::vector<std::string> scenes = {"balls", "balls2",  "ships", "tree",       "pyramid5",
+    std::vector<std::string> scenes = {"balls",  "balls2",  "ships", "tree",       "pyramid5",
                                        "tri10k", "tri100k", "tri1M", "stadium100k"};
     int passes = 3;
     bool quick = false;

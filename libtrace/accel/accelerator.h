@@ -33,7 +33,7 @@ struct RayCounters {
 // What a built structure looks like (thesis Table 4.3 and more).
 struct AccelStats {
     std::string name;
-    std::uint64_t primitives = 0;         // that the structure was built over
+    std::uint64_t primitives = 0;  // that the structure was built over
     double buildSeconds = 0;
     std::uint64_t nodes = 0;
     std::uint64_t leaves = 0;
@@ -42,7 +42,7 @@ struct AccelStats {
     double averageLeafDepth = 0;
     double averagePrimitivesPerLeaf = 0;  // over non-empty leaves
     std::uint64_t primitiveReferences = 0;
-    std::uint64_t memoryBytes = 0;        // nodes and index arrays, not the primitives
+    std::uint64_t memoryBytes = 0;  // nodes and index arrays, not the primitives
     double sahCost = 0;
 
     double bytesPerPrimitive() const { return primitives ? double(memoryBytes) / double(primitives) : 0; }
@@ -56,9 +56,9 @@ struct SplitPlane {
 
 // One node of a tree as a tool sees it (rt-inspect's dumps and histograms).
 struct TreeNodeInfo {
-    std::uint32_t id = 0;      // pre-order index; the root is 0
-    std::uint32_t depth = 0;   // the root has depth 0
-    Aabb bounds;               // the node's voxel (or, in a bounding volume hierarchy, its box)
+    std::uint32_t id = 0;     // pre-order index; the root is 0
+    std::uint32_t depth = 0;  // the root has depth 0
+    Aabb bounds;              // the node's voxel (or, in a bounding volume hierarchy, its box)
     bool leaf = true;
     std::optional<SplitPlane> plane;  // of an inner node of a tree that splits by planes
     std::uint32_t primitives = 0;     // primitive references of a leaf

@@ -8,9 +8,12 @@ namespace rt {
 
 std::unique_ptr<Accelerator> buildAccelerator(const Primitives& prims, const AccelSettings& settings) {
     switch (settings.kind) {
-        case AccelKind::Naive: return std::make_unique<NaiveAccelerator>(prims);
-        case AccelKind::Bsp: return buildBspTree(prims, settings.bsp);
-        case AccelKind::Kd: break;
+        case AccelKind::Naive:
+            return std::make_unique<NaiveAccelerator>(prims);
+        case AccelKind::Bsp:
+            return buildBspTree(prims, settings.bsp);
+        case AccelKind::Kd:
+            break;
     }
     return buildKdTree(prims, settings.kd);
 }

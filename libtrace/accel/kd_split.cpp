@@ -93,8 +93,8 @@ SahModel::SahModel(const Aabb& voxel, const KdSettings& settings)
 // At each position: primitives ending there leave the upper side before the plane is
 // evaluated, those starting there join the lower side after it, and those lying in it
 // are offered to either side (SahModel::consider).
-void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives,
-                       const SahModel& sah, SahSplit& best) {
+void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives, const SahModel& sah,
+                       SahSplit& best) {
     std::size_t below = 0, above = primitives;
     const std::size_t n = events.size();
     for (std::size_t i = 0; i < n;) {
@@ -120,8 +120,7 @@ SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& 
     return best;
 }
 
-SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples,
-                             const SahModel& sah) {
+SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples, const SahModel& sah) {
     SahSplit best;
     const std::size_t n = boxes.size();
     std::vector<float> planes;
@@ -133,9 +132,9 @@ SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& vox
             if (planes.empty() || p > planes.back()) planes.push_back(p);
         }
         const std::size_t m = planes.size();
-        starts.assign(m + 1, 0);   // starts[k]: primitives whose first plane with lo < plane is k
-        ends.assign(m + 1, 0);     // ends[k]: primitives whose first plane with hi <= plane is k
-        planars.assign(m, 0);      // planars[k]: primitives lying in plane k
+        starts.assign(m + 1, 0);  // starts[k]: primitives whose first plane with lo < plane is k
+        ends.assign(m + 1, 0);    // ends[k]: primitives whose first plane with hi <= plane is k
+        planars.assign(m, 0);     // planars[k]: primitives lying in plane k
         for (const FloatBox& b : boxes) {
             ++starts[std::upper_bound(planes.begin(), planes.end(), b.lo[axis]) - planes.begin()];
             const auto end = std::lower_bound(planes.begin(), planes.end(), b.hi[axis]);

@@ -97,19 +97,18 @@ private:
     double lo_[3], hi_[3];
     double face_[3], rim_[3];  // per split axis: area of the face across it, and its perimeter / 2
     double area_;
-    double areaScale_;         // 2 C_I / area: turns (face + e rim) N into C_I P N
+    double areaScale_;  // 2 C_I / area: turns (face + e rim) N into C_I P N
     double traversalCost_, intersectionCost_, emptyBonus_;
 };
 
 // One pass over the sorted events of `axis` evaluates every candidate plane there.
-void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives,
-                       const SahModel& sah, SahSplit& best);
+void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives, const SahModel& sah,
+                       SahSplit& best);
 
 // The thesis's method: build and sort the events of every axis in this node.
 SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& sah);
 
 // The thesis's sampling: `samples` evenly spaced planes per axis, counted by binary search.
-SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples,
-                             const SahModel& sah);
+SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples, const SahModel& sah);
 
 }  // namespace rt

@@ -52,8 +52,8 @@ void forEachAxis(bool parallel, const PerAxis& f) {
 }
 
 struct KdNode {
-    std::vector<std::uint32_t> primitives;  // ids into Primitives
-    std::vector<FloatBox> boxes;            // their bounds clipped to the voxel
+    std::vector<std::uint32_t> primitives;          // ids into Primitives
+    std::vector<FloatBox> boxes;                    // their bounds clipped to the voxel
     std::array<std::vector<SplitEvent>, 3> events;  // Sweep only: per axis, sorted, indices into `primitives`
     Aabb voxel;
     int depth = 0;
@@ -72,9 +72,7 @@ FloatBox toFloatBox(const Aabb& b, const Aabb& voxel) {
 class KdSplitter {
 public:
     KdSplitter(const Primitives& prims, const KdSettings& settings)
-        : prims_(prims),
-          settings_(settings),
-          maxDepth_(kdMaxDepth(settings, prims.size())) {}
+        : prims_(prims), settings_(settings), maxDepth_(kdMaxDepth(settings, prims.size())) {}
 
     std::optional<Partition<KdNode>> operator()(KdNode& node) const {
         const std::size_t n = node.primitives.size();
@@ -241,9 +239,9 @@ std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettin
     KdNode root = makeRoot(prims, settings);
     const Aabb bounds = root.voxel;
     FlatTree flat = buildFlatTree(std::move(root), KdSplitter(prims, settings));
-    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat),
-                                            std::string("kd-") + kdSplitMethodName(settings.splitMethod),
-                                            sahCosts(settings));
+    auto tree =
+        std::make_unique<SplitTree>(prims, bounds, std::move(flat),
+                                    std::string("kd-") + kdSplitMethodName(settings.splitMethod), sahCosts(settings));
     tree->setBuildSeconds(stopwatch.seconds());
     return tree;
 }

@@ -21,9 +21,9 @@ inline constexpr int kMaxLeafPrimitives = 1 << 20;  // BspSettings::minPrimitive
 inline constexpr int kMaxKdSamples = 1024;          // KdSettings::samples
 
 struct BspSettings {
-    int maxDepth = 20;         // stop subdividing below this depth (thesis 2.4.1)
-    int minPrimitives = 4;     // a node with at most this many primitives becomes a leaf
-    bool roundRobin = false;   // split axis X, Y, Z, X, ... instead of the longest axis
+    int maxDepth = 20;        // stop subdividing below this depth (thesis 2.4.1)
+    int minPrimitives = 4;    // a node with at most this many primitives becomes a leaf
+    bool roundRobin = false;  // split axis X, Y, Z, X, ... instead of the longest axis
 };
 
 enum class KdSplitMethod {
@@ -41,7 +41,7 @@ struct KdSettings {
     double emptyBonus = 0.8;        // cost factor for splits that cut off empty space (1 = none)
     std::optional<int> maxDepth;    // default 8 + 1.3 log2(N)
     KdSplitMethod splitMethod = KdSplitMethod::Sweep;
-    int samples = 16;               // candidate planes per axis for Sample (8-32 in the thesis)
+    int samples = 16;  // candidate planes per axis for Sample (8-32 in the thesis)
 };
 
 struct AccelSettings {

@@ -17,8 +17,7 @@ void FlatTree::append(const FlatTree& subtree) {
         node.relocate(nodeBase, primitiveBase);
         nodes.push_back(node);
     }
-    primitiveIndices.insert(primitiveIndices.end(), subtree.primitiveIndices.begin(),
-                            subtree.primitiveIndices.end());
+    primitiveIndices.insert(primitiveIndices.end(), subtree.primitiveIndices.begin(), subtree.primitiveIndices.end());
 }
 
 SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs)
@@ -54,7 +53,7 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     Pending stack[kMaxTreeDepth];
     int size = 0;
     std::uint32_t index = 0;
-    std::uint64_t steps = 0;  // in a register; added to the caller's counters once
+    std::uint64_t steps = 0;            // in a register; added to the caller's counters once
     const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     for (;;) {
         if (tLimit < tMin) break;
@@ -97,11 +96,12 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;
-    traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
-        counters.intersectionTests += count;
-        for (std::uint32_t i = 0; i < count; ++i) prims.intersect(ids[i], ray, nearest.t, nearest);
-        return false;  // a nearer hit may still lie in a later node; traverse() knows when not
-    });
+    traverse(ray, tMax, nearest.t, counters,
+             [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
+                 counters.intersectionTests += count;
+                 for (std::uint32_t i = 0; i < count; ++i) prims.intersect(ids[i], ray, nearest.t, nearest);
+                 return false;  // a nearer hit may still lie in a later node; traverse() knows when not
+             });
     // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
     if (!(nearest.t < tMax)) return false;
     hit = nearest;
@@ -171,8 +171,10 @@ AccelStats SplitTree::computeStats(std::string name, SahCosts costs) const {
         ++s.leaves;
         leafDepthSum += n.depth;
         s.primitiveReferences += n.primitives;
-        if (n.primitives == 0) ++s.emptyLeaves;
-        else ++nonEmptyLeaves;
+        if (n.primitives == 0)
+            ++s.emptyLeaves;
+        else
+            ++nonEmptyLeaves;
         s.sahCost += costs.intersection * n.primitives * probability;
     });
     s.averageLeafDepth = s.leaves ? leafDepthSum / double(s.leaves) : 0;

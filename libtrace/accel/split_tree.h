@@ -54,7 +54,7 @@ static_assert(sizeof(SplitNode) == 8);
 
 // A tree (or subtree) as the builders produce it.
 struct FlatTree {
-    std::vector<SplitNode> nodes;             // pre-order
+    std::vector<SplitNode> nodes;  // pre-order
     std::vector<std::uint32_t> primitiveIndices;
 
     void addLeaf(const std::vector<std::uint32_t>& primitives);

@@ -56,8 +56,8 @@ void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split, Par
     errors.capture([&] { buildSubtree(std::move(parts->above), above, split, errors); });
 #pragma omp taskwait
     if (errors.failed()) return;
-    out.nodes.push_back(SplitNode::inner(parts->axis, parts->split,
-                                         std::uint32_t(out.nodes.size() + 1 + below.nodes.size())));
+    out.nodes.push_back(
+        SplitNode::inner(parts->axis, parts->split, std::uint32_t(out.nodes.size() + 1 + below.nodes.size())));
     out.append(below);
     out.append(above);
 }

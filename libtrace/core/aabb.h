@@ -15,8 +15,14 @@ struct Aabb {
     constexpr Aabb(const Vec3& lo_, const Vec3& hi_) : lo(lo_), hi(hi_) {}
 
     bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
-    void extend(const Vec3& p) { lo = min(lo, p); hi = max(hi, p); }
-    void extend(const Aabb& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
+    void extend(const Vec3& p) {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    void extend(const Aabb& b) {
+        lo = min(lo, b.lo);
+        hi = max(hi, b.hi);
+    }
 
     Vec3 diagonal() const { return hi - lo; }
     Vec3 center() const { return (lo + hi) * Real(0.5); }

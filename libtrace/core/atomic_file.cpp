@@ -42,8 +42,8 @@ std::string temporaryPrefix(const fs::path& target) {
 std::string temporaryPathFor(const std::string& path) {
     static std::atomic<int> counter{0};  // unique per call, also across threads
     const fs::path p(path);
-    const std::string name = temporaryPrefix(p) + std::to_string(getpid()) + "-" + std::to_string(counter++) +
-                             p.extension().string();
+    const std::string name =
+        temporaryPrefix(p) + std::to_string(getpid()) + "-" + std::to_string(counter++) + p.extension().string();
     return (p.parent_path() / name).string();
 }
 
@@ -254,8 +254,10 @@ void exchangeFolders(const fs::path& temp, const fs::path& folder, const fs::pat
 void putTheOldFolderBack(const fs::path& temp, const fs::path& folder) noexcept {
     std::error_code ec;
     try {
-        if (fs::exists(temp, ec)) exchangeFolders(temp, folder, temporaryPathFor(folder.string()));
-        else fs::rename(folder, temp, ec);  // there was none: remove the new one with the temporary
+        if (fs::exists(temp, ec))
+            exchangeFolders(temp, folder, temporaryPathFor(folder.string()));
+        else
+            fs::rename(folder, temp, ec);    // there was none: remove the new one with the temporary
     } catch (const fs::filesystem_error&) {  // nothing more can be done; the caller reports the first failure
     }
 }
@@ -326,8 +328,7 @@ void commitFileAndFolderAtomically(const std::string& path, const std::string& f
     const std::string temp = temporaryPathFor(path), tempFolder = temporaryPathFor(folder);
     const LiveTemporary liveFile(temp, LiveKind::File), liveFolder(tempFolder, LiveKind::Folder);
     try {
-        if (!fs::create_directories(tempFolder, ec))
-            throw cannotWrite(folder, ec ? ec.value() : EEXIST);
+        if (!fs::create_directories(tempFolder, ec)) throw cannotWrite(folder, ec ? ec.value() : EEXIST);
         if (!write(temp, tempFolder)) throw cannotWrite(path, 0);
         syncTemporary(path, temp, std::nullopt);
         testWriteDelay();

@@ -13,8 +13,18 @@ struct Color {
     constexpr Color() = default;
     constexpr Color(float r_, float g_, float b_) : r(r_), g(g_), b(b_) {}
 
-    constexpr Color& operator+=(const Color& c) { r += c.r; g += c.g; b += c.b; return *this; }
-    constexpr Color& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
+    constexpr Color& operator+=(const Color& c) {
+        r += c.r;
+        g += c.g;
+        b += c.b;
+        return *this;
+    }
+    constexpr Color& operator*=(float s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
     constexpr bool operator==(const Color&) const = default;
 };
 

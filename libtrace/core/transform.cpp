@@ -41,8 +41,7 @@ Matrix invertAffine(const Matrix& m) {
     r[2][0] = c02 * s;
     r[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * s;
     r[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * s;
-    for (int i = 0; i < 3; ++i)
-        r[i][3] = -(r[i][0] * m[0][3] + r[i][1] * m[1][3] + r[i][2] * m[2][3]);
+    for (int i = 0; i < 3; ++i) r[i][3] = -(r[i][0] * m[0][3] + r[i][1] * m[1][3] + r[i][2] * m[2][3]);
     return r;
 }
 
@@ -56,7 +55,6 @@ Matrix rotation(int axis, Real radians) {
     m[j][j] = c;
     return m;
 }
-
 
 // The largest eigenvalue of a symmetric 3x3 matrix in closed form (Smith 1961, "Eigenvalues of a
 // symmetric 3x3 matrix"): the eigenvalues are q + 2p cos(phi + 2 pi k / 3), where q is the mean of
@@ -106,9 +104,7 @@ Transform Transform::rotateX(Real radians) { return {rotation(0, radians), rotat
 Transform Transform::rotateY(Real radians) { return {rotation(1, radians), rotation(1, -radians)}; }
 Transform Transform::rotateZ(Real radians) { return {rotation(2, radians), rotation(2, -radians)}; }
 
-Transform operator*(const Transform& a, const Transform& b) {
-    return {multiply(a.m_, b.m_), multiply(b.inv_, a.inv_)};
-}
+Transform operator*(const Transform& a, const Transform& b) { return {multiply(a.m_, b.m_), multiply(b.inv_, a.inv_)}; }
 
 Vec3 Transform::point(const Vec3& p) const {
     return {m_[0][0] * p.x + m_[0][1] * p.y + m_[0][2] * p.z + m_[0][3],
@@ -117,8 +113,7 @@ Vec3 Transform::point(const Vec3& p) const {
 }
 
 Vec3 Transform::vector(const Vec3& v) const {
-    return {m_[0][0] * v.x + m_[0][1] * v.y + m_[0][2] * v.z,
-            m_[1][0] * v.x + m_[1][1] * v.y + m_[1][2] * v.z,
+    return {m_[0][0] * v.x + m_[0][1] * v.y + m_[0][2] * v.z, m_[1][0] * v.x + m_[1][1] * v.y + m_[1][2] * v.z,
             m_[2][0] * v.x + m_[2][1] * v.y + m_[2][2] * v.z};
 }
 

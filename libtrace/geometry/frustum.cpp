@@ -17,8 +17,8 @@ Aabb discBounds(const Vec3& c, const Vec3& w, Real r) {
 
 // Rounding in discBounds must not cut off the surface: grow a box by a few ulps of its size.
 Aabb padded(const Aabb& b) {
-    const Real scale = std::max({std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z), std::abs(b.hi.x),
-                                 std::abs(b.hi.y), std::abs(b.hi.z)});
+    const Real scale = std::max(
+        {std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z), std::abs(b.hi.x), std::abs(b.hi.y), std::abs(b.hi.z)});
     const Real pad = 16 * std::numeric_limits<Real>::epsilon() * scale;
     const Vec3 p{pad, pad, pad};
     return {b.lo - p, b.hi + p};
@@ -86,8 +86,8 @@ bool Frustum::containsPoint(const Vec3& p) const {
 Aabb clippedBounds(const Frustum& f, const Aabb& box) {
     bool allCornersInside = true;
     for (int i = 0; i < 8 && allCornersInside; ++i)
-        allCornersInside = f.containsPoint({(i & 1 ? box.hi : box.lo).x, (i & 2 ? box.hi : box.lo).y,
-                                            (i & 4 ? box.hi : box.lo).z});
+        allCornersInside =
+            f.containsPoint({(i & 1 ? box.hi : box.lo).x, (i & 2 ? box.hi : box.lo).y, (i & 4 ? box.hi : box.lo).z});
     if (allCornersInside) return {};  // the solid is convex: the box lies inside, off the surface
     constexpr int kSlabs = 8;
     const Vec3 w = f.axis().w;

@@ -42,8 +42,10 @@ bool overlaps(const Sphere& sphere, const Aabb& box) {
     for (int a = 0; a < 3; ++a) {
         const Real toLo = sphere.center[a] - box.lo[a];
         const Real toHi = sphere.center[a] - box.hi[a];
-        if (toLo < 0) nearest += toLo * toLo;
-        else if (toHi > 0) nearest += toHi * toHi;
+        if (toLo < 0)
+            nearest += toLo * toLo;
+        else if (toHi > 0)
+            nearest += toHi * toHi;
         farthest += std::max(toLo * toLo, toHi * toHi);
     }
     const Real r2 = sphere.radius * sphere.radius;

@@ -41,7 +41,8 @@ template <class F>
 constexpr void forEachKind(F&& f) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (f(std::type_identity<std::tuple_element_t<I, PrimitiveKinds>>{}), ...);
-    }(std::make_index_sequence<kKindCount>{});
+    }
+    (std::make_index_sequence<kKindCount>{});
 }
 
 }  // namespace rt

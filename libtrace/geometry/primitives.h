@@ -89,9 +89,13 @@ class Primitives {
     };
 
     template <class K>
-    KindArray<K>& array() { return std::get<KindArray<K>>(arrays_); }
+    KindArray<K>& array() {
+        return std::get<KindArray<K>>(arrays_);
+    }
     template <class K>
-    const KindArray<K>& array() const { return std::get<KindArray<K>>(arrays_); }
+    const KindArray<K>& array() const {
+        return std::get<KindArray<K>>(arrays_);
+    }
 
     // Calls f(array) for each kind's array.
     template <class F>
@@ -114,9 +118,13 @@ public:
 
     std::uint32_t size() const;
     template <class K>
-    std::uint32_t count() const { return std::uint32_t(array<K>().items.size()); }
+    std::uint32_t count() const {
+        return std::uint32_t(array<K>().items.size());
+    }
     template <class K>
-    const std::vector<K>& all() const { return array<K>().items; }
+    const std::vector<K>& all() const {
+        return array<K>().items;
+    }
     std::vector<KindCount> countsPerKind() const;
 
     // The arrays as they are now; valid until a primitive is added.

@@ -26,11 +26,7 @@ struct CornerValues {
         for (int i = 0; i < N; ++i) out[i] = w * values[i] + u * values[N + i] + v * values[2 * N + i];
         return out;
     }
-    Vec3 corner(int c) const
-        requires(N == 3)
-    {
-        return {values[3 * c], values[3 * c + 1], values[3 * c + 2]};
-    }
+    Vec3 corner(int c) const requires(N == 3) { return {values[3 * c], values[3 * c + 1], values[3 * c + 2]}; }
 };
 
 using CornerNormals = CornerValues<3>;  // unit, or all zero: the geometric normal

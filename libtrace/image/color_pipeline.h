@@ -37,7 +37,7 @@ public:
 
     // The config in use: its file (with "(from $OCIO)" if $OCIO named it) or kBuiltinColorConfigName.
     const std::string& configName() const { return configName_; }
-    const std::string& colorspace() const { return colorspace_; }   // resolved name of the linear space
+    const std::string& colorspace() const { return colorspace_; }  // resolved name of the linear space
     const std::string& display() const { return display_; }
     const std::string& view() const { return view_; }
 

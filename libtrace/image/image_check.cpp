@@ -18,8 +18,8 @@ std::string whyNotSameWindows(const OIIO::ImageSpec& spec, int fullWidth, int fu
     const std::string data = windowText(spec.x, spec.y, spec.x + spec.width, spec.y + spec.height);
     if (data != windowText(w.x0, w.y0, w.x1, w.y1)) return "its data window is " + data;
     if (spec.full_x != 0 || spec.full_y != 0 || spec.full_width != fullWidth || spec.full_height != fullHeight)
-        return "its display window is " + windowText(spec.full_x, spec.full_y, spec.full_x + spec.full_width,
-                                                    spec.full_y + spec.full_height);
+        return "its display window is " +
+               windowText(spec.full_x, spec.full_y, spec.full_x + spec.full_width, spec.full_y + spec.full_height);
     return "";
 }
 

@@ -180,8 +180,8 @@ void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const Imag
 
 // The integer type a display-referred file stores: 16 bits where asked and the format has them.
 OIIO::TypeDesc displayType(const ImageOutputSettings& s) {
-    const bool sixteen = (s.format == ImageFormat::Png && s.pngBits == 16) ||
-                         (s.format == ImageFormat::Tiff && s.tiffBits == 16);
+    const bool sixteen =
+        (s.format == ImageFormat::Png && s.pngBits == 16) || (s.format == ImageFormat::Tiff && s.tiffBits == 16);
     return sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
 }
 
@@ -276,17 +276,22 @@ bool imageFormatWritable(ImageFormat format) {
 
 void writeImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
     switch (s.format) {
-        case ImageFormat::Null: return;
-        case ImageFormat::Exr: return writeExr(image, s, meta);
+        case ImageFormat::Null:
+            return;
+        case ImageFormat::Exr:
+            return writeExr(image, s, meta);
         case ImageFormat::Hdr:
-        case ImageFormat::Pfm: return writeLinearImage(image, s, meta);
+        case ImageFormat::Pfm:
+            return writeLinearImage(image, s, meta);
         case ImageFormat::Tiff:
             return s.tiffBits == 32 ? writeLinearImage(image, s, meta) : writeDisplayImage(image, s, meta);
         case ImageFormat::Png:
         case ImageFormat::Tga:
         case ImageFormat::Jpeg:
-        case ImageFormat::Webp: return writeDisplayImage(image, s, meta);
-        case ImageFormat::Text: return writeText(image, s);
+        case ImageFormat::Webp:
+            return writeDisplayImage(image, s, meta);
+        case ImageFormat::Text:
+            return writeText(image, s);
     }
 }
 

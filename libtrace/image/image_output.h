@@ -1,7 +1,8 @@
 // Writing the rendered picture (thesis 3.4.4): EXR, Radiance HDR, PFM and float TIFF keep the
 // linear scene-referred values; PNG, TGA, JPEG, WebP, 8- and 16-bit TIFF and text are
-// display-referred through the OpenColorIO pipeline; null writes nothing (benchmarks). Every file is written atomically: a failed or interrupted write
-// leaves an existing file untouched and no partial file; "-" writes to standard output.
+// display-referred through the OpenColorIO pipeline; null writes nothing (benchmarks). Every file is written
+// atomically: a failed or interrupted write leaves an existing file untouched and no partial file; "-" writes to
+// standard output.
 #pragma once
 
 #include <optional>
@@ -34,7 +35,7 @@ inline constexpr std::array<int, 2> kPngBits{8, 16};
 // The bits per channel TIFF files may have: 8 and 16 display-referred, 32 float and linear.
 inline constexpr std::array<int, 3> kTiffBits{8, 16, 32};
 // OpenEXR's compression methods, as OpenImageIO names them.
-inline constexpr std::array<const char*, 10> kExrCompressions{"none", "rle",   "zips", "zip",  "piz",
+inline constexpr std::array<const char*, 10> kExrCompressions{"none",  "rle", "zips", "zip",  "piz",
                                                               "pxr24", "b44", "b44a", "dwaa", "dwab"};
 // Whether the installed OpenImageIO writes the format (PFM needs OpenImageIO 2.5, WebP libwebp).
 bool imageFormatWritable(ImageFormat format);
@@ -51,12 +52,12 @@ ImageFormat chooseImageFormat(const std::optional<std::string>& type, const std:
 
 struct ImageOutputSettings {
     ImageFormat format = ImageFormat::Null;
-    std::string path;     // "-" is standard output
+    std::string path;  // "-" is standard output
     ExrPixelType exrPixels = ExrPixelType::Half;
     std::string exrCompression = "zip";  // one of kExrCompressions
-    int pngBits = 8;      // 8 or 16
-    int tiffBits = 8;     // 8 or 16 (display-referred), or 32: float, linear
-    int jpegQuality = 90;  // 1-100
+    int pngBits = 8;                     // 8 or 16
+    int tiffBits = 8;                    // 8 or 16 (display-referred), or 32: float, linear
+    int jpegQuality = 90;                // 1-100
     // RGBA: alpha is the pixel's coverage (0 where every camera ray missed); EXR colours are
     // premultiplied by it, PNG and TGA colours straight. Without it, RGB over the background.
     bool alpha = false;

@@ -1,11 +1,11 @@
 #include "import/assimp_import.h"
 
 #include <assimp/BaseImporter.h>
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -114,7 +114,8 @@ private:
             fail("a node names mesh " + std::to_string(meshIndex) + ", which does not exist");
         meshesPlaced_.insert(meshIndex);
         const ConvertedMesh converted = assembly_.mesh(meshIndex, [&] { return convertMesh(meshIndex); });
-        assembly_.place(converted, [&] { return materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex); }, world);
+        assembly_.place(
+            converted, [&] { return materialFor(ai_.mMeshes[meshIndex]->mMaterialIndex); }, world);
     }
 
     ConvertedMesh convertMesh(unsigned meshIndex) {
@@ -164,7 +165,8 @@ private:
                 fail(what + " has a face with vertex index " + std::to_string(face.mIndices[i]) + " out of range");
         const unsigned* v = face.mIndices;
         for (unsigned i = 1; i + 1 < face.mNumIndices; ++i)
-            model.addTriangleWithData(data.corner(points, v[0]), data.corner(points, v[i]), data.corner(points, v[i + 1]));
+            model.addTriangleWithData(data.corner(points, v[0]), data.corner(points, v[i]),
+                                      data.corner(points, v[i + 1]));
     }
 
     std::uint32_t materialFor(unsigned index) {
@@ -206,8 +208,9 @@ private:
         am.Get(AI_MATKEY_MAPPINGMODE_U(aiTextureType_DIFFUSE, 0), mode[0]);
         am.Get(AI_MATKEY_MAPPINGMODE_V(aiTextureType_DIFFUSE, 0), mode[1]);
         const auto wrap = [](aiTextureMapMode m) {
-            return m == aiTextureMapMode_Clamp ? Texture::Wrap::Clamp
-                   : m == aiTextureMapMode_Mirror ? Texture::Wrap::Mirror : Texture::Wrap::Repeat;
+            return m == aiTextureMapMode_Clamp    ? Texture::Wrap::Clamp
+                   : m == aiTextureMapMode_Mirror ? Texture::Wrap::Mirror
+                                                  : Texture::Wrap::Repeat;
         };
         Texture t = textureBeside(file_, file.C_Str());
         t.wrapS = wrap(mode[0]);
@@ -256,8 +259,8 @@ private:
         const Transform* world = placement(cam.mName);
         if (!world) return std::nullopt;
         const std::string what = "camera " + std::to_string(i) + " \"" + name + "\"";
-        std::optional<Camera> camera =
-            out_.report.format == k3dsImporter ? camera3ds(chunks, name, what) : assimpCamera(cam, *world, what, bounds);
+        std::optional<Camera> camera = out_.report.format == k3dsImporter ? camera3ds(chunks, name, what)
+                                                                          : assimpCamera(cam, *world, what, bounds);
         if (camera) camera->name = name;
         return camera;
     }
@@ -331,7 +334,7 @@ private:
     std::set<unsigned> meshesPlaced_;
     std::map<std::string, Transform> worldByName_;
     bool otherCameras_ = false;  // taking the cameras after the one --camera asked for
-    Transform fileToWorld_;  // from a 3DS file's own coordinates
+    Transform fileToWorld_;      // from a 3DS file's own coordinates
 };
 
 }  // namespace

@@ -271,9 +271,11 @@ std::vector<float> GltfAccessorReader::attribute(int accessor, int components, c
     count(accessor, what);
     const int type = gltf_.accessors[std::size_t(accessor)].type;
     const bool colorWithAlpha = components == 3 && type == TINYGLTF_TYPE_VEC4;
-    const std::vector<double> values =
-        readAll(accessor, colorWithAlpha ? TINYGLTF_TYPE_VEC4 : components == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3,
-                what);
+    const std::vector<double> values = readAll(accessor,
+                                               colorWithAlpha    ? TINYGLTF_TYPE_VEC4
+                                               : components == 2 ? TINYGLTF_TYPE_VEC2
+                                                                 : TINYGLTF_TYPE_VEC3,
+                                               what);
     const std::size_t stride = colorWithAlpha ? 4 : std::size_t(components);
     std::vector<float> out;
     out.reserve(values.size() / stride * std::size_t(components));

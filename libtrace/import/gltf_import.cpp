@@ -238,7 +238,8 @@ private:
         for (std::size_t p = 0; p < primitives.size(); ++p) {
             const ConvertedMesh converted =
                 assembly_.mesh({mesh, int(p)}, [&] { return convertPrimitive(mesh, int(p)); });
-            assembly_.place(converted, [&] { return materialFor(primitives[p].material); }, world);
+            assembly_.place(
+                converted, [&] { return materialFor(primitives[p].material); }, world);
         }
     }
 
@@ -263,14 +264,14 @@ private:
         }
         const std::vector<std::uint32_t> corners = triangleCorners(*topology, vertices);
         const std::string base = mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name;
-        ModelBuilder model = assembly_.newModel(
-            mesh.primitives.size() > 1 ? base + "_" + std::to_string(primitiveIndex) : base,
-            "mesh" + std::to_string(meshIndex));
+        ModelBuilder model =
+            assembly_.newModel(mesh.primitives.size() > 1 ? base + "_" + std::to_string(primitiveIndex) : base,
+                               "mesh" + std::to_string(meshIndex));
         model.reserveTriangles(corners.size() / 3);
         const VertexData data = vertexData(prim, points.size(), what);
         for (std::size_t i = 0; i + 3 <= corners.size(); i += 3)
             model.addTriangleWithData(data.corner(points, corners[i]), data.corner(points, corners[i + 1]),
-                              data.corner(points, corners[i + 2]));
+                                      data.corner(points, corners[i + 2]));
         return assembly_.addModel(std::move(model));
     }
 
@@ -332,8 +333,7 @@ private:
             m.name = gm.name;
             m.colorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture, what + " baseColorTexture");
             m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
-            if (m.emission != Color{})
-                m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
+            if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
         }
         return m;
     }
@@ -341,7 +341,8 @@ private:
     float emissiveStrength(const tinygltf::Material& gm, const std::string& what) const {
         const auto ext = gm.extensions.find("KHR_materials_emissive_strength");
         if (ext == gm.extensions.end() || !ext->second.Has("emissiveStrength")) return 1;
-        return float(std::max(0.0, numberValue(ext->second.Get("emissiveStrength"), file_, what + " emissiveStrength")));
+        return float(
+            std::max(0.0, numberValue(ext->second.Get("emissiveStrength"), file_, what + " emissiveStrength")));
     }
 
     // The scene texture for a material's texture reference: its image must be a file beside
@@ -349,7 +350,8 @@ private:
     template <class Info>
     std::optional<std::uint32_t> textureFor(const Info& info, const std::string& what) {
         if (info.index < 0) return std::nullopt;
-        if (std::size_t(info.index) >= gltf_.textures.size()) fail(what + " names texture " + std::to_string(info.index) + ", which does not exist");
+        if (std::size_t(info.index) >= gltf_.textures.size())
+            fail(what + " names texture " + std::to_string(info.index) + ", which does not exist");
         const tinygltf::Texture& gt = gltf_.textures[std::size_t(info.index)];
         if (gt.source < 0 || std::size_t(gt.source) >= gltf_.images.size()) return std::nullopt;
         const tinygltf::Image& image = gltf_.images[std::size_t(gt.source)];
@@ -380,7 +382,8 @@ private:
         const tinygltf::Value& v = ext->second;
         const auto pair = [&](const char* key, std::array<float, 2>& to) {
             if (!v.Has(key) || !v.Get(key).IsArray() || v.Get(key).ArrayLen() < 2) return;
-            for (int i = 0; i < 2; ++i) to[std::size_t(i)] = float(numberValue(v.Get(key).Get(i), file_, what + " " + key));
+            for (int i = 0; i < 2; ++i)
+                to[std::size_t(i)] = float(numberValue(v.Get(key).Get(i), file_, what + " " + key));
         };
         pair("offset", t.offset);
         pair("scale", t.scale);
@@ -406,8 +409,7 @@ private:
         if (specular != gm.extensions.end()) {
             const tinygltf::Value& ext = specular->second;
             if (ext.Has("specularFactor"))
-                in.specularFactor =
-                    float(numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"));
+                in.specularFactor = float(numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"));
             if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray()) {
                 const tinygltf::Value& c = ext.Get("specularColorFactor");
                 std::vector<double> v;
@@ -453,7 +455,8 @@ private:
             if (&c != chosen && usablePerspective(gltf_.cameras[std::size_t(c.index)]))
                 out_.scene.extraCameras.push_back(perspectiveCamera(c, bounds));
         if (const std::size_t unused = cameras_.size() - 1 - out_.scene.extraCameras.size())
-            report.notes.push_back(std::to_string(unused) + " other camera(s) not used: not perspective, or no valid yfov");
+            report.notes.push_back(std::to_string(unused) +
+                                   " other camera(s) not used: not perspective, or no valid yfov");
     }
 
     static bool usablePerspective(const tinygltf::Camera& cam) {

@@ -54,7 +54,7 @@ void noteDrops(ImportReport& r) {
 // so that a GLB is read as one under any name.
 struct FormatImporter {
     std::vector<std::string_view> extensions;  // lower case, with the dot
-    std::string_view signature;  // the file's first bytes, whatever its name; empty: none
+    std::string_view signature;                // the file's first bytes, whatever its name; empty: none
     ImportResult (*read)(const std::string& path, const ImportOptions& options);
 };
 

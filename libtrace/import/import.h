@@ -27,10 +27,10 @@ enum class UpAxis { Y, Z };
 inline constexpr NamedValues<UpAxis, 2> kUpAxisNames{{{"y", UpAxis::Y}, {"z", UpAxis::Z}}};
 
 struct ImportOptions {
-    std::optional<int> scene;   // glTF scene index; default: the file's default scene, else 0
-    std::string camera;         // camera name or index; empty: the first perspective camera placed;
-                                // kFramingCamera: none of the file's, the generated framing camera
-    double scale = 1;           // uniform factor applied at the root (units)
+    std::optional<int> scene;  // glTF scene index; default: the file's default scene, else 0
+    std::string camera;        // camera name or index; empty: the first perspective camera placed;
+                               // kFramingCamera: none of the file's, the generated framing camera
+    double scale = 1;          // uniform factor applied at the root (units)
     // The file's up axis as its author knows it (3DS and most CAD exports: Z), whatever the
     // importer does internally; the scene is turned so that it becomes rt's +Y. Unset: the
     // format's own convention (3DS: Z, a Collada file's <up_axis>, otherwise Y).

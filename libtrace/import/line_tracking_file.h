@@ -1,6 +1,6 @@
 // A read-only file as a std::streambuf that can say which line was read last and show its
-// text (lines end with "\n", "\r\n" or, in old Mac files, "\r"), so that a parser which only reports values through callbacks (tinyobjloader's
-// streaming API) can still have its errors point at file:line.
+// text (lines end with "\n", "\r\n" or, in old Mac files, "\r"), so that a parser which only reports values through
+// callbacks (tinyobjloader's streaming API) can still have its errors point at file:line.
 //
 // The file is read in 64 KiB blocks; when a block is used up, the unfinished line at its end
 // is moved to the front of the next one, so the line that was read last is always in
@@ -35,7 +35,7 @@ protected:
     int_type underflow() override;
 
 private:
-    std::size_t lineStart() const;  // offset in buffer_ where the line read last begins
+    std::size_t lineStart() const;                                 // offset in buffer_ where the line read last begins
     std::size_t bufferLimit() const { return maxLineBytes_ + 2; }  // the longest line and "\r\n"
 
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;

@@ -49,7 +49,8 @@ public:
         // LoadMtl always appends the material it was filling; without a "newmtl" it has no name.
         if (materials->size() > before && materials->back().name.empty()) {
             const auto unnamed = byName->find("");
-            if (unnamed != byName->end() && std::size_t(unnamed->second) == materials->size() - 1) byName->erase(unnamed);
+            if (unnamed != byName->end() && std::size_t(unnamed->second) == materials->size() - 1)
+                byName->erase(unnamed);
             materials->pop_back();
         }
         if (materials->size() > before) return true;
@@ -77,18 +78,18 @@ struct DroppedMaterialData {
     std::size_t transparent = 0;  // d < 1 (or Tr > 0)
 
     void count(const tinyobj::material_t& m) {
-        const std::string* maps[] = {
-            &m.ambient_texname,   &m.specular_texname,     &m.specular_highlight_texname,
-            &m.bump_texname,      &m.displacement_texname, &m.alpha_texname,    &m.reflection_texname,
-            &m.roughness_texname, &m.metallic_texname,     &m.sheen_texname,    &m.emissive_texname,
-            &m.normal_texname};
+        const std::string* maps[] = {&m.ambient_texname,    &m.specular_texname,     &m.specular_highlight_texname,
+                                     &m.bump_texname,       &m.displacement_texname, &m.alpha_texname,
+                                     &m.reflection_texname, &m.roughness_texname,    &m.metallic_texname,
+                                     &m.sheen_texname,      &m.emissive_texname,     &m.normal_texname};
         textured += std::any_of(std::begin(maps), std::end(maps), [](const std::string* t) { return !t->empty(); });
         transparent += m.dissolve < 1;
     }
 
     void note(std::vector<std::string>& notes) const {
         if (textured)
-            notes.push_back(std::to_string(textured) + " material(s) with texture maps other than map_Kd: those ignored");
+            notes.push_back(std::to_string(textured) +
+                            " material(s) with texture maps other than map_Kd: those ignored");
         if (transparent)
             notes.push_back(std::to_string(transparent) + " material(s) partly transparent (d, Tr): rendered opaque");
     }
@@ -114,7 +115,6 @@ Texture diffuseTexture(const tinyobj::material_t& mtl, const std::string& objPat
     t.offset = {float(o.origin_offset[0]), float(1 - o.scale[1] - o.origin_offset[1])};
     return t;
 }
-
 
 class ObjSceneBuilder {
 public:
@@ -147,9 +147,7 @@ public:
         callbacks.group_cb = [](void* self, const char** names, int count) {
             static_cast<ObjSceneBuilder*>(self)->group(names, count);
         };
-        callbacks.object_cb = [](void* self, const char* name) {
-            static_cast<ObjSceneBuilder*>(self)->object(name);
-        };
+        callbacks.object_cb = [](void* self, const char* name) { static_cast<ObjSceneBuilder*>(self)->object(name); };
         std::istream in(&file_);
         MtlReader mtlReader(std::filesystem::path(path_).parent_path());
         std::string warn, err;
@@ -164,15 +162,17 @@ public:
     // The models, one per part, each placed once under `root`.
     void build(const Transform& root) {
         for (Part& part : parts_)
-            assembly_.place(convertPart(part), [&] { return materialFor(part.material); }, root);
+            assembly_.place(
+                convertPart(part), [&] { return materialFor(part.material); }, root);
         out_.report.meshes = out_.scene.models.size();
         dropped_.note(out_.report.notes);
         if (undefinedData_)
-            out_.report.notes.push_back(std::to_string(undefinedData_) +
-                                        " face corner(s) name texture coordinates or normals that are not defined: ignored");
+            out_.report.notes.push_back(
+                std::to_string(undefinedData_) +
+                " face corner(s) name texture coordinates or normals that are not defined: ignored");
         if (fannedConcave_)
-            out_.report.notes.push_back(std::to_string(fannedConcave_) +
-                                        " concave polygon(s) with more than " + std::to_string(kMaxEarClippedCorners) +
+            out_.report.notes.push_back(std::to_string(fannedConcave_) + " concave polygon(s) with more than " +
+                                        std::to_string(kMaxEarClippedCorners) +
                                         " corners, or not simple, triangulated as a fan");
     }
 
@@ -203,7 +203,8 @@ private:
         ModelBuilder model = assembly_.newModel(part.name, "mesh");
         model.reserveTriangles(part.corners.size() / 3);
         for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3)
-            model.addTriangleWithData(corner(part.corners[i]), corner(part.corners[i + 1]), corner(part.corners[i + 2]));
+            model.addTriangleWithData(corner(part.corners[i]), corner(part.corners[i + 1]),
+                                      corner(part.corners[i + 2]));
         part.corners = {};  // free as we go: the models take their place
         return assembly_.addModel(std::move(model));
     }
@@ -253,8 +254,8 @@ private:
                  std::string(file_.lineText()) + "\"");
         polygon_.clear();
         for (int i = 0; i < count; ++i)
-            polygon_.push_back({vertexIndex(corners[i].vertex_index),
-                                dataIndex(corners[i].texcoord_index, uvs_), dataIndex(corners[i].normal_index, normals_)});
+            polygon_.push_back({vertexIndex(corners[i].vertex_index), dataIndex(corners[i].texcoord_index, uvs_),
+                                dataIndex(corners[i].normal_index, normals_)});
         assembly_.countFaceWithoutArea(std::size_t(count));
         if (count < 3) return;
         if (count > 3) dropRepeatedCorners();
@@ -305,8 +306,8 @@ private:
         auto [it, added] = partByKey_.try_emplace({object_, group_, material_}, nullptr);
         if (added) {
             const std::string& name = !group_.empty() ? group_ : object_;
-            it->second = &parts_.emplace_back(Part{name.empty() ? std::filesystem::path(path_).stem().string() : name,
-                                                   material_, {}});
+            it->second = &parts_.emplace_back(
+                Part{name.empty() ? std::filesystem::path(path_).stem().string() : name, material_, {}});
         }
         return *(current_ = it->second);
     }
@@ -342,7 +343,7 @@ private:
     std::set<std::string> missingMaterials_;  // each named once in the notes
     DroppedMaterialData dropped_;             // of the materials used
     std::size_t fannedConcave_ = 0;
-    std::size_t undefinedData_ = 0;  // corners naming a vt or vn that is not defined
+    std::size_t undefinedData_ = 0;   // corners naming a vt or vn that is not defined
     std::vector<ObjCorner> polygon_;  // scratch for face()
     std::vector<std::uint32_t> triangles_;
     std::vector<Point3f> cornerPositions_;

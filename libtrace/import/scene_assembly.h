@@ -22,8 +22,8 @@
 
 #include "import/import.h"
 #include "import/mesh_data.h"
-#include "scene/unique_names.h"
 #include "scene/crease_normals.h"
+#include "scene/unique_names.h"
 
 namespace rt {
 

@@ -123,8 +123,9 @@ RgbImage renderHeatmap(const std::vector<float>& cost, int width, int height, co
     RgbImage image(width, height + strip.height(), kStripBackground);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
-            image.set(x, y, viridis(heatPosition(cost[std::size_t(y) * std::size_t(width) + std::size_t(x)], maximum,
-                                                 options.scale)));
+            image.set(x, y,
+                      viridis(heatPosition(cost[std::size_t(y) * std::size_t(width) + std::size_t(x)], maximum,
+                                           options.scale)));
     strip.draw(image, height, maximum, options.scale);
     return image;
 }

@@ -16,8 +16,8 @@ constexpr int kEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
 
 void writeBox(std::ostream& out, const Aabb& b, std::size_t firstVertex) {
     for (int i = 0; i < 8; ++i) {
-        out << "v " << (i & 1 ? b.hi.x : b.lo.x) << ' ' << (i & 2 ? b.hi.y : b.lo.y) << ' '
-            << (i & 4 ? b.hi.z : b.lo.z) << '\n';
+        out << "v " << (i & 1 ? b.hi.x : b.lo.x) << ' ' << (i & 2 ? b.hi.y : b.lo.y) << ' ' << (i & 4 ? b.hi.z : b.lo.z)
+            << '\n';
     }
     for (const auto& e : kEdges) out << "l " << firstVertex + e[0] << ' ' << firstVertex + e[1] << '\n';
 }

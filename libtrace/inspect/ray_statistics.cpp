@@ -34,7 +34,8 @@ std::vector<float> pixelWork(const Scene& scene, const Accelerator& accel, const
             RenderCounters counters;
             tracer.pixel(x, y, counters);
             const RayCounters all = counters.total();
-            work[std::size_t(y) * std::size_t(width) + std::size_t(x)] = float(all.traversalSteps + all.intersectionTests);
+            work[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
+                float(all.traversalSteps + all.intersectionTests);
         }
     }
     return work;

@@ -38,13 +38,20 @@ std::vector<Aov> parseAovList(const std::string& list) {
 
 std::vector<float> aovValues(const PixelAovs& a, Aov aov) {
     switch (aov) {
-        case Aov::Z: return {a.z};
-        case Aov::N: return {a.n[0], a.n[1], a.n[2]};
-        case Aov::Ng: return {a.ng[0], a.ng[1], a.ng[2]};
-        case Aov::P: return {a.p[0], a.p[1], a.p[2]};
-        case Aov::Albedo: return {a.albedo.r, a.albedo.g, a.albedo.b};
-        case Aov::Cost: return {a.steps, a.tests, a.allSteps, a.allTests};
-        case Aov::Id: break;
+        case Aov::Z:
+            return {a.z};
+        case Aov::N:
+            return {a.n[0], a.n[1], a.n[2]};
+        case Aov::Ng:
+            return {a.ng[0], a.ng[1], a.ng[2]};
+        case Aov::P:
+            return {a.p[0], a.p[1], a.p[2]};
+        case Aov::Albedo:
+            return {a.albedo.r, a.albedo.g, a.albedo.b};
+        case Aov::Cost:
+            return {a.steps, a.tests, a.allSteps, a.allTests};
+        case Aov::Id:
+            break;
     }
     return {};
 }

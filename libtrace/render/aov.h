@@ -35,7 +35,7 @@ inline constexpr std::uint32_t kNoId = 0xffffffffu;
 
 // One pixel's AOVs, as the renderer fills them.
 struct PixelAovs {
-    float z = 0;                    // distance along the camera ray; +inf where no sample hit
+    float z = 0;  // distance along the camera ray; +inf where no sample hit
     float n[3] = {}, ng[3] = {}, p[3] = {};
     Color albedo;
     std::uint32_t material = kNoId, primitive = kNoId;

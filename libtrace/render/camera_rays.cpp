@@ -5,7 +5,10 @@
 namespace rt {
 
 CameraRays::CameraRays(const Camera& camera, int width, int height)
-    : origin_(camera.origin), halfWidth_(Real(width) / 2), halfHeight_(Real(height) / 2), width_(width),
+    : origin_(camera.origin),
+      halfWidth_(Real(width) / 2),
+      halfHeight_(Real(height) / 2),
+      width_(width),
       height_(height) {
     const Vec3 view = camera.destination - camera.origin;
     if (!(length(view) > 0)) throw InputError("camera: origin and destination are the same point");

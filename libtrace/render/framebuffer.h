@@ -1,9 +1,9 @@
 // The rendered picture: linear, scene-referred float RGB (thesis 3.4.4's outputs
 // convert it only when they write), and each pixel's coverage: the fraction of its camera
 // rays that hit something (alpha). The colour includes the background the other rays saw,
-// so that a picture without alpha needs nothing else; premultiplied() takes it out. A render may cover only a window of the full
-// image (render farms, --region); the framebuffer then holds just that window, as an
-// EXR data window sits inside its display window.
+// so that a picture without alpha needs nothing else; premultiplied() takes it out. A render may cover only a window of
+// the full image (render farms, --region); the framebuffer then holds just that window, as an EXR data window sits
+// inside its display window.
 #pragma once
 
 #include <vector>
@@ -30,8 +30,12 @@ public:
     // With `aovs`, each pixel also has its PixelAovs (render/aov.h).
     Framebuffer(int fullWidth, int fullHeight, const PixelWindow& window, const Color& background = {},
                 bool aovs = false)
-        : fullWidth_(fullWidth), fullHeight_(fullHeight), window_(window), background_(background),
-          pixels_(std::size_t(window.width()) * std::size_t(window.height())), alpha_(pixels_.size(), 1.0f),
+        : fullWidth_(fullWidth),
+          fullHeight_(fullHeight),
+          window_(window),
+          background_(background),
+          pixels_(std::size_t(window.width()) * std::size_t(window.height())),
+          alpha_(pixels_.size(), 1.0f),
           aovs_(aovs ? pixels_.size() : 0) {}
 
     int fullWidth() const { return fullWidth_; }

@@ -13,8 +13,8 @@ constexpr long long kMaxPixels = 1ll << 28;
 
 void validate(const RenderSettings& s) {
     if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
-        throw InputError("image size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                         " is outside 1-" + std::to_string(kMaxImageSide));
+        throw InputError("image size " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is outside 1-" +
+                         std::to_string(kMaxImageSide));
     if (const PixelWindow w = s.window(); (long long)w.width() * w.height() > kMaxPixels)
         throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
                          " pixels at once needs more than 3 GB; render it in regions (--region)");

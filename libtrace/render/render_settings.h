@@ -14,11 +14,11 @@ inline constexpr int kMaxReflectionDepth = 10;
 inline constexpr int kMaxSamples = 1 << 20;  // -S and -r
 
 struct RenderSettings {
-    int width = 800;   // -x
-    int height = 600;  // -y
+    int width = 800;                    // -x
+    int height = 600;                   // -y
     std::optional<PixelWindow> region;  // --region: render only this window
-    int reflectionDepth = 5;  // -d: reflection rays that may follow one camera ray (0-kMaxReflectionDepth)
-    bool shadows = false;  // -s: a shadow ray to each light (the thesis's default is off)
+    int reflectionDepth = 5;            // -d: reflection rays that may follow one camera ray (0-kMaxReflectionDepth)
+    bool shadows = false;               // -s: a shadow ray to each light (the thesis's default is off)
     // -S: camera rays per pixel on a jittered grid (thesis 2.6.1); 1 shoots one ray through the centre.
     int pixelSamples = 1;
     // -D s|d|b (thesis 2.6.2): soft shadows over each light's size, glossy reflections over

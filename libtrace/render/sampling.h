@@ -18,7 +18,8 @@ public:
     // `seed` (rt-render --seed) picks another independent set of streams; seed 0 gives the
     // streams rt always used. Sample indices stay below 2^32, so (seed, sample) never collide.
     SampleRng(std::uint32_t x, std::uint32_t y, std::uint32_t sample, std::uint32_t seed = 0)
-        : stream_(mixBits((std::uint64_t(x) << 32 | y) ^ mixBits((std::uint64_t(seed) << 32 | sample) + kGoldenGamma))) {}
+        : stream_(
+              mixBits((std::uint64_t(x) << 32 | y) ^ mixBits((std::uint64_t(seed) << 32 | sample) + kGoldenGamma))) {}
 
     std::uint64_t next() { return stream_.next(); }
 

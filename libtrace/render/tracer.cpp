@@ -42,8 +42,12 @@ Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
 
 Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
                const ImageTextures* images)
-    : scene_(scene), accel_(accel), settings_(settings), camera_(scene.camera, settings.width, settings.height),
-      epsilon_(sceneEpsilon(scene.primitives)), images_(images) {
+    : scene_(scene),
+      accel_(accel),
+      settings_(settings),
+      camera_(scene.camera, settings.width, settings.height),
+      epsilon_(sceneEpsilon(scene.primitives)),
+      images_(images) {
     for (const Light& light : scene.lights) ambientLight_ += light.color;
 }
 

@@ -37,11 +37,11 @@ struct Camera {
 
 // rt-render's camera options: each given part replaces the scene camera's.
 struct CameraOverrides {
-    std::optional<Vec3> lookFrom;      // --look-from: the origin
-    std::optional<Vec3> lookAt;        // --look-at: the destination
-    std::optional<Vec3> up;            // --up
-    std::optional<Real> fovDegrees;    // --fov: horizontal, degrees; replaces f and zoom
-    bool frame = false;                // --frame: fit the scene's bounds, after the others
+    std::optional<Vec3> lookFrom;    // --look-from: the origin
+    std::optional<Vec3> lookAt;      // --look-at: the destination
+    std::optional<Vec3> up;          // --up
+    std::optional<Real> fovDegrees;  // --fov: horizontal, degrees; replaces f and zoom
+    bool frame = false;              // --frame: fit the scene's bounds, after the others
 };
 
 // Applies the overrides to `camera` for an image of the given aspect (width / height);

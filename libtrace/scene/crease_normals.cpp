@@ -14,8 +14,8 @@ namespace {
 using Key = std::array<std::uint32_t, 3>;  // a corner's position as bits (-0 as +0)
 
 struct Face {
-    Vec3 normal;                  // unit
-    std::array<Real, 3> angles;   // at each corner, radians
+    Vec3 normal;                 // unit
+    std::array<Real, 3> angles;  // at each corner, radians
 };
 
 Vec3 cornerOf(const Model& model, std::size_t corner) {
@@ -29,9 +29,7 @@ Key keyOf(const Model& model, std::size_t corner) {
     return key;
 }
 
-Real angleBetween(const Vec3& a, const Vec3& b) {
-    return std::atan2(length(cross(a, b)), dot(a, b));
-}
+Real angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(length(cross(a, b)), dot(a, b)); }
 
 std::vector<Face> facesOf(const Model& model) {
     std::vector<Face> faces(model.triangleCount());
@@ -39,8 +37,7 @@ std::vector<Face> facesOf(const Model& model) {
         const Vec3 p[3] = {cornerOf(model, 3 * t), cornerOf(model, 3 * t + 1), cornerOf(model, 3 * t + 2)};
         const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
         faces[t].normal = length(n) > 0 ? normalize(n) : Vec3{};
-        for (int c = 0; c < 3; ++c)
-            faces[t].angles[c] = angleBetween(p[(c + 1) % 3] - p[c], p[(c + 2) % 3] - p[c]);
+        for (int c = 0; c < 3; ++c) faces[t].angles[c] = angleBetween(p[(c + 1) % 3] - p[c], p[(c + 2) % 3] - p[c]);
     }
     return faces;
 }

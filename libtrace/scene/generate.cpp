@@ -66,7 +66,8 @@ Scene generateScene(const SceneRecipe& recipe) {
     scene.materials.push_back({"triangles", {0.8f, 0.8f, 0.75f}});
     scene.materials.push_back({"spheres", {0.8f, 0.3f, 0.25f}, 0.1f, 0.7f, 0.3f, 40.0f, 0.2f});
 
-    const std::size_t total = std::max<std::size_t>(recipe.triangles + recipe.spheres + recipe.cylinders + recipe.cones, 1);
+    const std::size_t total =
+        std::max<std::size_t>(recipe.triangles + recipe.spheres + recipe.cylinders + recipe.cones, 1);
     const double spacing = std::cbrt(8.0 / double(total));
     const double size = recipe.placement == Placement::Clustered ? spacing * 0.5 : spacing;
     Random random(recipe.seed);

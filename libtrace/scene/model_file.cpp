@@ -23,8 +23,9 @@ const char* modelFormatName(Model::Format format) { return format == Model::Form
 
 Model readRawModelFileOnly(const std::string& path, Model::Format format) {
     if (format != Model::Format::Raw)
-        throw InputError(path + ": a 3ds model is read through the import layer (rt::loadScene); "
-                                "this scene reader takes RAW models only");
+        throw InputError(path +
+                         ": a 3ds model is read through the import layer (rt::loadScene); "
+                         "this scene reader takes RAW models only");
     return readRawFile(path);
 }
 

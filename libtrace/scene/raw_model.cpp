@@ -6,8 +6,8 @@
 #include <cstring>
 #include <fstream>
 #include <istream>
-#include <streambuf>
 #include <stdexcept>
+#include <streambuf>
 #include <vector>
 
 #include "core/atomic_file.h"
@@ -117,22 +117,21 @@ void RawReader::readSection(Model& model, const RawHeader& h) {
     for (const RawSection& section : kSections) {
         if (std::memcmp(tag, section.tag, kTagBytes) != 0) continue;
         std::vector<float>& values = model.*section.array;
-        if (!values.empty())
-            throw inputErrorAtByte(name_, start, "a second " + std::string(section.what) + " section");
+        if (!values.empty()) throw inputErrorAtByte(name_, start, "a second " + std::string(section.what) + " section");
         readFloats(values, h.count * section.floatsPerTriangle, h, section.what);
         return;
     }
-    throw inputErrorAtByte(name_, start,
-                           std::to_string(total_ - start) + " bytes after the triangles that are no section " +
-                               "(vnrm, vtex or vcol)");
+    throw inputErrorAtByte(
+        name_, start,
+        std::to_string(total_ - start) + " bytes after the triangles that are no section " + "(vnrm, vtex or vcol)");
 }
 
 void RawReader::readFloats(std::vector<float>& values, std::size_t floats, const RawHeader& h, const char* what) {
     const std::uint64_t bytes = std::uint64_t(floats) * sizeof(float);
     if (left() < bytes)
-        throw inputErrorAtByte(name_, total_,
-                               "truncated RAW data: " + h.dataNamed(bytes, what) + ", the file has " +
-                                   std::to_string(left()));
+        throw inputErrorAtByte(
+            name_, total_,
+            "truncated RAW data: " + h.dataNamed(bytes, what) + ", the file has " + std::to_string(left()));
     const std::uint64_t first = at_;
     values.resize(floats);
     readBytes(values.data(), bytes);

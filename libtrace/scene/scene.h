@@ -87,7 +87,7 @@ struct Instance {
 
 struct Scene {
     Color background{0, 0, 0};
-    Camera camera;                    // the camera rendered: the file's first, or the one --camera picked
+    Camera camera;                     // the camera rendered: the file's first, or the one --camera picked
     std::vector<Camera> extraCameras;  // rt extension: the file's other cameras, in file order
     std::vector<Material> materials;
     std::vector<Texture> textures;
@@ -96,7 +96,7 @@ struct Scene {
     Primitives looseObjects;  // spheres, triangles and quads placed directly, in world space
     std::vector<Light> lights;
 
-    Primitives primitives;  // everything, in world space: looseObjects, then each instance
+    Primitives primitives;              // everything, in world space: looseObjects, then each instance
     std::size_t droppedDegenerate = 0;  // by the loader and by flatten()
     std::vector<std::string> warnings;
 

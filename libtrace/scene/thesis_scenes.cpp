@@ -32,8 +32,7 @@ void addQuad(Model& model, const Vec3& a, const Vec3& b, const Vec3& c, const Ve
 }
 
 void addSphere(Model& model, const Vec3& centre, Real radius) {
-    model.sphereData.insert(model.sphereData.end(),
-                            {float(centre.x), float(centre.y), float(centre.z), float(radius)});
+    model.sphereData.insert(model.sphereData.end(), {float(centre.x), float(centre.y), float(centre.z), float(radius)});
 }
 
 std::uint32_t addMaterial(Scene& scene, const Material& material) {
@@ -159,7 +158,7 @@ void addCone(Model& model, const Vec3& base, Real r0, const Vec3& apex, Real r1)
 
 // An octahedron with each face split in four and pushed onto the sphere: 32 triangles.
 void addGeodesicSphere(Model& model, const Vec3& centre, Real radius) {
-    const std::array<Vec3, 6> corner{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{-1, 0, 0},
+    const std::array<Vec3, 6> corner{Vec3{1, 0, 0},  Vec3{0, 1, 0}, Vec3{-1, 0, 0},
                                      Vec3{0, -1, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}};
     auto onSphere = [&](const Vec3& p) { return centre + normalize(p) * radius; };
     for (int pole = 4; pole < 6; ++pole)
@@ -210,8 +209,8 @@ void growTree(Model& tree, const TreeShape& shape, const Transform& frame, Real 
 void addPyramid(Model& model, const Vec3& baseCentre, Real side, Real height) {
     const Real h = side / 2;
     const Vec3 apex = baseCentre + Vec3{0, height, 0};
-    const std::array<Vec3, 4> c{baseCentre + Vec3{-h, 0, -h}, baseCentre + Vec3{-h, 0, h},
-                                baseCentre + Vec3{h, 0, h}, baseCentre + Vec3{h, 0, -h}};
+    const std::array<Vec3, 4> c{baseCentre + Vec3{-h, 0, -h}, baseCentre + Vec3{-h, 0, h}, baseCentre + Vec3{h, 0, h},
+                                baseCentre + Vec3{h, 0, -h}};
     for (int i = 0; i < 4; ++i) addTriangle(model, c[i], c[(i + 1) % 4], apex);
     addQuad(model, c[0], c[3], c[2], c[1]);  // facing down
 }
@@ -240,8 +239,8 @@ constexpr Real kShipSize = 1.5;
 struct HullRing {
     Real z, radius;
 };
-constexpr std::array<HullRing, 10> kHull{{{-50, 5}, {-40, 8}, {-28, 10}, {-15, 11}, {0, 11.5},
-                                          {15, 11}, {30, 10}, {42, 9}, {52, 8}, {58, 7}}};
+constexpr std::array<HullRing, 10> kHull{
+    {{-50, 5}, {-40, 8}, {-28, 10}, {-15, 11}, {0, 11.5}, {15, 11}, {30, 10}, {42, 9}, {52, 8}, {58, 7}}};
 constexpr int kHullSides = 12;
 
 // 12 (nose) + 9 x 24 (between rings) + 12 (tail) = 240 triangles.
@@ -253,7 +252,8 @@ void addHull(Model& ship, const Transform& frame) {
     const Vec3 nose = frame.point({0, 0, -60}), tail = frame.point({0, 0, kHull.back().z});
     for (int i = 0; i < kHullSides; ++i) {
         addTriangle(ship, nose, ring(0, i + 1), ring(0, i));
-        for (int r = 0; r + 1 < int(kHull.size()); ++r) addQuad(ship, ring(r, i), ring(r, i + 1), ring(r + 1, i + 1), ring(r + 1, i));
+        for (int r = 0; r + 1 < int(kHull.size()); ++r)
+            addQuad(ship, ring(r, i), ring(r, i + 1), ring(r + 1, i + 1), ring(r + 1, i));
         addTriangle(ship, tail, ring(int(kHull.size()) - 1, i), ring(int(kHull.size()) - 1, i + 1));
     }
 }
@@ -261,7 +261,8 @@ void addHull(Model& ship, const Transform& frame) {
 // A swept wing on side `s` (+1 right, -1 left): a thin diamond, 4 triangles, its root
 // hidden in the hull. Returns the wing tip, where an engine pod sits.
 Vec3 addWing(Model& ship, const Transform& frame, Real s) {
-    const Vec3 lead = frame.point({s * 9, 0, -5}), trail = frame.point({s * 9, 0, 35}), tip = frame.point({s * 55, -4, 42});
+    const Vec3 lead = frame.point({s * 9, 0, -5}), trail = frame.point({s * 9, 0, 35}),
+               tip = frame.point({s * 55, -4, 42});
     const Vec3 top = frame.point({s * 9, 3, 15}), bottom = frame.point({s * 9, -3, 15});
     addTriangle(ship, lead, tip, top);
     addTriangle(ship, top, tip, trail);
@@ -301,7 +302,8 @@ Scene thesisShips() {
     scene.camera.fovDegrees = Real(50);
     scene.lights.push_back({{-1, 0, 0}, {0.8f, 0.8f, 0.8f}, Real(0.1)});
     scene.lights.push_back({{6, 8, -10}, {0.5f, 0.5f, 0.5f}, Real(0.1)});
-    const auto blue = addMaterial(scene, {.name = "blue", .color = {0.7f, 0.7f, 1.0f}, .diffuse = 0.4f, .reflection = 0.4f});
+    const auto blue =
+        addMaterial(scene, {.name = "blue", .color = {0.7f, 0.7f, 1.0f}, .diffuse = 0.4f, .reflection = 0.4f});
     const auto steel = addMaterial(scene, {.name = "red_steel", .color = {1, 0, 0}, .diffuse = 0.6f, .specular = 0.3f});
     scene.looseObjects.add<Sphere>({{0, -1, 12}, Real(1.2)}, blue);
     Model hulls = namedModel("ships"), parts = namedModel("ship_parts");
@@ -323,8 +325,8 @@ Scene thesisTree() {
     scene.camera.destination = {0, 0, Real(1.5)};
     scene.camera.up = {0, 0, 1};
     scene.camera.fovDegrees = kSpdFovAt4To3;
-    addSpdLights(scene, {Vec3{-5, 5, 50}, Vec3{30, -30, 30}, Vec3{-40, -30, 20}, Vec3{10, 30, 40},
-                         Vec3{-30, 40, 10}, Vec3{50, 25, 20}, Vec3{-10, -60, 30}});
+    addSpdLights(scene, {Vec3{-5, 5, 50}, Vec3{30, -30, 30}, Vec3{-40, -30, 20}, Vec3{10, 30, 40}, Vec3{-30, 40, 10},
+                         Vec3{50, 25, 20}, Vec3{-10, -60, 30}});
     const auto field = addMaterial(scene, {.name = "field", .color = {0.2f, 0.7f, 0.2f}, .ambient = 0, .diffuse = 1});
     const auto bark = addMaterial(scene, {.name = "bark", .color = {0.55f, 0.4f, 0.2f}, .ambient = 0, .diffuse = 1});
     addFloor(scene, 50, 0, field);
@@ -341,8 +343,8 @@ Scene thesisPyramid5() {
     scene.camera.destination = {0, Real(0.5), 0};
     scene.camera.fovDegrees = Real(45);
     scene.lights.push_back({{5, 6, 1}, {1, 1, 1}});  // from the side, so the two faces in view differ
-    const auto stone = addMaterial(scene, {.name = "sandstone", .color = {0.9f, 0.75f, 0.5f}, .diffuse = 0.8f,
-                                           .specular = 0.2f});
+    const auto stone =
+        addMaterial(scene, {.name = "sandstone", .color = {0.9f, 0.75f, 0.5f}, .diffuse = 0.8f, .specular = 0.2f});
     Model pyramid = namedModel("pyramid5");
     growPyramid(pyramid, {0, 0, 0}, 2, 2 / std::sqrt(Real(2)), 5);
     place(scene, std::move(pyramid), stone);

@@ -132,11 +132,13 @@ void SceneBuilder::readList(const XmlElement& list) {
     list.requireOnlyChildren({tag.substr(0, tag.size() - 1)});
     for (const pugi::xml_node& item : list.node().children()) {
         if (tag == "materials")
-            readMaterial(XmlElement(file_, item, {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess",
-                                                  "reflection", "spread", "texture", "emission", "emission_texture"}));
+            readMaterial(XmlElement(file_, item,
+                                    {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection",
+                                     "spread", "texture", "emission", "emission_texture"}));
         else if (tag == "textures")
-            readTexture(XmlElement(file_, item, {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale",
-                                                 "rotation", "color_a", "color_b", "size"}));
+            readTexture(XmlElement(file_, item,
+                                   {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
+                                    "color_a", "color_b", "size"}));
         else if (tag == "models")
             readModel(XmlElement(file_, item, {"name", "file", "type", "encoding"}));
         else
@@ -216,7 +218,8 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
     m.emission = e.color("emission", m.emission);
     const auto index = std::uint32_t(scene_.materials.size());
-    if (const auto name = e.optionalString("texture")) textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});
+    if (const auto name = e.optionalString("texture"))
+        textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});
     if (const auto name = e.optionalString("emission_texture"))
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
     scene_.materials.push_back(std::move(m));

@@ -83,8 +83,7 @@ Real XmlElement::parseNumber(const char* attribute, std::string_view text) const
     Real value = 0;
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
     const std::string where = tag() + " attribute '" + attribute + "': '" + std::string(text) + "'";
-    if (s.empty() || ec == std::errc::invalid_argument || end != s.data() + s.size())
-        fail(where + " is not a number");
+    if (s.empty() || ec == std::errc::invalid_argument || end != s.data() + s.size()) fail(where + " is not a number");
     if (ec == std::errc::result_out_of_range) {
         // Too small is fine (it rounds to zero); too large is not finite.
         long double wide = HUGE_VALL;  // stays if even long double is out of range

@@ -45,7 +45,7 @@ public:
 
     pugi::xml_node node() const { return node_; }
     std::string tag() const;  // "<name>", for messages
-        int line() const { return file_->lineAt(node_.offset_debug()); }
+    int line() const { return file_->lineAt(node_.offset_debug()); }
     [[noreturn]] void fail(const std::string& message) const;
 
     bool has(const char* attribute) const { return bool(node_.attribute(attribute)); }
@@ -61,8 +61,8 @@ public:
     // Whitespace-separated numbers, exactly `count` of them.
     std::vector<Real> numbers(const char* attribute, std::size_t count) const;
 
-    Vec3 xyz(Real fallback) const;         // attributes x, y, z
-    Color rgb(float fallback) const;       // attributes r, g, b, each >= 0
+    Vec3 xyz(Real fallback) const;                             // attributes x, y, z
+    Color rgb(float fallback) const;                           // attributes r, g, b, each >= 0
     Color color(const char* attribute, Color fallback) const;  // "r g b", each >= 0
 
     // Child elements other than those named in `allowed`, and any text, are errors.

@@ -8,8 +8,8 @@
 
 #include "core/atomic_file.h"
 #include "scene/base64.h"
-#include "scene/unique_names.h"
 #include "scene/raw_model.h"
+#include "scene/unique_names.h"
 
 namespace rt {
 namespace {
@@ -184,7 +184,8 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         setNumber(node, "reflection", m.reflection);
         setNumber(node, "spread", m.spread);
         if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
-        if (m.emission != Color{}) node.append_attribute("emission").set_value(numberList({m.emission.r, m.emission.g, m.emission.b}).c_str());
+        if (m.emission != Color{})
+            node.append_attribute("emission").set_value(numberList({m.emission.r, m.emission.g, m.emission.b}).c_str());
         if (m.emissionTexture)
             node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emissionTexture).c_str());
     }
@@ -287,7 +288,8 @@ void saveSceneXml(const Scene& scene, const std::string& path) {
         return bool(out);
     };
     if (path == "-" || scene.models.empty()) {
-        writeFileAtomically(path, [&](std::ostream& out) { saveXml(std::vector<std::string>(scene.models.size()), out); });
+        writeFileAtomically(path,
+                            [&](std::ostream& out) { saveXml(std::vector<std::string>(scene.models.size()), out); });
         return;
     }
     // The RAW files go to a new folder and the XML to a temporary file; only when both are

@@ -135,9 +135,9 @@ TEST_F(ImageOutputTest, RegionBecomesTheDataWindow) {
 }
 
 TEST_F(ImageOutputTest, PngAndTgaGoThroughTheDisplayTransform) {
-    for (const auto& [format, name, bits] : {std::tuple{ImageFormat::Png, "a.png", 8},
-                                            std::tuple{ImageFormat::Png, "b.png", 16},
-                                            std::tuple{ImageFormat::Tga, "c.tga", 8}}) {
+    for (const auto& [format, name, bits] :
+         {std::tuple{ImageFormat::Png, "a.png", 8}, std::tuple{ImageFormat::Png, "b.png", 16},
+          std::tuple{ImageFormat::Tga, "c.tga", 8}}) {
         ImageOutputSettings s = settings(format, file(name));
         s.pngBits = bits;
         writeImage(ramp(), s, metadata());

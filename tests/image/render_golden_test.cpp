@@ -56,8 +56,8 @@ void expectMatchesGolden(const Framebuffer& image, const std::string& name) {
     float worst = 0;
     for (std::size_t i = 0; i < image.pixels().size(); ++i) {
         const Color& c = image.pixels()[i];
-        const float d = std::max({std::abs(c.r - ref[3 * i]), std::abs(c.g - ref[3 * i + 1]),
-                                  std::abs(c.b - ref[3 * i + 2])});
+        const float d =
+            std::max({std::abs(c.r - ref[3 * i]), std::abs(c.g - ref[3 * i + 1]), std::abs(c.b - ref[3 * i + 2])});
         worst = std::max(worst, d);
         if (d > kChannelTolerance) ++outliers;
     }

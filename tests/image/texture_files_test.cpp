@@ -44,7 +44,8 @@ Scene texturedQuad(const std::string& picture) {
     Scene s;
     s.camera.origin = {0.5, 0.5, 2};  // looking down -z: +x to the right, +y up
     s.camera.destination = {0.5, 0.5, 0};
-    s.camera.focalDistance = 2 * kReferenceWidth;  // f is in pixels of an 800-wide picture: one unit fills the width at distance 2
+    s.camera.focalDistance =
+        2 * kReferenceWidth;  // f is in pixels of an 800-wide picture: one unit fills the width at distance 2
     s.textures.push_back({.name = "picture", .path = picture});
     Material m{.name = "screen", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = {1, 1, 1}};
     m.emissionTexture = 0;

@@ -47,16 +47,19 @@ Vec3 pointOn(const Primitives& prims, std::uint32_t id, TestRandom& random) {
 
 Ray makeRay(const Primitives& prims, int i, TestRandom& random) {
     switch (i % 4) {
-        case 0: return {{random.uniform(-1.5, 1.5), random.uniform(-1.5, 1.5), random.uniform(-1.5, 1.5)},
-                        random.direction()};
+        case 0:
+            return {{random.uniform(-1.5, 1.5), random.uniform(-1.5, 1.5), random.uniform(-1.5, 1.5)},
+                    random.direction()};
         case 1: {  // parallel to an axis, often in a plane where trees like to split
             Vec3 d{0, 0, 0};
             d[int(random.next() % 3)] = random.next() % 2 ? 1 : -1;
             return {{random.gridOrUniform(), random.gridOrUniform(), random.gridOrUniform()}, d};
         }
-        case 2: return {pointOn(prims, std::uint32_t(random.next() % prims.size()), random), random.direction()};
-        default: return {Vec3{0, 0, 3} + Vec3{random.uniform(-1, 1), random.uniform(-1, 1), 0},
-                         normalize(Vec3{random.uniform(-0.4f, 0.4f), random.uniform(-0.4f, 0.4f), -1})};
+        case 2:
+            return {pointOn(prims, std::uint32_t(random.next() % prims.size()), random), random.direction()};
+        default:
+            return {Vec3{0, 0, 3} + Vec3{random.uniform(-1, 1), random.uniform(-1, 1), 0},
+                    normalize(Vec3{random.uniform(-0.4f, 0.4f), random.uniform(-0.4f, 0.4f), -1})};
     }
 }
 
@@ -103,10 +106,9 @@ std::string disagreements(const Primitives& prims, int rays, std::uint64_t seed)
             const bool treeFound = trees[k]->intersect(ray, kInfinity, hit, counters[k]);
             const bool treeShadowed = trees[k]->occluded(ray, shadowT, counters[k]);
             if (sameNearest(found, expected, treeFound, hit) && shadowed == treeShadowed) continue;
-            out << trees[k]->stats().name << " ray " << i << " o=" << ray.origin << " d=" << ray.direction
-                << ": naive " << found << " prim " << expected.prim << " t " << expected.t << " shadow "
-                << shadowed << "; tree " << treeFound << " prim " << hit.prim << " t " << hit.t << " shadow "
-                << treeShadowed << '\n';
+            out << trees[k]->stats().name << " ray " << i << " o=" << ray.origin << " d=" << ray.direction << ": naive "
+                << found << " prim " << expected.prim << " t " << expected.t << " shadow " << shadowed << "; tree "
+                << treeFound << " prim " << hit.prim << " t " << hit.t << " shadow " << treeShadowed << '\n';
             ++reported;
         }
     }
@@ -135,7 +137,7 @@ Primitives hardCases() {
     }
     prims.add<Triangle>({{-5, -5, -0.9f}, {5, -5, -0.9f}, {0, 5, 0.9f}}, 0);  // huge, slanted
     prims.add<Triangle>({{-4, 0.3f, -4}, {4, 0.3f, -4}, {0, 0.3f, 4}}, 0);    // huge, in a plane
-    for (int i = 0; i < 40; ++i) {                                          // tiny
+    for (int i = 0; i < 40; ++i) {                                            // tiny
         const Vec3 c{random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)};
         prims.add<Triangle>({c, c + Vec3{Real(1e-4), 0, 0}, c + Vec3{0, Real(1e-4), Real(1e-5)}}, 0);
         prims.add<Sphere>({c, Real(1e-4)}, 0);
@@ -179,6 +181,4 @@ TEST(AccelAgreement, ClusteredWithCylindersAndCones) {
     EXPECT_EQ(disagreements(scene.primitives, kRays, 15), "");
 }
 
-TEST(AccelAgreement, PlanesHugeTinyAndCoincidentPrimitives) {
-    EXPECT_EQ(disagreements(hardCases(), kRays, 13), "");
-}
+TEST(AccelAgreement, PlanesHugeTinyAndCoincidentPrimitives) { EXPECT_EQ(disagreements(hardCases(), kRays, 13), ""); }

@@ -37,9 +37,9 @@ void expectBoundedAndCorrect(const Primitives& prims, int rays) {
     for (int i = 0; i < rays; ++i) {
         // From outside the scene towards a random point in it.
         const Vec3 target = bounds.lo + mul(bounds.diagonal(), {unit(gen), unit(gen), unit(gen)});
-        const Vec3 origin = bounds.center() + normalize(Vec3{unit(gen) - Real(0.5), unit(gen) - Real(0.5),
-                                                             unit(gen) - Real(0.5)}) *
-                                                  (length(bounds.diagonal()) + 1);
+        const Vec3 origin =
+            bounds.center() + normalize(Vec3{unit(gen) - Real(0.5), unit(gen) - Real(0.5), unit(gen) - Real(0.5)}) *
+                                  (length(bounds.diagonal()) + 1);
         const Ray ray{origin, normalize(target - origin)};
         Hit expected;
         const bool found = naive.intersect(ray, kInfinity, expected, counters);
@@ -69,7 +69,8 @@ TEST(AccelPathological, AllPrimitivesAtOnePoint) {
     std::uniform_real_distribution<Real> tiny(-1e-6f, 1e-6f);
     const Vec3 p{Real(0.3), Real(0.3), Real(0.3)};
     for (int i = 0; i < 20000; ++i)
-        prims.add<Triangle>({p, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}}, 0);
+        prims.add<Triangle>({p, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}, p + Vec3{tiny(gen), tiny(gen), tiny(gen)}},
+                            0);
     for (int i = 0; i < 1000; ++i) prims.add<Sphere>({p, Real(1e-6)}, 0);
     expectBoundedAndCorrect(prims, 50);
 }

@@ -207,8 +207,7 @@ TEST(Import3dsCamera, MalformedChunksAreInputErrorsWithTheirByte) {
     for (const std::vector<std::uint8_t>& mutant : mutants) {
         try {
             EXPECT_LE(read3dsCameras(mutant, "f").size(), 1u);
-        } catch (const InputError&) {
-        }
+        } catch (const InputError&) {}
     }
 }
 

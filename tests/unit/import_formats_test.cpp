@@ -41,8 +41,8 @@ void expectCornersAmong(const Scene& scene, const std::vector<Vec3>& points) {
     for (const Model& m : scene.models) {
         for (std::size_t i = 0; i + 3 <= m.triangleVertices.size(); i += 3) {
             const Vec3 p(m.triangleVertices[i], m.triangleVertices[i + 1], m.triangleVertices[i + 2]);
-            const bool found = std::any_of(points.begin(), points.end(),
-                                           [&](const Vec3& q) { return length(p - q) < Real(1e-6); });
+            const bool found =
+                std::any_of(points.begin(), points.end(), [&](const Vec3& q) { return length(p - q) < Real(1e-6); });
             EXPECT_TRUE(found) << "corner (" << p.x << ", " << p.y << ", " << p.z << ") is not a vertex of the file";
         }
     }
@@ -292,8 +292,9 @@ TEST(ImportFormats, TheExtensionInAnyCaseOrTheSignatureChoosesTheImporter) {
     gltf.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     gltf.indices = {0, 1, 2};
     EXPECT_EQ(importScene(dir.write("tri.GLTF", gltf.json())).report.format, "glTF 2.0");
-    EXPECT_NE(importScene(dir.write("tri.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
-                                               "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n"))
+    EXPECT_NE(importScene(dir.write("tri.stl",
+                                    "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                    "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n"))
                   .report.format.find("STL"),
               std::string::npos);
 }

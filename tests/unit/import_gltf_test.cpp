@@ -316,7 +316,6 @@ TEST(ImportGltf, AGlbUnderAnyNameNeverReachesAssimp) {
     }
 }
 
-
 // NORMAL, TEXCOORD_0 and COLOR_0 reach the models: the Duck has normals and texture
 // coordinates, VertexColorTest colours.
 TEST(ImportGltf, VertexNormalsTextureCoordinatesAndColoursAreKept) {

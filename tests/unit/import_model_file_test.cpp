@@ -17,9 +17,9 @@ TEST(ImportModelFile, ThreeDsTriangleCountsMatchTheManifest) {
     // Assimp with aiProcess_Triangulate: MANIFEST.md "triangles (mesh data)"; every node places its meshes once.
     EXPECT_EQ(readModelFile(kModels + "3ds/fels/fels.3ds", Model::Format::Max3ds).triangleCount(), 768u);
     EXPECT_EQ(readModelFile(kModels + "3ds/test1/test1.3ds", Model::Format::Max3ds).triangleCount(), 108u);
-    EXPECT_EQ(readModelFile(kModels + "3ds/cubes_with_alpha/cubes_with_alpha.3DS", Model::Format::Max3ds)
-                  .triangleCount(),
-              60u);
+    EXPECT_EQ(
+        readModelFile(kModels + "3ds/cubes_with_alpha/cubes_with_alpha.3DS", Model::Format::Max3ds).triangleCount(),
+        60u);
     // No extension: Assimp detects the format from the content.
     const Model m = readModelFile(kModels + "3ds/testFormatDetection/testFormatDetection", Model::Format::Max3ds);
     EXPECT_EQ(m.triangleCount(), 1368u);
@@ -36,7 +36,8 @@ TEST(ImportModelFile, BrokenThreeDsFilesAreInputErrors) {
         EXPECT_EQ(error.rfind(path + ": cannot read 3ds model: ", 0), 0u) << error;
     }
     // Other formats never reach Assimp's other importers (some crash on bad input).
-    for (const char* other : {"gltf/Box/Box.gltf", "glb/Box/Box.glb", "bad/gltf-tinygltf-fuzz/tinygltf-afl-000062.gltf"})
+    for (const char* other :
+         {"gltf/Box/Box.gltf", "glb/Box/Box.glb", "bad/gltf-tinygltf-fuzz/tinygltf-afl-000062.gltf"})
         EXPECT_EQ(inputErrorOf([&] { readModelFile(kModels + other, Model::Format::Max3ds); }),
                   kModels + other + ": cannot read 3ds model: not a 3DS file (no 0x4D4D main chunk at byte 0)");
     EXPECT_EQ(inputErrorOf([&] { readModelFile(kModels + "none.3ds", Model::Format::Max3ds); }),

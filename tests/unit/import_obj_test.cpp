@@ -65,8 +65,8 @@ TEST(ImportObj, MaterialsKeepTheirDiffuseColourAndNames) {
 TEST(ImportObj, SpecularAndReflectionComeFromKsAndIllum) {
     TempDir dir;
     dir.write("m.mtl", "newmtl shiny\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 80\nillum 3\nnewmtl matte\nKd 0 0 1\nillum 2\n");
-    const ImportResult r = importScene(dir.write(
-        "m.obj", std::string("mtllib m.mtl\n") + kSquare + "usemtl shiny\nf 1 2 3\nusemtl matte\nf 1 3 4\n"));
+    const ImportResult r = importScene(
+        dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare + "usemtl shiny\nf 1 2 3\nusemtl matte\nf 1 3 4\n"));
     ASSERT_EQ(r.scene.instances.size(), 2u);
     const Material& shiny = r.scene.materials[r.scene.instances[0].material];
     const Material& matte = r.scene.materials[r.scene.instances[1].material];
@@ -97,7 +97,8 @@ TEST(ImportObj, ModelsFollowObjectsGroupsAndMaterials) {
 // Negative indices count back from the last vertex defined; quads and pentagons give n - 2.
 TEST(ImportObj, RelativeIndicesAndPolygons) {
     TempDir dir;
-    const ImportResult r = importScene(dir.write("m.obj", std::string(kSquare) + "f -4 -3 -2 -1\nv 0.5 2 0\nf 1 2 3 5 4\n"));
+    const ImportResult r =
+        importScene(dir.write("m.obj", std::string(kSquare) + "f -4 -3 -2 -1\nv 0.5 2 0\nf 1 2 3 5 4\n"));
     ImportResult copy = r;
     copy.scene.flatten();
     ASSERT_EQ(copy.scene.primitives.count<Triangle>(), 5u);
@@ -162,7 +163,8 @@ TEST(ImportObj, BrokenFilesAreInputErrorsAtTheirLine) {
     EXPECT_EQ(objError(dir, "# big\nv 1e39 0 0\n"), m + ":2" + badVertex + "\"v 1e39 0 0\"");  // beyond float
     for (const char* v : {"v 1e 0 0", "v 1e99999999999 0 0", "v 1.5.5 0 0", "v 1 0", "v 1 2 3x", "v 0x1 0 0"})
         EXPECT_EQ(objError(dir, std::string(v) + "\n"), m + ":1" + badVertex + "\"" + v + "\"");
-    const std::string badFace = ": face corners are not v, v/t, v//n or v/t/n with vertex numbers of at most 9 digits: ";
+    const std::string badFace =
+        ": face corners are not v, v/t, v//n or v/t/n with vertex numbers of at most 9 digits: ";
     for (const char* f : {"f 1 2 x", "f 1-5 2 3", "f 4294967297 2 3", "f 1 2 3 # a comment", "f 1/2/ 2 3"})
         EXPECT_EQ(objError(dir, std::string(kSquare) + "\n\n" + f + "\n"), m + ":7" + badFace + "\"" + f + "\"");
     EXPECT_EQ(objError(dir, std::string(kSquare) + "f 0 1 2\n"),
@@ -185,8 +187,8 @@ TEST(ImportObj, BrokenFilesAreInputErrorsAtTheirLine) {
 // Comments after coordinates, vertex colours, a '+' sign, blanks of every kind.
 TEST(ImportObj, VertexLinesInTheFormsExportersWrite) {
     TempDir dir;
-    const ImportResult r = importScene(dir.write(
-        "m.obj", "v 0 0 0 # origin\nv\t+1.0\t0\t0 1.0\nv 0 1 0 0.5 0.5 0.5\r\nf 1/1 2//2 3/3/3\n"));
+    const ImportResult r = importScene(
+        dir.write("m.obj", "v 0 0 0 # origin\nv\t+1.0\t0\t0 1.0\nv 0 1 0 0.5 0.5 0.5\r\nf 1/1 2//2 3/3/3\n"));
     ASSERT_EQ(test::modelTriangles(r.scene), 1u);
     const std::vector<float>& v = r.scene.models[0].triangleVertices;
     EXPECT_EQ(std::vector<float>(v.begin(), v.end()), std::vector<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}));
@@ -216,8 +218,7 @@ TEST(ImportObj, RepeatedCornersAreDropped) {
 
 TEST(ImportObj, GroupNamesStayApart) {
     TempDir dir;
-    const ImportResult r =
-        importScene(dir.write("m.obj", std::string(kSquare) + "g a b\nf 1 2 3\ng a_b\nf 1 3 4\n"));
+    const ImportResult r = importScene(dir.write("m.obj", std::string(kSquare) + "g a b\nf 1 2 3\ng a_b\nf 1 3 4\n"));
     EXPECT_EQ(r.scene.models.size(), 2u);
 }
 
@@ -240,7 +241,8 @@ TEST(ImportObj, LineNumbersHoldAcrossBufferRefills) {
     std::string text;
     for (int i = 0; i < 30000; ++i) text += "v " + std::to_string(i) + " 0.25 -1.5e-3\n";  // ~750 KB
     text += "f 1 2 3\nf 1 2 30001\n";
-    EXPECT_EQ(objError(dir, text), dir.path("m.obj") + ":30002: face refers to vertex 30001, but 30000 vertices are defined before it");
+    EXPECT_EQ(objError(dir, text),
+              dir.path("m.obj") + ":30002: face refers to vertex 30001, but 30000 vertices are defined before it");
 }
 
 TEST(ImportObj, LineTrackingFileShowsTheLineReadLast) {
@@ -260,9 +262,9 @@ TEST(ImportObj, LineTrackingFileShowsTheLineReadLast) {
 TEST(ImportObj, MissingMaterialsFallBackToADefaultWithANote) {
     TempDir dir;
     dir.write("empty.mtl", "# no materials\n");
-    const ImportResult r = importScene(dir.write(
-        "m.obj", std::string("mtllib absent.mtl empty.mtl\nmtllib /dev/zero\n") + kSquare +
-                     "usemtl red\nf 1 2 3\nusemtl red\nf 1 3 4\nusemtl \nf 2 3 4\n"));
+    const ImportResult r =
+        importScene(dir.write("m.obj", std::string("mtllib absent.mtl empty.mtl\nmtllib /dev/zero\n") + kSquare +
+                                           "usemtl red\nf 1 2 3\nusemtl red\nf 1 3 4\nusemtl \nf 2 3 4\n"));
     ASSERT_EQ(r.scene.materials.size(), 1u);
     EXPECT_EQ(r.scene.materials[0].name, "default");
     EXPECT_FLOAT_EQ(r.scene.materials[0].color.g, 1) << "rt's white default, not an unnamed black one";
@@ -319,12 +321,11 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
     EXPECT_EQ(r.scene.textures[*a.colorTexture].path, dir.path("wood.png"));
 }
 
-
 // vn and vt go with their corners; OBJ's v (up the image) becomes rt's (down).
 TEST(ImportObj, NormalsAndTextureCoordinatesFollowTheirCorners) {
     TempDir dir;
-    const ImportResult r = importScene(dir.write(
-        "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0.25\nvn 0 0 2\nvn 0 1 1\nf 1/1/1 2/2/2 3/1/1\n"));
+    const ImportResult r = importScene(
+        dir.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0.25\nvn 0 0 2\nvn 0 1 1\nf 1/1/1 2/2/2 3/1/1\n"));
     ASSERT_EQ(r.scene.models.size(), 1u);
     const Model& m = r.scene.models[0];
     const float s = float(1 / std::sqrt(2.0));

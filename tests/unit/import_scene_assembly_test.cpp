@@ -27,7 +27,8 @@ TEST(ImportSceneAssembly, AMeshIsConvertedOnceAndItsDropsCountPerPlacement) {
             ++conversions;
             return oneKeptOneDropped(assembly, "wheel");
         });
-        assembly.place(mesh, [] { return 0u; }, Transform());
+        assembly.place(
+            mesh, [] { return 0u; }, Transform());
     }
     EXPECT_EQ(conversions, 1);
     ASSERT_EQ(out.scene.models.size(), 1u);
@@ -45,7 +46,8 @@ TEST(ImportSceneAssembly, AModelWithoutTrianglesIsNeitherAddedNorPlaced) {
     const ConvertedMesh mesh = assembly.addModel(std::move(model));
     EXPECT_FALSE(mesh.model);
     bool materialMade = false;
-    assembly.place(mesh, [&] { return materialMade = true, 0u; }, Transform());
+    assembly.place(
+        mesh, [&] { return materialMade = true, 0u; }, Transform());
     EXPECT_TRUE(out.scene.models.empty());
     EXPECT_TRUE(out.scene.instances.empty());
     EXPECT_FALSE(materialMade);

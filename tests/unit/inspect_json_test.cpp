@@ -95,8 +95,8 @@ private:
             if (static_cast<unsigned char>(c) < 0x20) fail("raw control character in a string");
             if (c == '\\') {
                 const char e = s_.at(i_++);
-                const std::map<char, char> simple{{'"', '"'}, {'\\', '\\'}, {'/', '/'}, {'n', '\n'},
-                                                  {'r', '\r'}, {'t', '\t'}, {'b', '\b'}, {'f', '\f'}};
+                const std::map<char, char> simple{{'"', '"'},  {'\\', '\\'}, {'/', '/'},  {'n', '\n'},
+                                                  {'r', '\r'}, {'t', '\t'},  {'b', '\b'}, {'f', '\f'}};
                 if (e == 'u') {
                     c = char(std::stoi(s_.substr(i_, 4), nullptr, 16));
                     i_ += 4;

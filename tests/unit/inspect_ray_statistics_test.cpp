@@ -48,7 +48,7 @@ TEST(RayStatistics, CameraRaysOnly) {
 TEST(RayStatistics, OneShadowRayPerHitAndLightInFront) {
     Scene scene = sceneLookingDownZ();
     scene.looseObjects.add<Sphere>({{0, 0, 5}, 1}, 0);
-    scene.lights.push_back({{0, 0, 0}});     // at the camera: in front of every visible point
+    scene.lights.push_back({{0, 0, 0}});    // at the camera: in front of every visible point
     scene.lights.push_back({{0, 0, 100}});  // behind the sphere: in front of no visible point
     scene.flatten();
     const NaiveAccelerator naive(scene.primitives);

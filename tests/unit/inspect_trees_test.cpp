@@ -17,9 +17,7 @@ using namespace rt;
 namespace {
 
 // The clusters of these tests: spheres of radius 0.2, 0.5 apart.
-void addCluster(Scene& scene, const Vec3& corner, int n) {
-    addSphereCluster(scene, corner, n, Real(0.5), Real(0.2));
-}
+void addCluster(Scene& scene, const Vec3& corner, int n) { addSphereCluster(scene, corner, n, Real(0.5), Real(0.2)); }
 
 std::vector<TreeNodeInfo> nodesOf(const Accelerator& accel) {
     std::vector<TreeNodeInfo> nodes;

@@ -30,7 +30,8 @@ TEST(Sphere, NormalsAreUnitOnSmallSpheresFarFromTheOrigin) {
         for (int i = 0; i < 200; ++i) {
             // Rays from 0.05 away towards points spread over the sphere, aimed at 0.9 of its radius.
             const Real a = Real(0.1) * Real(i), b = Real(0.37) * Real(i);
-            const Vec3 from = centre + Vec3{std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)} * Real(0.05);
+            const Vec3 from =
+                centre + Vec3{std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)} * Real(0.05);
             const Vec3 aim = centre + Vec3{std::sin(b), std::cos(a), std::sin(a)} * Real(0.9 * 0.006 / std::sqrt(2.0));
             const Ray ray{from, normalize(aim - from)};
             Real t = 0;
@@ -180,9 +181,9 @@ TEST(Frustum, MissesBesideBeyondAndBehind) {
     Hit hit;
     EXPECT_FALSE(intersect(kCylinder, {{-5, 0, 2.5f}, {1, 0, 0}}, kInfinity, hit));  // above the top
     EXPECT_FALSE(intersect(kCylinder, {{-5, 1.5f, 1}, {1, 0, 0}}, kInfinity, hit));  // beside
-    EXPECT_FALSE(intersect(kCylinder, {{-5, 0, 1}, {1, 0, 0}}, 3, hit));              // beyond tMax
-    EXPECT_FALSE(intersect(kCylinder, {{5, 0, 1}, {1, 0, 0}}, kInfinity, hit));       // behind
-    EXPECT_FALSE(intersect(kCone, {{-5, 0.75f, 1}, {1, 0, 0}}, kInfinity, hit));      // outside the narrowing side
+    EXPECT_FALSE(intersect(kCylinder, {{-5, 0, 1}, {1, 0, 0}}, 3, hit));             // beyond tMax
+    EXPECT_FALSE(intersect(kCylinder, {{5, 0, 1}, {1, 0, 0}}, kInfinity, hit));      // behind
+    EXPECT_FALSE(intersect(kCone, {{-5, 0.75f, 1}, {1, 0, 0}}, kInfinity, hit));     // outside the narrowing side
     EXPECT_FALSE(intersectsAny(kCone, {{-5, 0.75f, 1}, {1, 0, 0}}, kInfinity));
 }
 
@@ -207,7 +208,8 @@ TEST(Frustum, BoundsAreTightForAnyAxis) {
 
 TEST(Frustum, OverlapNeverMissesTheSurfaceAndSkipsBoxesInside) {
     const Cone tilted{{{0, 0, 0}, {1, 2, 3}, Real(0.5), Real(0.2)}};
-    EXPECT_FALSE(overlaps(tilted, {Vec3{0.5f, 1, 1.5f} - Vec3{0.05f, 0.05f, 0.05f}, Vec3{0.5f, 1, 1.5f} + Vec3{0.05f, 0.05f, 0.05f}}));
+    EXPECT_FALSE(overlaps(
+        tilted, {Vec3{0.5f, 1, 1.5f} - Vec3{0.05f, 0.05f, 0.05f}, Vec3{0.5f, 1, 1.5f} + Vec3{0.05f, 0.05f, 0.05f}}));
     EXPECT_FALSE(overlaps(tilted, {{2, 2, 2}, {3, 3, 3}}));
     for (int i = 0; i <= 32; ++i)
         for (int j = 0; j < 32; ++j) {

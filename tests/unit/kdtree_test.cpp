@@ -19,8 +19,7 @@ std::string dump(const Accelerator& tree) {
     std::ostringstream out;
     tree.forEachNode([&](const TreeNodeInfo& n) {
         out << n.id << ' ' << n.depth << ' ' << n.leaf << ' ' << (n.plane ? n.plane->axis : -1) << ' '
-            << (n.plane ? n.plane->position : 0) << ' ' << n.primitives
-            << '\n';
+            << (n.plane ? n.plane->position : 0) << ' ' << n.primitives << '\n';
     });
     return out.str();
 }
@@ -183,7 +182,8 @@ TEST(KdTree, CutsOffEmptySpaceFirst) {
     ASSERT_GT(nodes.size(), 3u);
     EXPECT_FALSE(nodes[0].leaf);
     ASSERT_TRUE(nodes[0].plane);
-    EXPECT_NEAR(nodes[0].plane->position, cluster.hi[nodes[0].plane->axis], 1e-3);  // the cluster's far face, not the middle
+    EXPECT_NEAR(nodes[0].plane->position, cluster.hi[nodes[0].plane->axis],
+                1e-3);  // the cluster's far face, not the middle
     const AccelStats s = tree->stats();
     EXPECT_GT(s.emptyLeaves, 0u);
     EXPECT_LT(s.sahCost, 0.5 * 1.5 * double(prims.size()));

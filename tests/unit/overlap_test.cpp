@@ -1,6 +1,6 @@
 // Triangle-box (Akenine-Moller) and sphere-box (Arvo) overlap, and clipping to a box.
-#include "geometry/clip.h"
 #include "geometry/overlap.h"
+#include "geometry/clip.h"
 
 #include <random>
 
@@ -21,7 +21,7 @@ TEST(TriangleBoxOverlap, InsideCrossingAndTouching) {
 TEST(TriangleBoxOverlap, BoundingBoxesOverlapButTriangleMisses) {
     // The diagonal triangle's bounds cover the box corner, the triangle passes it by:
     // only the plane or an edge-cross axis separates them.
-    EXPECT_FALSE(overlaps(Triangle{{1.5f, 0, 0}, {0, 1.5f, 0}, {0, 0, 1.5f}} , Aabb{{0.9f, 0.9f, 0.9f}, {1, 1, 1}}));
+    EXPECT_FALSE(overlaps(Triangle{{1.5f, 0, 0}, {0, 1.5f, 0}, {0, 0, 1.5f}}, Aabb{{0.9f, 0.9f, 0.9f}, {1, 1, 1}}));
     EXPECT_FALSE(overlaps(Triangle{{2, -1, 0.5f}, {3, 2, 0.5f}, {-1, 2, 0.5f}}, Aabb{{0, 0, 0}, {0.4f, 0.4f, 1}}));
     EXPECT_FALSE(overlaps(Triangle{{0, 0, 2}, {1, 0, 2}, {0, 1, 2}}, kUnitBox));  // above the box
 }
@@ -31,7 +31,8 @@ TEST(TriangleBoxOverlap, AgreesWithClippingOnRandomTriangles) {
     std::uniform_real_distribution<float> coord(-1, 2);
     int overlapping = 0;
     for (int i = 0; i < 20000; ++i) {
-        const Triangle t{{coord(gen), coord(gen), coord(gen)}, {coord(gen), coord(gen), coord(gen)},
+        const Triangle t{{coord(gen), coord(gen), coord(gen)},
+                         {coord(gen), coord(gen), coord(gen)},
                          {coord(gen), coord(gen), coord(gen)}};
         const Aabb shrunk{{Real(1e-3), Real(1e-3), Real(1e-3)}, {1 - Real(1e-3), 1 - Real(1e-3), 1 - Real(1e-3)}};
         const Aabb grown{{-Real(1e-3), -Real(1e-3), -Real(1e-3)}, {1 + Real(1e-3), 1 + Real(1e-3), 1 + Real(1e-3)}};

@@ -50,8 +50,8 @@ TEST(RawModel, WritesTheAppendixDLayout) {
 
 TEST(RawModel, TrianglesRoundTripThroughAFile) {
     TempDir dir;
-    const Model m = rawModel({0.1f, -2.5f, 3e7f, 4, 5, 6, 7, 8, std::numeric_limits<float>::denorm_min(),
-                              1, 1, 1, 2, 2, 2, 3, 3, 3.25f});
+    const Model m = rawModel(
+        {0.1f, -2.5f, 3e7f, 4, 5, 6, 7, 8, std::numeric_limits<float>::denorm_min(), 1, 1, 1, 2, 2, 2, 3, 3, 3.25f});
     writeRawFile(dir.path("t.raw"), m);
     const Model back = readRawFile(dir.path("t.raw"));
     EXPECT_EQ(back.triangleVertices, m.triangleVertices);  // bit-identical floats
@@ -92,16 +92,22 @@ TEST(RawModel, BadFilesNameTheByteOffset) {
 
 TEST(RawModel, HugeCountIsRejectedBeforeAllocating) {
     // 4 G triangles would be 154 GB: the size check must come before any reservation.
-    EXPECT_EQ(inputErrorOf([&] { fromBytes(header('T', 0xffffffffu) + floatBytes({1, 2, 3})); }),
+    EXPECT_EQ(inputErrorOf([&] {
+                  fromBytes(header('T', 0xffffffffu) + floatBytes({1, 2, 3}));
+              }),
               "m.raw: byte 22: truncated RAW data: 154618822620 bytes of data for 4294967295 triangles, "
               "the file has 12");
 }
 
 TEST(RawModel, NonFiniteNumbersNameTheirOffset) {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    EXPECT_EQ(inputErrorOf([&] { fromBytes(header('S', 1) + floatBytes({1, nan, 3, 4})); }),
+    EXPECT_EQ(inputErrorOf([&] {
+                  fromBytes(header('S', 1) + floatBytes({1, nan, 3, 4}));
+              }),
               "m.raw: byte 14: NaN in RAW data");
-    EXPECT_EQ(inputErrorOf([&] { fromBytes(header('S', 1) + floatBytes({1, 2, 3, -inf})); }),
+    EXPECT_EQ(inputErrorOf([&] {
+                  fromBytes(header('S', 1) + floatBytes({1, 2, 3, -inf}));
+              }),
               "m.raw: byte 22: infinite number in RAW data");
 }
 
@@ -140,7 +146,8 @@ TEST(RawModel, VertexDataRoundTripsAsSectionsAfterTheTriangles) {
     EXPECT_TRUE(uvsOnly.vertexNormals.empty());
     EXPECT_EQ(uvsOnly.vertexUvs, m.vertexUvs);
     EXPECT_TRUE(rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0}).vertexNormals.empty());
-    EXPECT_EQ(rawBytes(rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0})), header('T', 1) + floatBytes({0, 0, 0, 1, 0, 0, 0, 1, 0}));
+    EXPECT_EQ(rawBytes(rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0})),
+              header('T', 1) + floatBytes({0, 0, 0, 1, 0, 0, 0, 1, 0}));
 }
 
 TEST(RawModel, BadSectionsNameTheByteOffset) {
@@ -155,7 +162,9 @@ TEST(RawModel, BadSectionsNameTheByteOffset) {
     EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vnrm" + normals + "vnrm" + normals); }),
               "m.raw: byte 86: a second vertex normals section");
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vcol" + floatBytes({1, 1, 1, nan, 1, 1, 1, 1, 1})); }),
+    EXPECT_EQ(inputErrorOf([&] {
+                  fromBytes(tri + "vcol" + floatBytes({1, 1, 1, nan, 1, 1, 1, 1, 1}));
+              }),
               "m.raw: byte 62: NaN in RAW data");
     Model partial = rawModel({1, 2, 3, 4, 5, 6, 7, 8, 9, 1, 2, 3, 4, 5, 6, 7, 8, 9});
     partial.vertexUvs = {0, 0, 1, 0, 0, 1};  // one triangle of two

@@ -30,7 +30,8 @@ TEST(RenderAlpha, ZeroExactlyWhereTheNaiveTracerFindsNoHit) {
         for (int x = 0; x < settings.width; ++x) {
             Hit hit;
             RayCounters work;
-            const bool seen = accel.intersect(camera.at(Real(x) + Real(0.5), Real(y) + Real(0.5)), kInfinity, hit, work);
+            const bool seen =
+                accel.intersect(camera.at(Real(x) + Real(0.5), Real(y) + Real(0.5)), kInfinity, hit, work);
             misses += !seen;
             ASSERT_EQ(image.alphaAt(x, y), seen ? 1.0f : 0.0f) << x << "," << y;
             const std::size_t i = std::size_t(y) * std::size_t(settings.width) + std::size_t(x);

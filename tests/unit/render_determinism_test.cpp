@@ -86,7 +86,7 @@ TEST(RenderDeterminism, ProgressReportsEveryBlockOnce) {
         last = done;
         reportedTotal = total;
     });
-    EXPECT_EQ(calls, 3 * 2);  // ceil(70/32) x ceil(40/32) blocks
+    EXPECT_EQ(calls, 3 * 2);                   // ceil(70/32) x ceil(40/32) blocks
     EXPECT_EQ(reportedTotal, 70u * 40u * 2u);  // samples, not blocks: the ETA follows work done
     EXPECT_EQ(last, reportedTotal);
     EXPECT_EQ(stats.counters.camera.rays, 70u * 40u * 2u);

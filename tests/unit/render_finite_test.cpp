@@ -27,7 +27,7 @@ float channelBound(const Scene& s, int reflectionDepth, float Color::*channel) {
     for (const Light& l : s.lights) ambientLight += l.color.*channel;
     std::vector<Material> materials = s.materials;
     materials.push_back(Material{});  // what the tracer uses for a primitive without one
-    float seen = 0;  // what a ray reflected at the current depth sees at most; none below the deepest
+    float seen = 0;                   // what a ray reflected at the current depth sees at most; none below the deepest
     for (int depth = reflectionDepth; depth >= 0; --depth) {
         float deepest = s.background.*channel;
         for (const Material& m : materials) {
@@ -48,8 +48,8 @@ void expectFiniteAndBounded(const Scene& scene, const Accelerator& accel, int wi
     settings.shadows = true;
     RenderStats stats;
     const Framebuffer image = render(scene, accel, settings, stats);
-    EXPECT_EQ(stats.counters.nonFinite.count, 0u) << "first at pixel (" << stats.counters.nonFinite.firstX << ", "
-                                                  << stats.counters.nonFinite.firstY << ")";
+    EXPECT_EQ(stats.counters.nonFinite.count, 0u)
+        << "first at pixel (" << stats.counters.nonFinite.firstX << ", " << stats.counters.nonFinite.firstY << ")";
     int reported = 0;
     for (float Color::*channel : {&Color::r, &Color::g, &Color::b}) {
         const float bound = channelBound(scene, reflectionDepth, channel) * 1.0001f;
@@ -78,8 +78,12 @@ Scene smallReflectiveSphereField() {
     s.camera.destination = {0, 0, 0};
     s.camera.up = {0, 0, 1};
     s.camera.fovDegrees = 50;
-    const auto chrome = test::addMaterial(s, {.name = "chrome", .color = {0.9f, 0.8f, 0.6f}, .ambient = 0.05f,
-                                              .diffuse = 0.5f, .specular = 0.8f, .shininess = 60,
+    const auto chrome = test::addMaterial(s, {.name = "chrome",
+                                              .color = {0.9f, 0.8f, 0.6f},
+                                              .ambient = 0.05f,
+                                              .diffuse = 0.5f,
+                                              .specular = 0.8f,
+                                              .shininess = 60,
                                               .reflection = 0.9f});
     constexpr int n = 12;
     constexpr Real spacing = Real(0.02), half = spacing * (n - 1) / 2;

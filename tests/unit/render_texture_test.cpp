@@ -43,8 +43,8 @@ TEST(Tracer, AnEmitterIsSeenInAMirrorWithoutLights) {
     s.camera.origin = {0, 0, -2};
     s.camera.destination = {0, 0, 0};
     const auto mirror = test::addMaterial(s, {.name = "mirror", .ambient = 0, .diffuse = 0, .reflection = 1});
-    const auto lamp = test::addMaterial(s, {.name = "lamp", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0,
-                                            .emission = {1, 0.5f, 0.25f}});
+    const auto lamp = test::addMaterial(
+        s, {.name = "lamp", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = {1, 0.5f, 0.25f}});
     test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, mirror);
     test::addQuad(s, {-9, -9, -5}, {-9, 9, -5}, {9, 9, -5}, {9, -9, -5}, lamp);
     s.flatten();

@@ -27,7 +27,8 @@ std::vector<int> coverCount(int width, int height, TileGrid grid) {
 TEST(RenderTiles, EveryPixelIsInExactlyOneTile) {
     for (const int width : {1, 4, 7, 70, 97, 1920})
         for (const int height : {1, 3, 40, 1080})
-            for (const TileGrid grid : {TileGrid{1, 1}, TileGrid{4, 4}, TileGrid{3, 1}, TileGrid{1, 3}, TileGrid{7, 2}}) {
+            for (const TileGrid grid :
+                 {TileGrid{1, 1}, TileGrid{4, 4}, TileGrid{3, 1}, TileGrid{1, 3}, TileGrid{7, 2}}) {
                 if (grid.columns > width || grid.rows > height) continue;
                 const std::vector<int> count = coverCount(width, height, grid);
                 for (std::size_t p = 0; p < count.size(); ++p)
@@ -61,6 +62,6 @@ TEST(RenderTiles, LargestImageDoesNotOverflow) {
 TEST(RenderTiles, BadIndexOrGridIsInputError) {
     EXPECT_THROW(tileWindow(70, 40, TileGrid{4, 4}, 16), InputError);
     EXPECT_THROW(tileWindow(70, 40, TileGrid{4, 4}, -1), InputError);
-    EXPECT_THROW(tileWindow(3, 40, TileGrid{4, 4}, 0), InputError);   // more columns than pixels
+    EXPECT_THROW(tileWindow(3, 40, TileGrid{4, 4}, 0), InputError);  // more columns than pixels
     EXPECT_THROW(tileWindow(70, 40, TileGrid{0, 4}, 0), InputError);
 }

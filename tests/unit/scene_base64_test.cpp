@@ -22,8 +22,12 @@ std::size_t errorAt(std::string_view text) {
 }  // namespace
 
 TEST(SceneBase64, Rfc4648TestVectors) {
-    const std::pair<const char*, const char*> vectors[] = {{"", ""},         {"f", "Zg=="},         {"fo", "Zm8="},
-                                                           {"foo", "Zm9v"}, {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="},
+    const std::pair<const char*, const char*> vectors[] = {{"", ""},
+                                                           {"f", "Zg=="},
+                                                           {"fo", "Zm8="},
+                                                           {"foo", "Zm9v"},
+                                                           {"foob", "Zm9vYg=="},
+                                                           {"fooba", "Zm9vYmE="},
                                                            {"foobar", "Zm9vYmFy"}};
     for (const auto& [plain, encoded] : vectors) {
         EXPECT_EQ(encodeBase64(bytesOf(plain)), encoded);
@@ -41,9 +45,9 @@ TEST(SceneBase64, AllByteValuesRoundTripWithLineBreaks) {
 }
 
 TEST(SceneBase64, MalformedTextNamesTheBadCharacter) {
-    EXPECT_EQ(errorAt("Zm9v*mFy"), 4u);       // not in the alphabet
-    EXPECT_EQ(errorAt("Zg==Zm8="), 4u);       // data after the padding
-    EXPECT_EQ(errorAt("Z==="), 1u);           // padding too early
-    EXPECT_EQ(errorAt("Zm9=v"), 4u);          // a digit after '='
-    EXPECT_EQ(errorAt("Zm9vY"), 5u);          // incomplete group: the end of the text
+    EXPECT_EQ(errorAt("Zm9v*mFy"), 4u);  // not in the alphabet
+    EXPECT_EQ(errorAt("Zg==Zm8="), 4u);  // data after the padding
+    EXPECT_EQ(errorAt("Z==="), 1u);      // padding too early
+    EXPECT_EQ(errorAt("Zm9=v"), 4u);     // a digit after '='
+    EXPECT_EQ(errorAt("Zm9vY"), 5u);     // incomplete group: the end of the text
 }

@@ -19,7 +19,7 @@ TEST(SceneBundled, Spheres) {
     const Scene scene = bundled("spheres.xml");
     EXPECT_EQ(scene.primitives.count<Triangle>(), 2u);  // the floor quad
     EXPECT_EQ(scene.primitives.count<Sphere>(), 6u);
-    EXPECT_EQ(scene.materials.size(), 5u);            // four named and the default
+    EXPECT_EQ(scene.materials.size(), 5u);  // four named and the default
     EXPECT_EQ(scene.lights.size(), 2u);
     EXPECT_TRUE(scene.warnings.empty());
 }
@@ -29,7 +29,7 @@ TEST(SceneBundled, Transforms) {
     EXPECT_EQ(scene.models.size(), 2u);
     EXPECT_EQ(scene.instances.size(), 8u);
     EXPECT_EQ(scene.primitives.count<Triangle>(), 2u + 6 * 8);  // floor and six octahedra
-    EXPECT_EQ(scene.primitives.count<Sphere>(), 2u * 6);       // two atoms
+    EXPECT_EQ(scene.primitives.count<Sphere>(), 2u * 6);        // two atoms
     EXPECT_TRUE(scene.warnings.empty());
 }
 

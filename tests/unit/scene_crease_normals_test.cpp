@@ -16,8 +16,8 @@ Vec3 normalAt(const Model& m, std::size_t triangle, int corner) {
 Model hinge(double degrees) {
     const float c = float(std::cos(degrees * kPi / 180)), s = float(std::sin(degrees * kPi / 180));
     Model m;
-    m.triangleVertices = {0, 0, 0, 0, 1, 0, -1, 0, 0,  // facing +z
-                          0, 0, 0, c, 0, s, 0, 1, 0};  // facing (-s, 0, c)
+    m.triangleVertices = {0, 0, 0, 0, 1, 0, -1, 0, 0,   // facing +z
+                          0, 0, 0, c, 0, s, 0,  1, 0};  // facing (-s, 0, c)
     return m;
 }
 
@@ -49,9 +49,9 @@ TEST(CreaseNormals, AngleWeightsMakeACubeCornerTheDiagonal) {
     // (its right angle) and one that does not reach it; a crease angle over 90 degrees smooths
     // them, each face counting by its angle at the corner.
     Model m;
-    m.triangleVertices = {1, 1, 1, 0, 1, 1, 1, 0, 1,  0, 1, 1, 0, 0, 1, 1, 0, 1,   // z = 1
-                          1, 1, 1, 1, 1, 0, 0, 1, 1,  1, 1, 0, 0, 1, 0, 0, 1, 1,   // y = 1
-                          1, 1, 1, 1, 0, 1, 1, 1, 0,  1, 0, 1, 1, 0, 0, 1, 1, 0};  // x = 1
+    m.triangleVertices = {1, 1, 1, 0, 1, 1, 1, 0, 1, 0, 1, 1, 0, 0, 1, 1, 0, 1,   // z = 1
+                          1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 1, 0, 0, 1, 1,   // y = 1
+                          1, 1, 1, 1, 0, 1, 1, 1, 0, 1, 0, 1, 1, 0, 0, 1, 1, 0};  // x = 1
     addCreaseNormals(m, 100);
     const Real d = 1 / std::sqrt(Real(3));
     for (std::size_t t : {0u, 2u, 4u}) expectNear(normalAt(m, t, 0), {d, d, d}, 1e-6);

@@ -18,8 +18,8 @@ struct Table41Row {
 
 // Thesis Table 4.1, "Charakteristiky testovacích scén".
 constexpr Table41Row kTable41[] = {
-    {"balls", 2, 7381, 3},       {"balls2", 2, 597871, 3}, {"ships", 1004, 13, 2},
-    {"tree", 180182, 0, 7},      {"pyramid5", 18750, 0, 1},
+    {"balls", 2, 7381, 3},  {"balls2", 2, 597871, 3},  {"ships", 1004, 13, 2},
+    {"tree", 180182, 0, 7}, {"pyramid5", 18750, 0, 1},
 };
 
 TEST(ThesisScenes, HaveTheCountsOfTable41) {

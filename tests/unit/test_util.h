@@ -39,10 +39,10 @@ inline std::string sharedModelsMissing() {
 }  // namespace rt::test
 
 // First statement of a test that reads RT_SHARED_DIR/models: skips the test when they are absent.
-#define SKIP_WITHOUT_SHARED_MODELS()                                                           \
-    do {                                                                                       \
-        if (!rt::test::sharedModelsPresent()) {                                                \
-            if (rt::test::sharedModelsRequired()) FAIL() << rt::test::sharedModelsMissing();   \
-            GTEST_SKIP() << rt::test::sharedModelsMissing();                                   \
-        }                                                                                      \
+#define SKIP_WITHOUT_SHARED_MODELS()                                                         \
+    do {                                                                                     \
+        if (!rt::test::sharedModelsPresent()) {                                              \
+            if (rt::test::sharedModelsRequired()) FAIL() << rt::test::sharedModelsMissing(); \
+            GTEST_SKIP() << rt::test::sharedModelsMissing();                                 \
+        }                                                                                    \
     } while (false)

@@ -128,9 +128,9 @@ TEST(XmlLoader, ModelPathsResolveAgainstTheSceneFolder) {
     TempDir dir;
     std::filesystem::create_directory(dir.path("models"));
     writeRawFile(dir.path("models/tri.raw"), rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0}));
-    const std::string path = dir.write(
-        "scene.xml", sceneWith("<models><model name=\"t\" file=\"models/tri.raw\"/></models>"
-                               "<objects><model name=\"t\"/></objects>"));
+    const std::string path =
+        dir.write("scene.xml", sceneWith("<models><model name=\"t\" file=\"models/tri.raw\"/></models>"
+                                         "<objects><model name=\"t\"/></objects>"));
     const Scene scene = loadSceneXml(path);
     EXPECT_EQ(scene.models[0].file, "models/tri.raw");
     EXPECT_EQ(scene.models[0].format, Model::Format::Raw);  // from the extension
@@ -241,26 +241,30 @@ TEST(XmlLoader, EveryMaterialAttribute) {
 
 TEST(XmlLoader, CameraFocalDistanceZoomAndUp) {
     const Scene f = loadSceneXmlFromString(R"(<scene><camera f="800" zoom="50"><origin x="1"/>
-        <destination x="1" z="-3"/><up z="1" x="1"/></camera></scene>)", "s.xml", ".");
+        <destination x="1" z="-3"/><up z="1" x="1"/></camera></scene>)",
+                                           "s.xml", ".");
     EXPECT_EQ(*f.camera.focalDistance, 800);
     EXPECT_FALSE(f.camera.fovDegrees);
     EXPECT_EQ(f.camera.up, Vec3(1, 0, 1));
     EXPECT_EQ(f.camera.focalPixels(kReferenceWidth), 400);  // f is in pixels of an 800-pixel-wide picture
     // Neither fov nor f: the distance from origin to destination (thesis 3.4.2).
     const Scene d = loadSceneXmlFromString(R"(<scene><camera><origin x="1"/><destination x="1" z="-3"/>
-        </camera></scene>)", "s.xml", ".");
+        </camera></scene>)",
+                                           "s.xml", ".");
     EXPECT_EQ(d.camera.focalPixels(kReferenceWidth), 3);
     EXPECT_EQ(d.camera.zoom, 100);
     // fov is the horizontal angle: f = w / (2 tan(fov/2)).
     const Scene fov = loadSceneXmlFromString(R"(<scene><camera fov="90"><origin/><destination z="1"/>
-        </camera></scene>)", "s.xml", ".");
+        </camera></scene>)",
+                                             "s.xml", ".");
     EXPECT_NEAR(fov.camera.focalPixels(640), 320, 1e-3);
 }
 
 TEST(XmlLoader, SeveralNamedCamerasTheFirstRendered) {
     const Scene s = loadSceneXmlFromString(R"(<scene><camera name="front"><origin/><destination z="1"/></camera>
         <camera name="side" fov="30"><origin x="5"/><destination/></camera>
-        <camera><origin y="5"/><destination/><up z="1"/></camera></scene>)", "s.xml", ".");
+        <camera><origin y="5"/><destination/><up z="1"/></camera></scene>)",
+                                           "s.xml", ".");
     EXPECT_EQ(s.camera.name, "front");
     ASSERT_EQ(s.extraCameras.size(), 2u);
     EXPECT_EQ(s.extraCameras[0].name, "side");
@@ -327,10 +331,10 @@ TEST(XmlLoader, DegeneratePrimitivesAreDroppedAndCounted) {
 
 TEST(XmlLoader, ThreeDsModelsBakeNodeTransforms) {
     SKIP_WITHOUT_SHARED_MODELS();
-    const Scene scene = load("<models><model name=\"j\" file=\"" RT_SHARED_DIR
-                             "/models/3ds/jeep1/jeep1.3ds\"/></models>");
+    const Scene scene =
+        load("<models><model name=\"j\" file=\"" RT_SHARED_DIR "/models/3ds/jeep1/jeep1.3ds\"/></models>");
     EXPECT_EQ(scene.models.at(0).format, Model::Format::Max3ds);  // from the extension
-    EXPECT_EQ(scene.models.at(0).triangleCount(), 2032u);          // MANIFEST.md
+    EXPECT_EQ(scene.models.at(0).triangleCount(), 2032u);         // MANIFEST.md
 }
 
 // Assimp is the import layer's: the scene layer's own reader names it instead of reading 3ds.
@@ -372,8 +376,7 @@ const BadScene kBadScenes[] = {
      "s.xml:4: <translate> attribute 'y': '1e999' is not a finite number"},
     {"missing material", sceneWith("<objects>\n<sphere r=\"1\" material=\"gold\"/></objects>"),
      "s.xml:4: unknown material 'gold'"},
-    {"duplicate material",
-     sceneWith("<materials>\n<material name=\"m\"/>\n<material name=\"m\"/></materials>"),
+    {"duplicate material", sceneWith("<materials>\n<material name=\"m\"/>\n<material name=\"m\"/></materials>"),
      "s.xml:5: duplicate material 'm' (first defined on line 4)"},
     {"missing model", sceneWith("<objects>\n<model name=\"ship\"/></objects>"), "s.xml:4: unknown model 'ship'"},
     {"duplicate model",

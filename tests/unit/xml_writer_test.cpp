@@ -230,7 +230,8 @@ TEST(XmlWriter, TexturesEmissionAndVertexDataRoundTrip) {
     ASSERT_EQ(second.textures.size(), 2u);
     const Texture& wood = second.textures[0];
     EXPECT_EQ(wood.file, "../../in/pictures/wood.png");
-    EXPECT_EQ(std::filesystem::weakly_canonical(wood.path), std::filesystem::weakly_canonical(dir.path("in/pictures/wood.png")));
+    EXPECT_EQ(std::filesystem::weakly_canonical(wood.path),
+              std::filesystem::weakly_canonical(dir.path("in/pictures/wood.png")));
     EXPECT_EQ(wood.wrapS, Texture::Wrap::Clamp);
     EXPECT_EQ(wood.wrapT, Texture::Wrap::Mirror);
     EXPECT_EQ(wood.offset, (std::array<float, 2>{0.5f, 0.25f}));
@@ -255,9 +256,9 @@ TEST(XmlLoader, UnknownTexturesAndTypesAreErrors) {
     TempDir dir;
     const auto error = [&](const std::string& body) {
         return inputErrorOf([&] {
-            loadSceneXml(dir.write("s.xml", "<scene><camera><origin z=\"-5\"/><destination/></camera>" + body +
-                                                "</scene>"),
-                         readModelFile);
+            loadSceneXml(
+                dir.write("s.xml", "<scene><camera><origin z=\"-5\"/><destination/></camera>" + body + "</scene>"),
+                readModelFile);
         });
     };
     EXPECT_EQ(error("<materials><material name=\"m\" texture=\"none\"/></materials>"),

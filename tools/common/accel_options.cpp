@@ -9,24 +9,37 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
     BspSettings& bsp = settings.bsp;
     KdSettings& kd = settings.kd;
     app.add_option("--bsp-max-depth", bsp.maxDepth, "BSP: maximum depth")
-        ->check(numberIn(1, kMaxTreeDepth))->capture_default_str()->group(group);
+        ->check(numberIn(1, kMaxTreeDepth))
+        ->capture_default_str()
+        ->group(group);
     app.add_option("--bsp-min-prims", bsp.minPrimitives, "BSP: a node with at most this many primitives is a leaf")
-        ->check(numberIn(1, kMaxLeafPrimitives))->capture_default_str()->group(group);
+        ->check(numberIn(1, kMaxLeafPrimitives))
+        ->capture_default_str()
+        ->group(group);
     app.add_flag("--bsp-round-robin", bsp.roundRobin, "BSP: split X, Y, Z in turn instead of the longest axis")
         ->group(group);
     app.add_option("--kd-traversal-cost", kd.traversalCost, "KD: SAH cost of a traversal step")
-        ->check(positiveNumber())->capture_default_str()->group(group);
+        ->check(positiveNumber())
+        ->capture_default_str()
+        ->group(group);
     app.add_option("--kd-intersection-cost", kd.intersectionCost, "KD: SAH cost of an intersection test")
-        ->check(positiveNumber())->capture_default_str()->group(group);
+        ->check(positiveNumber())
+        ->capture_default_str()
+        ->group(group);
     app.add_option("--kd-empty-bonus", kd.emptyBonus, "KD: cost factor of splits cutting off empty space (1 = none)")
-        ->check(numberIn(0.0, 1.0))->capture_default_str()->group(group);
+        ->check(numberIn(0.0, 1.0))
+        ->capture_default_str()
+        ->group(group);
     app.add_option("--kd-max-depth", kd.maxDepth, "KD: maximum depth [default: 8 + 1.3 log2 N]")
-        ->check(numberIn(1, kMaxTreeDepth))->group(group);
+        ->check(numberIn(1, kMaxTreeDepth))
+        ->group(group);
     addNamedOption(app, "--kd-split", kd.splitMethod, kKdSplitMethodNames,
                    "KD: split search: sweep (Wald-Havran), sort (the thesis's) or sample")
         ->group(group);
     app.add_option("--kd-samples", kd.samples, "KD: candidate planes per axis for --kd-split sample")
-        ->check(numberIn(1, kMaxKdSamples))->capture_default_str()->group(group);
+        ->check(numberIn(1, kMaxKdSamples))
+        ->capture_default_str()
+        ->group(group);
 }
 
 }  // namespace rt::tool

@@ -15,7 +15,8 @@ std::optional<int> parseCommandLine(CLI::App& app, const std::string& toolName, 
     } catch (const CLI::ParseError& e) {
         // CLI11 checks required arguments and values before it looks at what is left over.
         const bool isError = e.get_exit_code() != int(CLI::ExitCodes::Success);
-        const int code = isError && !app.remaining().empty() ? app.exit(CLI::ExtrasError(app.remaining())) : app.exit(e);
+        const int code =
+            isError && !app.remaining().empty() ? app.exit(CLI::ExtrasError(app.remaining())) : app.exit(e);
         return code == 0 ? kExitOk : kExitBadInput;
     }
 }
@@ -32,8 +33,7 @@ CLI::Validator positiveNumber() {
 }
 
 CLI::Option* addThreadsOption(CLI::App& app, int& threads) {
-    return app.add_option("--threads", threads, "Threads (default 0: all cores)")
-        ->check(numberIn(0, kMaxThreads));
+    return app.add_option("--threads", threads, "Threads (default 0: all cores)")->check(numberIn(0, kMaxThreads));
 }
 
 }  // namespace rt::tool

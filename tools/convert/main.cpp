@@ -66,9 +66,9 @@ int main(int argc, char** argv) {
     app.add_option("input", o.input,
                    "Model file: .gltf, .glb, .obj, .3ds, .ply, .stl, .fbx, .dae, .raw, ...; - reads a glTF 2.0 model "
                    "(GLB or JSON) from standard input");
-    app.add_option("--generate", o.generate,
-                   "Instead of a model file, a test scene of the thesis: " +
-                       CLI::detail::join(rt::thesisSceneNames(), ", "));
+    app.add_option(
+        "--generate", o.generate,
+        "Instead of a model file, a test scene of the thesis: " + CLI::detail::join(rt::thesisSceneNames(), ", "));
     app.add_option("-o,--output", o.output,
                    "Scene file to write, .xml (RAW models go in a folder named after it), or - for standard "
                    "output with the geometry inline");

@@ -10,10 +10,10 @@
 #include "core/error.h"
 #include "image/heatmap_png.h"
 #include "image/image_output.h"
+#include "import/load_scene.h"
 #include "inspect/leaf_boxes_obj.h"
 #include "inspect/tree_dump.h"
 #include "inspect/tree_report.h"
-#include "import/load_scene.h"
 #include "tool.h"
 #include "version.h"
 
@@ -46,9 +46,7 @@ void checkOptions(const InspectOptions& o) {
 }
 
 // Whether something other than the report goes to standard output.
-bool dumpsToStdout(const InspectOptions& o) {
-    return o.leavesPath == "-" || (o.dumpFormat && o.dumpPath == "-");
-}
+bool dumpsToStdout(const InspectOptions& o) { return o.leavesPath == "-" || (o.dumpFormat && o.dumpPath == "-"); }
 
 void writeDumps(const InspectOptions& o, const InspectedTree& tree) {
     const std::string name = accelKindName(tree.report.settings.kind);
@@ -82,9 +80,9 @@ void writeHeatmaps(const InspectOptions& o, const Scene& scene, const std::vecto
     if (!shared.maximum) shared.maximum = maximum;
     for (std::size_t i = 0; i < trees.size(); ++i) {
         const TreeReport& report = trees[i].report;
-        shared.caption = report.stats.name +
-                         (o.heatmapRays == PixelRays::All ? ": steps + tests per pixel, all rays"
-                                                          : ": steps + tests per pixel, camera rays");  // drawn in capitals
+        shared.caption = report.stats.name + (o.heatmapRays == PixelRays::All
+                                                  ? ": steps + tests per pixel, all rays"
+                                                  : ": steps + tests per pixel, camera rays");  // drawn in capitals
         const std::string path = pathFor(o.heatmapPath, accelKindName(report.settings.kind), trees.size() > 1);
         writeHeatmapPng(path, renderHeatmap(costs[i], w, h, shared), std::string("rt-inspect ") + kVersion);
     }
@@ -103,8 +101,10 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
     if (o.rays) {
         const RenderSettings& p = o.picture;
         std::cout << "rays: " << p.width << "x" << p.height << ", " << p.pixelSamples << " per pixel, shadows "
-                  << (p.softShadows ? "soft" : p.shadows ? "on" : "off") << ", reflection depth " << p.reflectionDepth
-                  << (p.glossyReflections ? " (glossy)" : "");
+                  << (p.softShadows ? "soft"
+                      : p.shadows   ? "on"
+                                    : "off")
+                  << ", reflection depth " << p.reflectionDepth << (p.glossyReflections ? " (glossy)" : "");
         if (p.softShadows || p.glossyReflections) std::cout << ", " << p.distributedSamples << " rays per bundle";
         std::cout << "\n";
     }

@@ -16,18 +16,18 @@
 namespace rt::tool::inspect {
 
 struct InspectOptions {
-    std::string scenePath;             // "-" reads standard input
-    std::vector<AccelKind> trees;      // in the order they are reported
+    std::string scenePath;         // "-" reads standard input
+    std::vector<AccelKind> trees;  // in the order they are reported
     AccelSettings accel;
     bool json = false;
-    bool quiet = false;                // -q: no warnings on standard error
+    bool quiet = false;  // -q: no warnings on standard error
     bool rays = false;
-    RenderSettings picture;            // whose rays --rays traces (on picture.threads); its size is the heat map's
+    RenderSettings picture;  // whose rays --rays traces (on picture.threads); its size is the heat map's
     bool depthHistogram = false;
-    std::string leavesPath;            // --dump-leaves
+    std::string leavesPath;                    // --dump-leaves
     std::optional<TreeDumpFormat> dumpFormat;  // --dump dot|json; nullopt: no dump
     std::string dumpPath = "-";
-    TreeCut cut;                       // --max-depth and --leaves
+    TreeCut cut;  // --max-depth and --leaves
     std::string heatmapPath;
     PixelRays heatmapRays = PixelRays::Camera;  // --heatmap-rays camera|all
     HeatmapOptions heatmap;

@@ -3,8 +3,8 @@
 
 #include "accel_options.h"
 #include "command_line.h"
-#include "picture_options.h"
 #include "inspection.h"
+#include "picture_options.h"
 #include "tool.h"
 
 namespace {
@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> treeNames = rt::namesOf(rt::kAccelKindNames);
     treeNames.push_back("all");
     app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, or all (bsp and kd)")
-        ->check(CLI::IsMember(treeNames))->capture_default_str();
+        ->check(CLI::IsMember(treeNames))
+        ->capture_default_str();
     app.add_flag("--json", o.json, "Print the statistics as one JSON document");
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no warnings or notes on standard error (errors still are)");
     rt::tool::addThreadsOption(app, o.picture.threads);
@@ -48,9 +49,11 @@ int main(int argc, char** argv) {
     app.add_option_function<std::string>(
            "--dump", [&o](const std::string& name) { o.dumpFormat = rt::parseNamed(rt::kTreeDumpFormatNames, name); },
            "Write the tree structure: dot (Graphviz) or json")
-        ->check(CLI::IsMember(rt::namesOf(rt::kTreeDumpFormatNames)))->group(dumps);
+        ->check(CLI::IsMember(rt::namesOf(rt::kTreeDumpFormatNames)))
+        ->group(dumps);
     app.add_option("-f,--file", o.dumpPath, "Where --dump writes, - for standard output")
-        ->capture_default_str()->group(dumps);
+        ->capture_default_str()
+        ->group(dumps);
     app.add_option("--max-depth", maxDepth, "Dump the tree only down to this depth")->group(dumps);
     app.add_option("--heatmap", o.heatmapPath, "Write a PNG heat map of the camera rays' work")->group(dumps);
     addNamedOption(app, "--heatmap-rays", o.heatmapRays, rt::kPixelRaysNames,
@@ -59,7 +62,8 @@ int main(int argc, char** argv) {
     addNamedOption(app, "--heatmap-scale", o.heatmap.scale, rt::kHeatScaleNames, "Colour scale: linear or log")
         ->group(dumps);
     app.add_option("--heatmap-max", heatmapMax, "Work at the top of the colour bar [default: the largest]")
-        ->check(rt::tool::positiveNumber())->group(dumps);
+        ->check(rt::tool::positiveNumber())
+        ->group(dumps);
     rt::tool::addAccelOptions(app, o.accel);
 
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-inspect", argc, argv)) return *exitCode;

@@ -2,40 +2,50 @@
 // This file only declares the command line; runRender (render_command.cpp) does the work.
 #include <CLI/CLI.hpp>
 
-#include "progress.h"
-#include "render_command.h"
 #include "accel_options.h"
 #include "command_line.h"
 #include "picture_options.h"
+#include "progress.h"
+#include "render_command.h"
 #include "tool.h"
 
 namespace {
 
 using rt::AccelKind;
 using rt::tool::addNamedOption;
-using rt::tool::render::RenderOptions;
 using rt::tool::numberIn;
+using rt::tool::render::RenderOptions;
 
 void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Rendering options";
-    app.add_option("-o,--output", o.outputType,
-                   "Output type (default: -f's extension; neither -o nor -f: null)")
-        ->check(CLI::IsMember(rt::imageFormatNames()))->group(group);
+    app.add_option("-o,--output", o.outputType, "Output type (default: -f's extension; neither -o nor -f: null)")
+        ->check(CLI::IsMember(rt::imageFormatNames()))
+        ->group(group);
     app.add_option("-f,--file", o.outputPaths,
                    "Output file; - for standard output; several -f write each from one render")
-        ->allow_extra_args(false)->group(group);
+        ->allow_extra_args(false)
+        ->group(group);
     AccelKind& kind = o.accel.kind;  // the KD tree; the thesis's program used the naive list unless -B or -K
-    auto* bsp = app.add_flag_callback("-B,--bsp", [&kind] { kind = AccelKind::Bsp; }, "Use the BSP tree")->group(group);
-    auto* kd = app.add_flag_callback("-K,--kd", [&kind] { kind = AccelKind::Kd; }, "Use the KD tree")->group(group);
+    auto* bsp = app.add_flag_callback(
+                       "-B,--bsp", [&kind] { kind = AccelKind::Bsp; }, "Use the BSP tree")
+                    ->group(group);
+    auto* kd = app.add_flag_callback(
+                      "-K,--kd", [&kind] { kind = AccelKind::Kd; }, "Use the KD tree")
+                   ->group(group);
     bsp->excludes(kd);
     addNamedOption(app, "--accel", kind, rt::kAccelKindNames, "Ray-scene intersection: the naive list or a tree")
-        ->excludes(bsp)->excludes(kd)->group(group);
-    auto* region = app.add_option("--region", o.region,
-                                  "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")->group(group);
-    auto* tiles = app.add_option("--tiles", o.tiles, "A farm's grid of tiles, CxR (columns x rows), for --tile")
+        ->excludes(bsp)
+        ->excludes(kd)
         ->group(group);
+    auto* region =
+        app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
+            ->group(group);
+    auto* tiles =
+        app.add_option("--tiles", o.tiles, "A farm's grid of tiles, CxR (columns x rows), for --tile")->group(group);
     auto* tile = app.add_option("--tile", o.tile, "Render only tile I of the N of --tiles (I/N, from 0, row by row)")
-        ->needs(tiles)->excludes(region)->group(group);
+                     ->needs(tiles)
+                     ->excludes(region)
+                     ->group(group);
     tiles->needs(tile);
     app.add_flag("--skip-existing", o.skipExisting,
                  "Exit 0 at once if -f already holds this render, complete (read back: size, window, pixels)")
@@ -43,7 +53,8 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
     app.add_option("--seed", o.render.seed,
                    "Random seed of the samples: another seed, independent noise (default 0, always the same)")
-        ->capture_default_str()->group(group);
+        ->capture_default_str()
+        ->group(group);
     app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
 }
 
@@ -55,10 +66,12 @@ void addCameraOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--look-at", o.lookAt, "Camera destination X,Y,Z")->group(group);
     app.add_option("--up", o.up, "Camera up vector X,Y,Z")->group(group);
     app.add_option("--fov", o.fov, "Horizontal field of view in degrees (replaces f and zoom)")
-        ->check(CLI::Range(0.0, 180.0))->group(group);
+        ->check(CLI::Range(0.0, 180.0))
+        ->group(group);
     app.add_flag("--frame", o.frame, "Move the camera along its view to fit the scene's bounding sphere")->group(group);
     app.add_option("--orbit", o.orbit, "Render N frames around the look-at point to -f out_####.png")
-        ->check(numberIn(1, 1000000))->group(group);
+        ->check(numberIn(1, 1000000))
+        ->group(group);
     app.add_option("--frames", o.frames, "Render only frames A..B of --orbit (both included)")->group(group);
 }
 
@@ -72,24 +85,31 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
         ->group(group);
     app.add_option("--view", o.color.view, "OCIO view (default: the display's default, Standard)")->group(group);
     app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
-    addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")
-        ->group(group);
+    addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")->group(group);
     app.add_option("--alpha", o.alpha,
                    "Alpha channel (coverage): on or off (default: on for PNG, EXR and TGA; EXR premultiplied, "
                    "PNG and TGA straight)")
-        ->check(CLI::IsMember({"on", "off"}))->group(group);
+        ->check(CLI::IsMember({"on", "off"}))
+        ->group(group);
     app.add_option("--aov", o.aovs,
                    "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, or all")
         ->group(group);
-    app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")->check(CLI::IsMember(rt::kPngBits))
-        ->capture_default_str()->group(group);
+    app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")
+        ->check(CLI::IsMember(rt::kPngBits))
+        ->capture_default_str()
+        ->group(group);
     app.add_option("--tiff-bits", o.tiffBits, "TIFF bits per channel: 8 or 16 (display-referred), 32 (float, linear)")
-        ->check(CLI::IsMember(rt::kTiffBits))->capture_default_str()->group(group);
-    app.add_option("--jpeg-quality", o.jpegQuality, "JPEG quality, 1-100")->check(numberIn(1, 100))
-        ->capture_default_str()->group(group);
+        ->check(CLI::IsMember(rt::kTiffBits))
+        ->capture_default_str()
+        ->group(group);
+    app.add_option("--jpeg-quality", o.jpegQuality, "JPEG quality, 1-100")
+        ->check(numberIn(1, 100))
+        ->capture_default_str()
+        ->group(group);
     app.add_option("--exr-compression", o.exrCompression, "EXR compression")
         ->check(CLI::IsMember(std::vector<std::string>(rt::kExrCompressions.begin(), rt::kExrCompressions.end())))
-        ->capture_default_str()->group(group);
+        ->capture_default_str()
+        ->group(group);
 }
 
 void addOtherOptions(CLI::App& app, RenderOptions& o) {
@@ -100,7 +120,8 @@ void addOtherOptions(CLI::App& app, RenderOptions& o) {
                    "(the bar on a terminal, else lines)")
         ->group(group);
     app.add_flag("-b,--batch-stats", o.statsLine,
-                 "Print 'preprocessing render objects lights nodes tests-per-ray' on standard output")->group(group);
+                 "Print 'preprocessing render objects lights nodes tests-per-ray' on standard output")
+        ->group(group);
     app.add_flag("-p,--preprocess-only", o.preprocessOnly, "Build the tree and render nothing (implies -o null)")
         ->group(group);
     app.add_option("--stats-json", o.statsJson, "Write every statistic as JSON to FILE (- for standard output)")
@@ -113,7 +134,8 @@ int main(int argc, char** argv) {
     CLI::App app{"Renders a scene by ray tracing (thesis appendix B)."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-render"));
     RenderOptions options;
-    app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")->required();
+    app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")
+        ->required();
     rt::tool::addPictureOptions(app, options.render);
     addRenderingOptions(app, options);
     addCameraOptions(app, options);

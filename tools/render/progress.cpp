@@ -20,8 +20,7 @@ ProgressMode progressMode(ProgressMode requested, bool quiet) {
     return isatty(STDERR_FILENO) ? ProgressMode::Bar : ProgressMode::Lines;
 }
 
-Progress::Progress(ProgressMode mode)
-    : mode_(mode), start_(std::chrono::steady_clock::now()), lastOutput_(start_) {}
+Progress::Progress(ProgressMode mode) : mode_(mode), start_(std::chrono::steady_clock::now()), lastOutput_(start_) {}
 
 Progress::~Progress() {
     if (barDrawn_) std::fputc('\n', stderr);

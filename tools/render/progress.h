@@ -21,9 +21,9 @@ enum class ProgressMode {
     Auto,  // what --progress asks for by default: progressMode() makes it Bar or Lines
 };
 inline constexpr NamedValues<ProgressMode, 4> kProgressModeNames{{{"auto", ProgressMode::Auto},
-                                                                {"bar", ProgressMode::Bar},
-                                                                {"lines", ProgressMode::Lines},
-                                                                {"none", ProgressMode::None}}};
+                                                                  {"bar", ProgressMode::Bar},
+                                                                  {"lines", ProgressMode::Lines},
+                                                                  {"none", ProgressMode::None}}};
 
 // The mode to show: auto is the bar on a terminal and lines otherwise; quiet (-q) is none.
 ProgressMode progressMode(ProgressMode requested, bool quiet);

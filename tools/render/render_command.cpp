@@ -10,9 +10,9 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "image/image_check.h"
 #include "image/texture_files.h"
 #include "import/load_scene.h"
-#include "image/image_check.h"
 #include "progress.h"
 #include "render/renderer.h"
 #include "render/tiles.h"
@@ -24,8 +24,7 @@ namespace rt::tool::render {
 PixelWindow parseRegion(const std::string& text) {
     PixelWindow w;
     int used = -1;
-    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%n", &w.x0, &w.y0, &w.x1, &w.y1, &used) != 4 ||
-        used != int(text.size()))
+    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%n", &w.x0, &w.y0, &w.x1, &w.y1, &used) != 4 || used != int(text.size()))
         throw InputError("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
     return w;
 }
@@ -45,7 +44,8 @@ FrameRange parseFrames(const std::optional<std::string>& frames, int orbit) {
     FrameRange r;
     int used = -1;
     const int fields = std::sscanf(frames->c_str(), "%d..%d%n", &r.first, &r.last, &used);
-    if (fields == 1 && std::to_string(r.first) == *frames) r.last = r.first;  // one frame: --frames 7
+    if (fields == 1 && std::to_string(r.first) == *frames)
+        r.last = r.first;  // one frame: --frames 7
     else if (fields != 2 || used != int(frames->size()))
         throw InputError("--frames: expected A..B (frame numbers, both included), got '" + *frames + "'");
     if (r.first < 0 || r.last < r.first || r.last >= orbit)
@@ -170,14 +170,16 @@ Scene loadWithCamera(const RenderOptions& o) {
 bool outputIsComplete(const RenderOptions& o, const ImageOutputSettings& output, ProgressMode progress) {
     if (output.path == "-") return false;
     const std::string why = whyNotCompleteImage(output.path, o.render.width, o.render.height, o.render.window());
-    if (why.empty()) announce(progress, output.path + " is complete: nothing to render (--skip-existing)");
-    else if (why != "missing") announce(progress, "rendering " + output.path + " again: " + why);
+    if (why.empty())
+        announce(progress, output.path + " is complete: nothing to render (--skip-existing)");
+    else if (why != "missing")
+        announce(progress, "rendering " + output.path + " again: " + why);
     return why.empty();
 }
 
 // --skip-existing on a run of one picture (one frame): every file it writes is already complete.
-bool outputsComplete(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs,
-                     const FrameRange& frames, ProgressMode progress) {
+bool outputsComplete(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs, const FrameRange& frames,
+                     ProgressMode progress) {
     if (!o.skipExisting || frames.first != frames.last) return false;
     bool any = false;
     for (ImageOutputSettings output : outputs) {
@@ -222,8 +224,8 @@ std::string outputNote(const RenderOptions& o, const ImageOutputSettings& output
 
 // Renders one picture (a turntable's frame `frame`) once and writes every output of it.
 void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& accel, const TreeReport& tree,
-                 const ImageTextures& images, const std::vector<ImageOutputSettings>& outputs, int frame, ProgressMode progress,
-                 RenderStats& stats) {
+                 const ImageTextures& images, const std::vector<ImageOutputSettings>& outputs, int frame,
+                 ProgressMode progress, RenderStats& stats) {
     std::vector<ImageOutputSettings> frameOutputs = outputs;
     for (ImageOutputSettings& out : frameOutputs) out.path = framePath(out.path, frame);
     if (!o.preprocessOnly) {
@@ -253,7 +255,8 @@ int runRender(RenderOptions o) {
     validate(o.render);
     const FrameRange frames = parseFrames(o.frames, o.orbit);
     const std::vector<ImageOutputSettings> outputs = outputSettings(o);
-    o.render.aovs = std::any_of(outputs.begin(), outputs.end(), [](const ImageOutputSettings& s) { return !s.aovs.empty(); });
+    o.render.aovs =
+        std::any_of(outputs.begin(), outputs.end(), [](const ImageOutputSettings& s) { return !s.aovs.empty(); });
     const ProgressMode progress = progressMode(o.progress, o.quiet);
     if (outputsComplete(o, outputs, frames, progress)) return 0;
     prepareOutputs(o, outputs, frames.first);

@@ -9,35 +9,35 @@
 #include "accel/settings.h"
 #include "core/vec3.h"
 #include "image/image_output.h"
-#include "progress.h"
 #include "import/import.h"
+#include "progress.h"
 #include "render/render_settings.h"
 
 namespace rt::tool::render {
 
 struct RenderOptions {
-    std::string scenePath;                // a file, or "-" for standard input
-    std::optional<std::string> outputType;  // -o: null png exr tga text; else from -f's extension
-    std::vector<std::string> outputPaths;  // -f, any number: one render, each file written from it
+    std::string scenePath;                        // a file, or "-" for standard input
+    std::optional<std::string> outputType;        // -o: null png exr tga text; else from -f's extension
+    std::vector<std::string> outputPaths;         // -f, any number: one render, each file written from it
     ExrPixelType exrPixels = ExrPixelType::Half;  // --exr-pixels half|float
-    int pngBits = 8;                      // --png-bits 8|16
-    int tiffBits = 8;                     // --tiff-bits 8|16|32
-    int jpegQuality = 90;                 // --jpeg-quality 1-100
-    std::string exrCompression = "zip";   // --exr-compression
+    int pngBits = 8;                              // --png-bits 8|16
+    int tiffBits = 8;                             // --tiff-bits 8|16|32
+    int jpegQuality = 90;                         // --jpeg-quality 1-100
+    std::string exrCompression = "zip";           // --exr-compression
     ColorSettings color;
     RenderSettings render;
-    AccelSettings accel;                  // kind Kd unless -B or --accel says otherwise
-    std::optional<std::string> region;    // --region x0,y0,x1,y1 (x1, y1 exclusive)
-    std::optional<std::string> tiles;     // --tiles CxR: the farm's grid of tiles
-    std::optional<std::string> tile;      // --tile I/N: render tile I of the N = C x R
-    bool skipExisting = false;            // --skip-existing: a complete output exits 0 at once
-    bool quiet = false;                   // -q (implies --progress none)
+    AccelSettings accel;                         // kind Kd unless -B or --accel says otherwise
+    std::optional<std::string> region;           // --region x0,y0,x1,y1 (x1, y1 exclusive)
+    std::optional<std::string> tiles;            // --tiles CxR: the farm's grid of tiles
+    std::optional<std::string> tile;             // --tile I/N: render tile I of the N = C x R
+    bool skipExisting = false;                   // --skip-existing: a complete output exits 0 at once
+    bool quiet = false;                          // -q (implies --progress none)
     ProgressMode progress = ProgressMode::Auto;  // --progress auto|bar|lines|none
-    bool statsLine = false;               // -b
-    bool preprocessOnly = false;          // -p
-    std::optional<std::string> statsJson;  // --stats-json FILE ("-" is standard output)
-    std::optional<std::string> alpha;      // --alpha on|off; default on where the format has alpha
-    std::optional<std::string> aovs;       // --aov LIST: AOV layers in the EXR (render/aov.h)
+    bool statsLine = false;                      // -b
+    bool preprocessOnly = false;                 // -p
+    std::optional<std::string> statsJson;        // --stats-json FILE ("-" is standard output)
+    std::optional<std::string> alpha;            // --alpha on|off; default on where the format has alpha
+    std::optional<std::string> aovs;             // --aov LIST: AOV layers in the EXR (render/aov.h)
     // The camera: --camera NAME|INDEX, then --look-from, --look-at, --up (X,Y,Z), --fov, --frame.
     std::optional<std::string> camera;
     std::optional<std::string> lookFrom, lookAt, up;
@@ -45,7 +45,7 @@ struct RenderOptions {
     bool frame = false;
     int orbit = 0;                      // --orbit N: N frames around the look-at point; 0 is one picture
     std::optional<std::string> frames;  // --frames A..B: only frames A to B (inclusive) of the orbit
-    ImportOptions import;                 // --flat, for a model file read directly
+    ImportOptions import;               // --flat, for a model file read directly
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.

@@ -19,9 +19,10 @@ std::string format(const char* fmt, auto... args) {
 std::string nonFiniteWarning(const RenderStats& s) {
     const NonFiniteSamples& n = s.counters.nonFinite;
     if (!n.count) return {};
-    return format("rt-render: warning: %llu non-finite (NaN or infinite) samples, first at pixel (%d, %d); "
-                  "written as black (0, 0, 0)\n",
-                  static_cast<unsigned long long>(n.count), n.firstX, n.firstY);
+    return format(
+        "rt-render: warning: %llu non-finite (NaN or infinite) samples, first at pixel (%d, %d); "
+        "written as black (0, 0, 0)\n",
+        static_cast<unsigned long long>(n.count), n.firstX, n.firstY);
 }
 
 std::string thesisStatsLine(const RenderStats& s) {
@@ -59,8 +60,7 @@ void writeStatsJson(std::ostream& out, const SceneSummary& scene, const RenderSe
     json.endObject();
 }
 
-std::string statsSummary(const RenderSettings& settings, const AccelStats& accel, const RenderStats& s,
-                         bool rendered) {
+std::string statsSummary(const RenderSettings& settings, const AccelStats& accel, const RenderStats& s, bool rendered) {
     std::string text = format("%llu objects, %llu lights; %s with %llu nodes built in %.3f s\n",
                               static_cast<unsigned long long>(s.objects), static_cast<unsigned long long>(s.lights),
                               accel.name.c_str(), static_cast<unsigned long long>(s.treeNodes), s.preprocessSeconds);
@@ -69,8 +69,8 @@ std::string statsSummary(const RenderSettings& settings, const AccelStats& accel
     const PixelWindow w = settings.window();
     text += format("rendered %dx%d pixels in %.3f s on %d thread%s: %llu camera, %llu shadow, %llu reflection rays\n",
                    w.width(), w.height(), s.renderSeconds, s.threads, s.threads == 1 ? "" : "s",
-                   static_cast<unsigned long long>(c.camera.rays),
-                   static_cast<unsigned long long>(c.shadow.rays), static_cast<unsigned long long>(c.reflection.rays));
+                   static_cast<unsigned long long>(c.camera.rays), static_cast<unsigned long long>(c.shadow.rays),
+                   static_cast<unsigned long long>(c.reflection.rays));
     text += format("%.2f M rays/s, %.2f intersection tests per ray\n", s.raysPerSecond() / 1e6, s.testsPerRay());
     return text;
 }
