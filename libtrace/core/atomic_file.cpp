@@ -10,6 +10,7 @@
 #include <climits>
 #include <cstdint>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -24,6 +25,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace rt {
 namespace {
@@ -53,11 +55,9 @@ std::optional<pid_t> temporaryOwner(const std::string& name, const fs::path& tar
     if (name.size() <= prefix.size() + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix))
         return std::nullopt;
     const std::string id = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());  // "PID-N"
-    long pid = 0, n = 0;
-    int used = -1;
-    if (std::sscanf(id.c_str(), "%ld-%ld%n", &pid, &n, &used) != 2 || used != int(id.size()) || pid <= 0)
-        return std::nullopt;
-    return pid_t(pid);
+    const auto pidAndNumber = parseSeparated<long, 2>(id, "-");
+    if (!pidAndNumber || (*pidAndNumber)[0] <= 0) return std::nullopt;
+    return pid_t((*pidAndNumber)[0]);
 }
 
 // Removes a temporary file or folder and everything in it, ignoring errors (it may not exist).
@@ -136,8 +136,46 @@ void removeFolderInHandler(const char* folder) {
     for (int pass = 0; pass < 3 && ::rmdir(folder) != 0 && errno == ENOTEMPTY; ++pass) removeFilesInHandler(folder);
 }
 
+// ---- The work under way, said when a signal ends the process -----------------------------
+std::atomic<const char*> workWho{nullptr}, workUnit{nullptr};
+std::atomic<std::uint64_t> workDone{0}, workTotal{0};
+static_assert(std::atomic<std::uint64_t>::is_always_lock_free, "the signal handler reads it");
+
+// Async-signal-safe: digits by hand, one write(2).
+void appendNumber(char*& at, std::uint64_t n) {
+    char digits[20];
+    int count = 0;
+    do digits[count++] = char('0' + n % 10);
+    while ((n /= 10) > 0);
+    while (count > 0) *at++ = digits[--count];
+}
+
+void appendText(char*& at, const char* text) {
+    while (*text) *at++ = *text++;
+}
+
+void sayWorkInProgress(int signal) {
+    const char *who = workWho.load(), *unit = workUnit.load();
+    const std::uint64_t total = workTotal.load(), done = std::min(workDone.load(), total);
+    if (!who || total == 0) return;
+    char line[256];
+    char* at = line;
+    appendText(at, who);
+    appendText(at, signal == SIGINT ? ": stopped by SIGINT at " : ": stopped by SIGTERM at ");
+    appendNumber(at, done);
+    appendText(at, " of ");
+    appendNumber(at, total);
+    appendText(at, " ");
+    appendText(at, unit);
+    appendText(at, " (");
+    appendNumber(at, done * 100 / total);
+    appendText(at, "%); its output is not written\n");
+    [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, line, std::size_t(at - line));
+}
+
 extern "C" void removeLiveTemporariesAndDie(int signal) {
     const int savedErrno = errno;
+    sayWorkInProgress(signal);
     for (LiveSlot& s : liveTemporaries) {
         const LiveKind kind = s.kind.load();
         if (kind == LiveKind::File) ::unlink(s.path);
@@ -263,6 +301,14 @@ void putTheOldFolderBack(const fs::path& temp, const fs::path& folder) noexcept 
 }
 
 }  // namespace
+
+void noteWorkInProgress(const char* who, const char* unit, std::uint64_t done, std::uint64_t total) {
+    workTotal.store(0);  // nothing is said while the fields change
+    workWho.store(who);
+    workUnit.store(unit);
+    workDone.store(done);
+    workTotal.store(total);
+}
 
 void removeTemporariesOnSignals() {
     struct sigaction action {};

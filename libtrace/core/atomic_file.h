@@ -15,6 +15,7 @@
 // before the rename, so tests/cli/render_atomic.sh can kill a process in the middle of a write.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -25,6 +26,12 @@ namespace rt {
 // writing, then end it by the same signal (default action: the exit status stays 128+N).
 // A signal the process started with ignored stays ignored.
 void removeTemporariesOnSignals();
+
+// The work under way, which those handlers say on standard error before the process ends, so
+// that a log shows where a pre-empted or timed-out task stopped:
+//   rt-render: stopped by SIGTERM at 1536 of 6144 samples (25%); its output is not written
+// `who` and `unit` must be string literals (the handler reads them). total 0: nothing under way.
+void noteWorkInProgress(const char* who, const char* unit, std::uint64_t done, std::uint64_t total);
 
 // Throws rt::InputError "PATH: is a directory" if `path` names a folder (or ends in '/').
 void checkNotDirectory(const std::string& path);

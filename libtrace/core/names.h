@@ -37,6 +37,9 @@ const char* nameOf(const NamedValues<E, N>& table, E value) {
     return "?";
 }
 
+// A switch given by name (rt-render --alpha on|off).
+inline constexpr NamedValues<bool, 2> kOnOffNames{{{"on", true}, {"off", false}}};
+
 // Every name, in the table's order.
 template <class E, std::size_t N>
 std::vector<std::string> namesOf(const NamedValues<E, N>& table) {

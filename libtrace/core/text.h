@@ -1,8 +1,13 @@
 // Small text helpers shared by the layers: ASCII lower case, for the case-insensitive names
-// of formats, extensions and file names.
+// of formats, extensions and file names; the numbers of option values such as "X,Y,Z".
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace rt {
 
@@ -11,5 +16,23 @@ std::string lowerCase(std::string text);
 
 // The extension of a path in lower case, with its dot (".gltf"); empty if there is none.
 std::string lowerCaseExtension(const std::string& path);
+
+// `text` as exactly N numbers of type T, each followed by `separator` but the last: the one
+// grammar of option values such as "1,2.5,3" (X,Y,Z), "4x4" (CxR), "0..7" (A..B), "3/16" (I/N).
+// Nothing if it is anything else: a missing, empty or extra field, a space or '+', a number T
+// cannot hold. (from_chars: no locale, and the whole field must be the number.)
+template <class T, std::size_t N>
+std::optional<std::array<T, N>> parseSeparated(std::string_view text, std::string_view separator) {
+    std::array<T, N> values{};
+    for (std::size_t i = 0; i < N; ++i) {
+        const std::size_t end = i + 1 < N ? text.find(separator) : text.size();
+        if (end == std::string_view::npos) return std::nullopt;
+        const char* last = text.data() + end;
+        const auto [stop, error] = std::from_chars(text.data(), last, values[i]);
+        if (end == 0 || error != std::errc() || stop != last) return std::nullopt;
+        text.remove_prefix(std::min(text.size(), end + separator.size()));
+    }
+    return values;
+}
 
 }  // namespace rt

@@ -58,7 +58,7 @@ struct TextureFiles::Impl {
 };
 
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes)
-    : impl_(std::make_unique<Impl>()) {
+    : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
     impl_->system = OIIO::TextureSystem::create(false);
     impl_->system->attribute("max_memory_MB", cacheMegabytes);
     impl_->system->attribute("automip", 1);

@@ -19,6 +19,7 @@
 
 #include "core/names.h"
 #include "scene/crease_normals.h"
+#include "scene/parameters.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -41,6 +42,9 @@ struct ImportOptions {
     // `flat` (rt-convert --flat): then they keep their facets.
     bool flat = false;
     double creaseDegrees = kDefaultCreaseDegrees;
+    // rt-render --set: fills $NAME in an XML scene's attribute values (scene/parameters.h);
+    // a model file has none, so parameters given for one are an error.
+    SceneParameters parameters;
 };
 
 // ImportOptions::camera value (rt-convert --camera auto) that ignores the file's cameras.

@@ -1,11 +1,19 @@
 #include "import/load_scene.h"
 
+#include "core/error.h"
 #include "core/text.h"
 #include "import/model_file.h"
 #include "scene/xml_loader.h"
 
 namespace rt {
 namespace {
+
+// --set fills $NAME in XML scenes only: given for a model file, it would silently do nothing.
+void requireNoParameters(const std::string& path, const ImportOptions& options) {
+    if (!options.parameters.empty())
+        throw InputError(path + ": --set " + options.parameters.begin()->first +
+                         ": parameters fill $NAME in XML scenes, and this is a model file");
+}
 
 Scene flattenedScene(ImportResult imported) {
     Scene scene = std::move(imported.scene);
@@ -23,15 +31,20 @@ Scene withCamera(Scene scene, const ImportOptions& options) {
 // Standard input holds an XML scene or a glTF 2.0 model (GLB or JSON), told apart by content.
 Scene loadStandardInput(const ImportOptions& options) {
     const std::string bytes = readStandardInput();
-    if (looksLikeGltf(bytes)) return flattenedScene(importGltfFromStandardInput(bytes, options));
-    return withCamera(loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile), options);
+    if (looksLikeGltf(bytes)) {
+        requireNoParameters("<stdin>", options);
+        return flattenedScene(importGltfFromStandardInput(bytes, options));
+    }
+    return withCamera(loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile, options.parameters), options);
 }
 
 }  // namespace
 
 Scene loadScene(const std::string& path, const ImportOptions& options) {
     if (path == "-") return loadStandardInput(options);
-    if (lowerCaseExtension(path) == ".xml") return withCamera(loadSceneXml(path, readModelFile), options);
+    if (lowerCaseExtension(path) == ".xml")
+        return withCamera(loadSceneXml(path, readModelFile, options.parameters), options);
+    requireNoParameters(path, options);
     return flattenedScene(importScene(path, options));
 }
 

@@ -17,17 +17,21 @@ Color checker(const Texture& t, const SurfacePoint& s) {
 
 }  // namespace
 
-std::array<float, 2> transformUv(const Texture& t, Real u, Real v) {
-    const float su = float(u) * t.scale[0], sv = float(v) * t.scale[1];
-    const float c = std::cos(t.rotation), s = std::sin(t.rotation);
-    return {c * su + s * sv + t.offset[0], -s * su + c * sv + t.offset[1]};
+UvTransform::UvTransform(const Texture& t)
+    : scale_(t.scale), offset_(t.offset), cos_(std::cos(t.rotation)), sin_(std::sin(t.rotation)) {}
+
+std::array<float, 2> UvTransform::operator()(Real u, Real v) const {
+    const float su = float(u) * scale_[0], sv = float(v) * scale_[1];
+    return {cos_ * su + sin_ * sv + offset_[0], -sin_ * su + cos_ * sv + offset_[1]};
 }
+
+ImageTextures::ImageTextures(const Scene& scene) : transforms_(scene.textures.begin(), scene.textures.end()) {}
 
 Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images) {
     const Texture& t = scene.textures[index];
     if (t.kind == Texture::Kind::Checker) return checker(t, s);
     if (!images) return {1, 1, 1};
-    const std::array<float, 2> uv = transformUv(t, s.u, s.v);
+    const std::array<float, 2> uv = images->uvTransform(index)(s.u, s.v);
     return images->lookup(index, uv[0], uv[1]);
 }
 

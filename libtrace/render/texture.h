@@ -6,23 +6,37 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "render/surface.h"
 #include "scene/scene.h"
 
 namespace rt {
 
-class ImageTextures {
+// A texture's coordinate transform, as KHR_texture_transform defines it: scaled, then rotated,
+// then offset. The rotation's cosine and sine are computed once per texture, not per hit.
+class UvTransform {
 public:
-    virtual ~ImageTextures() = default;
-    // Linear RGB of the scene's image texture `index` at (s, t), texture coordinates already
-    // transformed (transformUv), with the texture's wrap modes. Thread-safe.
-    virtual Color lookup(std::uint32_t index, float s, float t) const = 0;
+    explicit UvTransform(const Texture& t);
+    std::array<float, 2> operator()(Real u, Real v) const;
+
+private:
+    std::array<float, 2> scale_, offset_;
+    float cos_, sin_;
 };
 
-// Texture coordinates after the texture's transform, as KHR_texture_transform defines it:
-// scaled, then rotated, then offset.
-std::array<float, 2> transformUv(const Texture& t, Real u, Real v);
+class ImageTextures {
+public:
+    explicit ImageTextures(const Scene& scene);  // takes the transforms of the scene's textures
+    virtual ~ImageTextures() = default;
+    // Linear RGB of the scene's image texture `index` at (s, t), texture coordinates already
+    // transformed (uvTransform), with the texture's wrap modes. Thread-safe.
+    virtual Color lookup(std::uint32_t index, float s, float t) const = 0;
+    const UvTransform& uvTransform(std::uint32_t index) const { return transforms_[index]; }
+
+private:
+    std::vector<UvTransform> transforms_;
+};
 
 // The colour of texture `index` of the scene at the surface point.
 Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);

@@ -66,8 +66,12 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
         Hit hit;
         const bool seen = accel_.intersect(ray, kInfinity, hit, counters.camera);
         hits += seen;
-        if (aovs && seen) addHit(*aovs, ray, hit, i == 0);
-        const Color sample = seen ? shade(ray, hit, 0, false, rng, counters) : scene_.background;
+        Color sample = scene_.background;
+        if (seen) {  // the AOVs take the point, normal and colour the shading uses
+            const SurfacePoint surface = surfaceAt(scene_.primitives, ray, hit);
+            if (aovs) addHit(*aovs, surface, hit, i == 0);
+            sample = shade(ray, hit, surface, 0, false, rng, counters);
+        }
         if (isFinite(sample))
             sum += sample;
         else
@@ -78,18 +82,18 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
     return n == 1 ? sum : sum * (1.0f / float(n));
 }
 
-// Sums what a camera ray that hit shows into the pixel's AOVs; average() divides.
-void Tracer::addHit(PixelAovs& a, const Ray& ray, const Hit& hit, bool first) const {
-    const Vec3 p = ray.at(hit.t);
-    const Vec3 ng = scene_.primitives.normal(hit.prim, p);
-    const Vec3 n = dot(ng, ray.direction) > 0 ? -ng : ng;  // as shade() lights it: facing the ray
+// Sums what a camera ray that hit shows into the pixel's AOVs; average() divides. N and the
+// albedo are what shade() lights with: the shading normal and the colour with its vertex
+// colour and texture; Ng is the primitive's own normal, not turned to the ray.
+void Tracer::addHit(PixelAovs& a, const SurfacePoint& s, const Hit& hit, bool first) const {
+    const Vec3 ng = scene_.primitives.normal(hit.prim, s.point);
     for (int c = 0; c < 3; ++c) {
-        a.p[c] += float(p[c]);
-        a.n[c] += float(n[c]);
+        a.p[c] += float(s.point[c]);
+        a.n[c] += float(s.shadingNormal[c]);
         a.ng[c] += float(ng[c]);
     }
     a.z += float(hit.t);
-    a.albedo += materialOf(scene_, hit.prim).color;
+    a.albedo += surfaceColor(materialOf(scene_, hit.prim), s);
     if (!first) return;
     a.material = scene_.primitives.material(hit.prim);
     a.primitive = hit.prim;
@@ -116,12 +120,11 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
     Hit hit;
     RayCounters& work = depth == 0 ? counters.camera : counters.reflection;
     if (!accel_.intersect(ray, kInfinity, hit, work)) return scene_.background;
-    return shade(ray, hit, depth, inBundle, rng, counters);
+    return shade(ray, hit, surfaceAt(scene_.primitives, ray, hit), depth, inBundle, rng, counters);
 }
 
-Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
+Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                     RenderCounters& counters) const {
-    const SurfacePoint s = surfaceAt(scene_.primitives, ray, hit);
     const Material& m = materialOf(scene_, hit.prim);
     const Color color = surfaceColor(m, s);
     const Vec3 toViewer = -ray.direction;

@@ -44,13 +44,14 @@ public:
     Real epsilon() const { return epsilon_; }
 
 private:
-    void addHit(PixelAovs& aovs, const Ray& ray, const Hit& hit, bool first) const;
+    void addHit(PixelAovs& aovs, const SurfacePoint& s, const Hit& hit, bool first) const;
     static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
                         const RenderCounters& after);
     // The material's colour at the surface (vertex colour and texture applied), and what it emits.
     Color surfaceColor(const Material& m, const SurfacePoint& s) const;
     Color emitted(const Material& m, const SurfacePoint& s) const;
-    Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
+    // The colour at `s`, the surface of `hit` (surfaceAt).
+    Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
     // Fraction of `light` seen from the surface (1 without shadows).
     float visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,

@@ -466,26 +466,26 @@ std::uint32_t SceneBuilder::materialOf(const XmlElement& e) {
 }
 
 Scene loadScene(std::string xml, const std::string& name, const std::string& baseDir,
-                const ModelFileReader& readModelFile) {
-    const XmlFile file(std::move(xml), name);
+                const ModelFileReader& readModelFile, const SceneParameters& parameters) {
+    const XmlFile file(std::move(xml), name, parameters);
     return SceneBuilder(file, baseDir, readModelFile).build();
 }
 
 }  // namespace
 
-Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile) {
+Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile, const SceneParameters& parameters) {
     if (path == "-") {
         std::ostringstream text;
         text << std::cin.rdbuf();
-        return loadScene(text.str(), "<stdin>", ".", readModelFile);
+        return loadScene(text.str(), "<stdin>", ".", readModelFile, parameters);
     }
     const std::string folder = std::filesystem::path(path).parent_path().string();
-    return loadScene(readInputFile(path), path, folder.empty() ? "." : folder, readModelFile);
+    return loadScene(readInputFile(path), path, folder.empty() ? "." : folder, readModelFile, parameters);
 }
 
 Scene loadSceneXmlFromString(const std::string& xml, const std::string& name, const std::string& baseDir,
-                             const ModelFileReader& readModelFile) {
-    return loadScene(xml, name, baseDir, readModelFile);
+                             const ModelFileReader& readModelFile, const SceneParameters& parameters) {
+    return loadScene(xml, name, baseDir, readModelFile, parameters);
 }
 
 }  // namespace rt

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scene/model_file.h"
+#include "scene/parameters.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -13,10 +14,13 @@ namespace rt {
 // The returned scene is flattened: scene.primitives holds the world-space geometry.
 // <model> files are read with `readModelFile`: the default reads RAW only; rt::loadScene
 // (import/load_scene.h) passes the import layer's reader, which reads 3ds too.
-Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile = readRawModelFileOnly);
+// `parameters` fill $NAME, ${NAME} and ${NAME:-default} in attribute values (scene/parameters.h).
+Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile = readRawModelFileOnly,
+                   const SceneParameters& parameters = {});
 
 // The same from XML text; `name` is used in messages, `baseDir` resolves model paths.
 Scene loadSceneXmlFromString(const std::string& xml, const std::string& name, const std::string& baseDir,
-                             const ModelFileReader& readModelFile = readRawModelFileOnly);
+                             const ModelFileReader& readModelFile = readRawModelFileOnly,
+                             const SceneParameters& parameters = {});
 
 }  // namespace rt

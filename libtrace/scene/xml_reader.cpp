@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 #include "core/error.h"
 
@@ -23,7 +24,8 @@ bool isListed(std::string_view name, std::initializer_list<std::string_view> lis
 
 }  // namespace
 
-XmlFile::XmlFile(std::string text, std::string name) : text_(std::move(text)), name_(std::move(name)) {
+XmlFile::XmlFile(std::string text, std::string name, const SceneParameters& parameters)
+    : text_(std::move(text)), name_(std::move(name)) {
     lineStarts_.push_back(0);
     for (std::size_t i = 0; i < text_.size(); ++i)
         if (text_[i] == '\n') lineStarts_.push_back(i + 1);
@@ -33,6 +35,20 @@ XmlFile::XmlFile(std::string text, std::string name) : text_(std::move(text)), n
         doc_.load_buffer_inplace(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!result)
         throw inputErrorAt(name_, lineAt(result.offset), std::string("malformed XML: ") + result.description());
+    substitute(doc_, parameters);
+}
+
+void XmlFile::substitute(pugi::xml_node node, const SceneParameters& parameters) {
+    for (pugi::xml_attribute a : node.attributes()) {
+        if (!std::strchr(a.value(), '$')) continue;
+        std::string missing;
+        const std::optional<std::string> value = substituteParameters(a.value(), parameters, missing);
+        if (!value)
+            failAt(node, "attribute '" + std::string(a.name()) + "': parameter $" + missing +
+                             " has no value (give --set " + missing + "=VALUE, or write ${" + missing + ":-default})");
+        a.set_value(value->c_str());
+    }
+    for (pugi::xml_node child : node.children()) substitute(child, parameters);
 }
 
 int XmlFile::lineAt(std::ptrdiff_t offset) const {

@@ -13,14 +13,16 @@
 
 #include "core/color.h"
 #include "core/vec3.h"
+#include "scene/parameters.h"
 
 namespace rt {
 
 // A parsed XML text and the line each of its bytes is on.
 class XmlFile {
 public:
-    // Parses `text`; throws rt::InputError "name:line: what" for malformed XML.
-    XmlFile(std::string text, std::string name);
+    // Parses `text` and fills in the parameters of its attribute values (scene/parameters.h);
+    // throws rt::InputError "name:line: what" for malformed XML or a parameter without a value.
+    XmlFile(std::string text, std::string name, const SceneParameters& parameters = {});
     XmlFile(const XmlFile&) = delete;
     XmlFile& operator=(const XmlFile&) = delete;
 
@@ -31,6 +33,8 @@ public:
     [[noreturn]] void failAt(pugi::xml_node node, const std::string& message) const;
 
 private:
+    void substitute(pugi::xml_node node, const SceneParameters& parameters);
+
     std::string text_;
     std::string name_;
     std::vector<std::size_t> lineStarts_;

@@ -60,6 +60,32 @@ idiff -fail 0 -warn 0 "$WORK/direct.exr" "$WORK/out/image.exr" >"$WORK/idiff.txt
     fail "the merged tiles differ from one render: $(cat "$WORK/idiff.txt")"
 [ -z "$(ls -A "$WORK/out" | grep '^\.')" ] || fail "the merge left a temporary: $(ls -A "$WORK/out")"
 
+# A merge stopped by SIGTERM (scancel, a time limit) leaves no temporary; one killed outright
+# (SIGKILL, no trap runs) leaves its temporary, which the next merge removes. The fake oiiotool
+# makes the merge's output and then waits to be stopped.
+real_oiiotool=$(command -v oiiotool)
+cat >"$WORK/bin/oiiotool" <<FAKE
+#!/bin/bash
+if [[ " \$* " == *" -o "* ]]; then touch "\${@: -1}"; echo \$\$ >"$WORK/oiiotool.pid"; exec sleep 60; fi
+exec "$real_oiiotool" "\$@"
+FAKE
+chmod +x "$WORK/bin/oiiotool"
+"$farm" merge "$WORK/out" >/dev/null 2>&1 &
+merger=$!
+for _ in $(seq 300); do [ -s "$WORK/oiiotool.pid" ] && break; sleep 0.1; done
+[ -n "$(ls -A "$WORK/out" | grep '^\.image\.')" ] || fail "the held merge has no temporary: $(ls -A "$WORK/out")"
+kill -TERM "$merger"
+wait "$merger" || true
+kill "$(cat "$WORK/oiiotool.pid")"
+[ -z "$(ls -A "$WORK/out" | grep '^\.')" ] || fail "a merge stopped by SIGTERM left: $(ls -A "$WORK/out")"
+rm "$WORK/bin/oiiotool"
+sleep 0 &
+dead=$!
+wait "$dead"
+touch "$WORK/out/.image.$dead.exr"
+expect_exit 0 "$farm" merge "$WORK/out"
+[ -z "$(ls -A "$WORK/out" | grep '^\.')" ] || fail "the merge left a killed merge's temporary: $(ls -A "$WORK/out")"
+
 # Overlapping tiles (one rendered twice) are refused; the picture made before stays as it was.
 cp "$WORK/out/parts/part_0.exr" "$WORK/out/parts/part_1.exr"
 expect_exit 2 "$farm" merge "$WORK/out"

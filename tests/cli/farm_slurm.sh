@@ -1,7 +1,8 @@
 # rt-farm on a real Slurm: munged, slurmctld and slurmd started on localhost with everything in
 # a temporary folder (SLURM_CONF), a 4x4 tile array of a thesis scene with supersampling, soft
 # shadows and glossy reflections merged bit for bit equal to a render on one machine; a task
-# cancelled while it runs is resubmitted alone and the picture is still exact. Skips (77) where
+# cancelled while it runs is resubmitted alone and the picture is still exact; a frames array
+# and a seeds array give the frames and the seeds' mean one machine gives. Skips (77) where
 # Slurm cannot start: not root, or slurm-wlm and munge not installed (scripts/install-deps.sh).
 source "$(dirname "$0")/common.bash"
 farm="$RT_SOURCE_DIR/tools/farm/rt-farm"
@@ -114,4 +115,29 @@ ls "$WORK/out/logs" | grep -q "^task_${again}_5.log$" || fail "task 5 was not re
 idiff -fail 0 -warn 0 "$WORK/direct.exr" "$WORK/out/image.exr" >"$WORK/idiff.txt" ||
     fail "the farm's picture differs from one render: $(cat "$WORK/idiff.txt")"
 grep -q '% of .* samples' "$WORK/out/logs/task_${again}_5.log" || fail "no progress lines in the task's log"
+
+# ---- a frames array and a seeds array, both at once on a small picture --------------------
+# A turntable's frames are each the frame one machine renders; the seeds' mean is the mean of
+# the renders one machine makes with those seeds (the same sums in the same order).
+small=(-K -s -x 40 -y 30 -S 4)
+demo="$RT_SOURCE_DIR/scenes/demo.xml"
+"$farm" submit "$demo" "${small[@]}" --orbit 3 --frames 0..2 -o "$WORK/turn" --cpus-per-task 1 >"$WORK/ids" \
+    2>"$WORK/submit.log" || fail "submit --frames failed: $(cat "$WORK/submit.log")"
+read -r _ frames_merge <"$WORK/ids"
+"$farm" submit "$demo" "${small[@]}" --seeds 1..4 -o "$WORK/seeds" --cpus-per-task 1 >"$WORK/ids" \
+    2>"$WORK/submit.log" || fail "submit --seeds failed: $(cat "$WORK/submit.log")"
+read -r _ seeds_merge <"$WORK/ids"
+"$RT_RENDER" "$demo" "${small[@]}" -q --exr-pixels float --orbit 3 -f "$WORK/direct_####.exr"
+for seed in 1 2 3 4; do "$RT_RENDER" "$demo" "${small[@]}" -q --exr-pixels float --seed $seed -f "$WORK/seed$seed.exr"; done
+oiiotool "$WORK"/seed1.exr "$WORK"/seed2.exr --add "$WORK"/seed3.exr --add "$WORK"/seed4.exr --add --divc 4 \
+    -d float -o "$WORK/mean.exr"
+wait_for 90 jobs_gone "$frames_merge" && wait_for 90 jobs_gone "$seeds_merge" ||
+    fail "the frames or seeds jobs did not end: $(squeue 2>&1)"
+for frame in 0000 0001 0002; do
+    idiff -fail 0 -warn 0 "$WORK/direct_$frame.exr" "$WORK/turn/frames/frame_$frame.exr" >"$WORK/idiff.txt" ||
+        fail "frame $frame from the farm differs: $(cat "$WORK/idiff.txt" "$WORK"/turn/logs/* 2>&1 | tail -5)"
+done
+grep -q "all 3 frames are in" "$WORK"/turn/logs/merge_*.log || fail "the frames' merge job: $(cat "$WORK"/turn/logs/merge_*.log)"
+idiff -fail 0 -warn 0 "$WORK/mean.exr" "$WORK/seeds/image.exr" >"$WORK/idiff.txt" ||
+    fail "the seeds' mean from the farm differs: $(cat "$WORK/idiff.txt" "$WORK"/seeds/logs/merge_*.log 2>&1 | tail -5)"
 echo "farm_slurm: ok"

@@ -39,6 +39,25 @@ cat >"$WORK/overflow.xml" <<'XML'
 XML
 expect_exit 0 "$RT_RENDER" "$WORK/overflow.xml" "${small[@]}" --stats-json "$WORK/render_overflow.json"
 grep -q '"firstNonFinitePixel": \[' "$WORK/render_overflow.json" || fail "the overflow scene had no non-finite sample"
+# Each record repeats its run: rt's version, the command line, every option given or defaulted,
+# and with --orbit one record per frame, which says its frame.
+expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -S 2 --seed 7 --orbit 2 -f "$WORK/o_#.png" -f "$WORK/o_#.exr" \
+    --stats-json "$WORK/render_orbit_#.json"
+version=$("$RT_RENDER" --version | awk '{print $2}')
+for frame in 0 1; do
+    python3 - "$WORK/render_orbit_$frame.json" "$frame" "$version" <<'PY' || fail "frame $frame's record: $(cat "$WORK/render_orbit_$frame.json")"
+import json, sys
+d = json.load(open(sys.argv[1]))
+o = d["options"]
+assert d["frame"] == int(sys.argv[2]), d["frame"]
+assert d["rtVersion"] == sys.argv[3], d["rtVersion"]
+assert d["commandLine"][1:5] == [d["scene"]["file"], "-x", "32", "-y"], d["commandLine"]
+assert (o["supersample"], o["seed"], o["orbit"], o["width"]) == ("2", "7", "2", "32"), o
+assert o["file"] == [sys.argv[1].rsplit("/", 1)[0] + "/o_#.png", sys.argv[1].rsplit("/", 1)[0] + "/o_#.exr"], o["file"]
+assert (o["depth"], o["shadows"], o["region"]) == ("5", "false", None), o   # defaults, a flag, nothing
+assert d["picture"]["seed"] == 7 and d["peakMemoryBytes"] > 1 << 20, d
+PY
+done
 valid renderStats "$WORK"/render*.json
 
 # rt-inspect: each structure, both trees with rays and depth histograms, the scene on standard input.

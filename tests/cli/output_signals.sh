@@ -27,6 +27,20 @@ for signal in INT TERM; do
     cmp -s "$WORK/out/picture.png" "$WORK/before.png" || fail "$signal: the previous picture changed"
 done
 
+# SIGTERM during the render (a farm's pre-emption or time limit): the log says where it stopped
+# and no file is written.
+"$RT_RENDER" "$scene" -s -x 320 -y 240 -S 16 --threads 1 --progress lines -f "$WORK/out/stopped.exr" \
+    2>"$WORK/stderr" &
+pid=$!
+for _ in $(seq 600); do grep -q '% of' "$WORK/stderr" && break; sleep 0.1; done  # rendering now
+kill -TERM "$pid"
+got=0
+wait "$pid" || got=$?
+[ "$got" = 143 ] || fail "SIGTERM during the render: exited $got, expected 143 ($(cat "$WORK/stderr"))"
+grep -Eq '^rt-render: stopped by SIGTERM at [0-9]+ of 1228800 samples \([0-9]+%\); its output is not written$' \
+    "$WORK/stderr" || fail "the log does not say where the render stopped: $(cat "$WORK/stderr")"
+[ -z "$(ls -A "$WORK/out" | grep stopped)" ] || fail "a stopped render wrote: $(ls -A "$WORK/out")"
+
 raw="$RT_SOURCE_DIR/scenes/models/octahedron.raw"
 "$RT_CONVERT" "$raw" -o "$WORK/out/scene.xml" 2>/dev/null
 snapshot() { (cd "$WORK/out" && find scene.xml scene -type f -print0 | sort -z | xargs -0 md5sum); }

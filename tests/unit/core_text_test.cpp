@@ -18,5 +18,17 @@ TEST(CoreText, LowerCaseExtensionKeepsTheDotOfTheLastPart) {
     EXPECT_EQ(lowerCaseExtension("dir.v2/noext"), "");
 }
 
+TEST(CoreText, ParseSeparatedReadsExactlyTheNumbersAsked) {
+    EXPECT_EQ((parseSeparated<double, 3>("1,-2.5,3e2", ",")), (std::array<double, 3>{1, -2.5, 300}));
+    EXPECT_EQ((parseSeparated<int, 2>("4x3", "x")), (std::array<int, 2>{4, 3}));
+    EXPECT_EQ((parseSeparated<int, 2>("-1..12", "..")), (std::array<int, 2>{-1, 12}));
+    EXPECT_EQ((parseSeparated<int, 1>("7", "..")), (std::array<int, 1>{7}));
+    for (const char* bad : {"1,2", "1,2,3,4", "1,,3", ",2,3", "1,2,", "1, 2,3", " 1,2,3", "+1,2,3", "1,2,3x", "a,b,c"})
+        EXPECT_FALSE((parseSeparated<double, 3>(bad, ","))) << bad;
+    for (const char* bad : {"1.5/2", "1/", "/2", "1/2/3", "99999999999/1", "1-2"})
+        EXPECT_FALSE((parseSeparated<int, 2>(bad, "/"))) << bad;
+    EXPECT_FALSE((parseSeparated<int, 1>("1..2", "..")));
+}
+
 }  // namespace
 }  // namespace rt

@@ -37,6 +37,7 @@ TEST(Names, EveryTableReadsBackWhatItWrites) {
     expectRoundTrip(kUpAxisNames);
     expectRoundTrip(kLeafChoiceNames);
     expectRoundTrip(kTreeDumpFormatNames);
+    expectRoundTrip(kOnOffNames);
 }
 
 TEST(Names, ListedInTheTablesOrder) {

@@ -9,12 +9,7 @@ using namespace rt;
 
 namespace {
 
-Scene litSphere() {
-    Scene s = test::sphereSeenFromMinusZ({.name = "white"}, 20);
-    s.lights.push_back({{-5, 5, -10}, {1, 1, 1}, 0});
-    s.flatten();
-    return s;
-}
+Scene litSphere() { return test::litSphereSeenFromMinusZ({.name = "white"}, 20, {{{-5, 5, -10}, {1, 1, 1}, 0}}); }
 
 }  // namespace
 
@@ -22,8 +17,7 @@ TEST(RenderAlpha, ZeroExactlyWhereTheNaiveTracerFindsNoHit) {
     const Scene s = litSphere();
     const NaiveAccelerator accel(s.primitives);
     const RenderSettings settings = test::picture(48, 36);
-    RenderStats stats;
-    const Framebuffer image = render(s, accel, settings, stats);
+    const Framebuffer image = test::renderNaive(s, settings).image;
     const CameraRays camera(s.camera, settings.width, settings.height);
     int misses = 0;
     for (int y = 0; y < settings.height; ++y)
@@ -43,11 +37,9 @@ TEST(RenderAlpha, ZeroExactlyWhereTheNaiveTracerFindsNoHit) {
 
 TEST(RenderAlpha, SupersamplingGivesFractionalCoverageAtTheSilhouette) {
     const Scene s = litSphere();
-    const NaiveAccelerator accel(s.primitives);
     RenderSettings settings = test::picture(48, 36);
     settings.pixelSamples = 4;
-    RenderStats stats;
-    const Framebuffer image = render(s, accel, settings, stats);
+    const Framebuffer image = test::renderNaive(s, settings).image;
     int partial = 0;
     for (std::size_t i = 0; i < image.alphas().size(); ++i) {
         const float a = image.alphas()[i];

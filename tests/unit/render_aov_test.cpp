@@ -58,6 +58,55 @@ TEST(RenderAov, PlaneAtAKnownDistance) {
         }
 }
 
+// The albedo is the colour the shading uses: the material's colour times the vertex colour
+// times the texture (here a solid checker of unit cubes) at the hit point.
+TEST(RenderAov, AlbedoOfATexturedPlaneHasItsTextureAndVertexColours) {
+    Scene s = planeAtFive();
+    s.textures.push_back({.name = "checker", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}});
+    s.materials[0].colorTexture = 0;
+    CornerColors tint;
+    for (int corner = 0; corner < 3; ++corner) tint.values[std::size_t(3 * corner)] = 0.5f;  // (0.5, 1, 1)
+    for (std::uint32_t triangle = 0; triangle < 2; ++triangle)
+        s.primitives.triangleShading().colors.set(triangle, tint);
+    const Framebuffer image = renderAovs(s, NaiveAccelerator(s.primitives), test::picture(8, 6));
+    int red = 0, blue = 0;
+    for (const PixelAovs& a : image.aovs()) {
+        // The plane at z = 5 lies on a cube boundary; the camera sees the cubes behind it (z in 5..6).
+        const bool even = (int(std::floor(a.p[0])) + int(std::floor(a.p[1])) + 5) % 2 == 0;
+        const Color checker = even ? Color{1, 0, 0} : Color{0, 0, 1};
+        const Color want = Color(0.2f * 0.5f, 0.4f, 0.6f) * checker;  // colour x vertex colour x texture
+        EXPECT_NEAR(a.albedo.r, want.r, 1e-6f) << a.p[0] << "," << a.p[1];
+        EXPECT_NEAR(a.albedo.g, want.g, 1e-6f);
+        EXPECT_NEAR(a.albedo.b, want.b, 1e-6f);
+        (even ? red : blue) += 1;
+    }
+    EXPECT_GT(red, 0);
+    EXPECT_GT(blue, 0);
+}
+
+// N is the shading normal the lighting uses: a mesh's interpolated vertex normals (turned to the
+// camera's side), not the facet's normal, which Ng keeps as the primitive defines it.
+TEST(RenderAov, NormalOfASmoothMeshIsItsInterpolatedVertexNormal) {
+    Scene s = planeAtFive();
+    CornerNormals tilted;
+    const Vec3 n0{0.6, 0, -0.8}, n1{0, 0.6, -0.8};
+    for (int corner = 0; corner < 3; ++corner)
+        for (int c = 0; c < 3; ++c) tilted.values[std::size_t(3 * corner + c)] = float(corner == 0 ? n0[c] : n1[c]);
+    for (std::uint32_t triangle = 0; triangle < 2; ++triangle)
+        s.primitives.triangleShading().normals.set(triangle, tilted);
+    const Framebuffer image = renderAovs(s, NaiveAccelerator(s.primitives), test::picture(8, 6));
+    for (const PixelAovs& a : image.aovs()) {
+        // Each triangle's corner 0 is (-100, -100, 5); the hit's weight of it follows from the point.
+        const bool first = a.p[0] >= a.p[1];  // the triangle (a, b, c) below the diagonal, else (a, c, d)
+        const Real w0 = first ? (100 - Real(a.p[0])) / 200 : (100 - Real(a.p[1])) / 200;
+        const Vec3 want = normalize(n0 * w0 + n1 * (1 - w0));
+        EXPECT_NEAR(a.n[0], want.x, 1e-5) << a.p[0] << "," << a.p[1];
+        EXPECT_NEAR(a.n[1], want.y, 1e-5);
+        EXPECT_NEAR(a.n[2], want.z, 1e-5);
+        EXPECT_EQ(std::abs(a.ng[2]), 1) << "the geometric normal stays the facet's";
+    }
+}
+
 TEST(RenderAov, MissesHaveInfiniteDepthAndNoIds) {
     Scene s = planeAtFive();
     s.camera.destination = {0, 0, -1};  // looking away from the plane

@@ -116,11 +116,9 @@ Scene ballsScene() {
 // One sphere lit by a light of infinite intensity: every sample that hits the sphere is
 // infinite in red and blue and NaN in green (infinity times the colour's zero).
 Scene sphereUnderAnInfiniteLight() {
-    Scene s = test::sphereSeenFromMinusZ({.name = "magenta", .color = {1, 0, 1}, .ambient = 0.1f, .diffuse = 0.8f}, 20);
     const float inf = std::numeric_limits<float>::infinity();
-    s.lights.push_back({{0, 5, -10}, {inf, inf, inf}, 0});
-    s.flatten();
-    return s;
+    return test::litSphereSeenFromMinusZ({.name = "magenta", .color = {1, 0, 1}, .ambient = 0.1f, .diffuse = 0.8f}, 20,
+                                         {{{0, 5, -10}, {inf, inf, inf}, 0}});
 }
 
 bool isBlack(const Color& c) { return c == Color{}; }
@@ -150,10 +148,8 @@ TEST(RenderFinite, BallsSceneIsFiniteAtDepth10) {
 
 TEST(RenderFinite, NonFiniteSamplesAreWrittenAsBlackAndCounted) {
     const Scene s = sphereUnderAnInfiniteLight();
-    const NaiveAccelerator accel(s.primitives);
     const RenderSettings settings = test::picture(40, 30);
-    RenderStats stats;
-    const Framebuffer image = render(s, accel, settings, stats);
+    const auto [image, stats] = test::renderNaive(s, settings);
     std::uint64_t black = 0;
     int firstX = -1, firstY = -1;
     for (int y = 0; y < settings.height; ++y)

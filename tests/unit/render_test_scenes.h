@@ -2,7 +2,11 @@
 // so that they need neither the XML loader nor files.
 #pragma once
 
+#include <initializer_list>
+
+#include "accel/naive.h"
 #include "render/render_settings.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace rt::test {
@@ -29,6 +33,28 @@ inline Scene sphereSeenFromMinusZ(Material m, Real fovDegrees) {
     s.camera.fovDegrees = fovDegrees;
     s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, addMaterial(s, std::move(m)));
     return s;
+}
+
+// sphereSeenFromMinusZ under `lights`, flattened: ready to render.
+inline Scene litSphereSeenFromMinusZ(Material m, Real fovDegrees, std::initializer_list<Light> lights) {
+    Scene s = sphereSeenFromMinusZ(std::move(m), fovDegrees);
+    s.lights.assign(lights);
+    s.flatten();
+    return s;
+}
+
+// A picture and the statistics of its render.
+struct Rendered {
+    Framebuffer image;
+    RenderStats stats;
+};
+
+// `scene` rendered through the naive list, the reference every tree agrees with.
+inline Rendered renderNaive(const Scene& scene, const RenderSettings& settings) {
+    const NaiveAccelerator accel(scene.primitives);
+    RenderStats stats;
+    Framebuffer image = render(scene, accel, settings, stats);
+    return {std::move(image), stats};
 }
 
 // A quad as two triangles, corners in order around its edge.

@@ -12,10 +12,10 @@ TEST(Texture, CoordinatesAreScaledRotatedThenOffset) {
     t.scale = {2, 3};
     t.rotation = float(kPi / 2);
     t.offset = {0.5f, 0.25f};
-    const std::array<float, 2> uv = transformUv(t, 1, 0);  // scaled (2, 0), rotated (0, -2), offset
+    const std::array<float, 2> uv = UvTransform(t)(1, 0);  // scaled (2, 0), rotated (0, -2), offset
     EXPECT_NEAR(uv[0], 0.5f, 1e-6);
     EXPECT_NEAR(uv[1], -1.75f, 1e-6);
-    const std::array<float, 2> same = transformUv(Texture{}, 0.25, 0.75);
+    const std::array<float, 2> same = UvTransform(Texture{})(0.25, 0.75);
     EXPECT_EQ(same, (std::array<float, 2>{0.25f, 0.75f}));
 }
 

@@ -13,12 +13,9 @@ namespace {
 
 // One white diffuse sphere at the origin seen from -z, one light at the camera.
 Scene litSphere() {
-    Scene s = test::sphereSeenFromMinusZ(
-        {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .ambient = 0.2f, .diffuse = 0.6f}, 30);
-    s.lights.push_back({{0, 0, -10}, {0.5f, 0.5f, 0.5f}, 0});
-    s.lights.push_back({{0, 0, 10}, {0.25f, 0.25f, 0.25f}, 0});  // behind the sphere: ambient only
-    s.flatten();
-    return s;
+    return test::litSphereSeenFromMinusZ(
+        {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .ambient = 0.2f, .diffuse = 0.6f}, 30,
+        {{{0, 0, -10}, {0.5f, 0.5f, 0.5f}, 0}, {{0, 0, 10}, {0.25f, 0.25f, 0.25f}, 0}});  // behind: ambient only
 }
 
 }  // namespace

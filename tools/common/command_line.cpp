@@ -21,6 +21,19 @@ std::optional<int> parseCommandLine(CLI::App& app, const std::string& toolName, 
     }
 }
 
+OptionValues optionValues(const CLI::App& app) {
+    OptionValues values;
+    for (const CLI::Option* option : app.get_options()) {
+        const std::string name = option->get_single_name();
+        if (name == "help" || name == "version") continue;
+        std::vector<std::string> given = option->reduced_results();
+        if (given.empty() && !option->get_default_str().empty()) given.push_back(option->get_default_str());
+        if (given.empty() && option->get_expected_min() == 0) given.push_back("false");  // a flag not given
+        values.emplace_back(name, std::move(given));
+    }
+    return values;
+}
+
 CLI::Validator positiveNumber() {
     return CLI::Validator(
         [](std::string& text) -> std::string {

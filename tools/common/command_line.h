@@ -9,6 +9,8 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/names.h"
 
@@ -23,6 +25,11 @@ inline constexpr const char* kFlatHelp =
 // An unknown argument is reported before anything else: "--treads 2" is a typo, and a
 // missing scene or a bad value reported instead of it would send the user the wrong way.
 std::optional<int> parseCommandLine(CLI::App& app, const std::string& toolName, int argc, char** argv);
+
+// Every option of `app` after parsing, by its long name, with the values the command line gave it,
+// else its default, else none (a flag: "false"): what a statistics record needs to repeat a run.
+using OptionValues = std::vector<std::pair<std::string, std::vector<std::string>>>;
+OptionValues optionValues(const CLI::App& app);
 
 // A validator for a number from `lowest` to `highest` (inclusive) that T holds.
 template <class T>

@@ -56,6 +56,10 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
         ->capture_default_str()
         ->group(group);
     app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
+    app.add_option("--set", o.parameters,
+                   "NAME=VALUE: fills $NAME, ${NAME} and ${NAME:-default} in the XML scene's attributes; repeatable")
+        ->allow_extra_args(false)
+        ->group(group);
 }
 
 void addCameraOptions(CLI::App& app, RenderOptions& o) {
@@ -86,10 +90,11 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--view", o.color.view, "OCIO view (default: the display's default, Standard)")->group(group);
     app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
     addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")->group(group);
-    app.add_option("--alpha", o.alpha,
-                   "Alpha channel (coverage): on or off (default: on for PNG, EXR and TGA; EXR premultiplied, "
-                   "PNG and TGA straight)")
-        ->check(CLI::IsMember({"on", "off"}))
+    app.add_option_function<std::string>(
+           "--alpha", [&o](const std::string& name) { o.alpha = rt::parseNamed(rt::kOnOffNames, name); },
+           "Alpha channel (coverage): on or off (default: on where the format has alpha; EXR and float TIFF "
+           "premultiplied, the others straight)")
+        ->check(CLI::IsMember(rt::namesOf(rt::kOnOffNames)))
         ->group(group);
     app.add_option("--aov", o.aovs,
                    "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, or all")
@@ -134,6 +139,7 @@ int main(int argc, char** argv) {
     CLI::App app{"Renders a scene by ray tracing (thesis appendix B)."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-render"));
     RenderOptions options;
+    app.option_defaults()->always_capture_default();  // so that --stats-json records every default
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")
         ->required();
     rt::tool::addPictureOptions(app, options.render);
@@ -143,5 +149,7 @@ int main(int argc, char** argv) {
     addImageOptions(app, options);
     addOtherOptions(app, options);
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-render", argc, argv)) return *exitCode;
+    options.arguments.assign(argv, argv + argc);
+    options.optionValues = rt::tool::optionValues(app);
     return rt::tool::run("rt-render", [&] { return rt::tool::render::runRender(options); });
 }

@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "core/text.h"
 #include "image/image_check.h"
 #include "image/texture_files.h"
 #include "import/load_scene.h"
@@ -22,32 +24,26 @@
 namespace rt::tool::render {
 
 PixelWindow parseRegion(const std::string& text) {
-    PixelWindow w;
-    int used = -1;
-    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%n", &w.x0, &w.y0, &w.x1, &w.y1, &used) != 4 || used != int(text.size()))
-        throw InputError("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
-    return w;
+    const auto corners = parseSeparated<int, 4>(text, ",");
+    if (!corners) throw InputError("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
+    const auto [x0, y0, x1, y1] = *corners;
+    return {x0, y0, x1, y1};
 }
 
 Vec3 parseVector(const std::string& option, const std::string& text) {
-    double v[3];
-    int used = -1;
-    if (std::sscanf(text.c_str(), "%lf,%lf,%lf%n", &v[0], &v[1], &v[2], &used) != 3 || used != int(text.size()) ||
-        !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])))
+    const auto v = parseSeparated<double, 3>(text, ",");
+    if (!v || !std::all_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); }))
         throw InputError(option + ": expected X,Y,Z (three numbers), got '" + text + "'");
-    return {Real(v[0]), Real(v[1]), Real(v[2])};
+    return {Real((*v)[0]), Real((*v)[1]), Real((*v)[2])};
 }
 
 FrameRange parseFrames(const std::optional<std::string>& frames, int orbit) {
     if (!frames) return {0, std::max(orbit, 1) - 1};
     if (orbit < 1) throw InputError("--frames needs --orbit N: it picks frames of the orbit");
-    FrameRange r;
-    int used = -1;
-    const int fields = std::sscanf(frames->c_str(), "%d..%d%n", &r.first, &r.last, &used);
-    if (fields == 1 && std::to_string(r.first) == *frames)
-        r.last = r.first;  // one frame: --frames 7
-    else if (fields != 2 || used != int(frames->size()))
-        throw InputError("--frames: expected A..B (frame numbers, both included), got '" + *frames + "'");
+    const auto one = parseSeparated<int, 1>(*frames, "..");  // --frames 7: that frame alone
+    const auto range = one ? std::array<int, 2>{(*one)[0], (*one)[0]} : parseSeparated<int, 2>(*frames, "..");
+    if (!range) throw InputError("--frames: expected A..B (frame numbers, both included), got '" + *frames + "'");
+    const FrameRange r{(*range)[0], (*range)[1]};
     if (r.first < 0 || r.last < r.first || r.last >= orbit)
         throw InputError("--frames " + *frames + ": the orbit's frames are 0.." + std::to_string(orbit - 1) +
                          ", and A must not exceed B");
@@ -64,12 +60,12 @@ std::string framePath(const std::string& path, int frame) {
 }
 
 PixelWindow parseTile(const std::string& tiles, const std::string& tile, int width, int height) {
-    TileGrid grid;
-    int index = -1, count = -1, used = -1;
-    if (std::sscanf(tiles.c_str(), "%dx%d%n", &grid.columns, &grid.rows, &used) != 2 || used != int(tiles.size()))
-        throw InputError("--tiles: expected CxR (columns x rows, e.g. 4x4), got '" + tiles + "'");
-    if (std::sscanf(tile.c_str(), "%d/%d%n", &index, &count, &used) != 2 || used != int(tile.size()))
-        throw InputError("--tile: expected I/N (tile I of N, from 0), got '" + tile + "'");
+    const auto columnsRows = parseSeparated<int, 2>(tiles, "x");
+    if (!columnsRows) throw InputError("--tiles: expected CxR (columns x rows, e.g. 4x4), got '" + tiles + "'");
+    const auto indexOfCount = parseSeparated<int, 2>(tile, "/");
+    if (!indexOfCount) throw InputError("--tile: expected I/N (tile I of N, from 0), got '" + tile + "'");
+    const TileGrid grid{(*columnsRows)[0], (*columnsRows)[1]};
+    const auto [index, count] = *indexOfCount;
     if (count != grid.count())
         throw InputError("--tile " + tile + ": --tiles " + tiles + " makes " + std::to_string(grid.count()) + " tiles");
     return tileWindow(width, height, grid, index);
@@ -93,7 +89,7 @@ ImageOutputSettings outputSettings(const RenderOptions& o, const std::optional<s
     if (s.format == ImageFormat::Text && !path) s.path = std::string(1, '-');  // text goes to the terminal
     if (s.format != ImageFormat::Null && s.path.empty())
         throw InputError(std::string(imageFormatName(s.format)) + " output needs -f FILE");
-    s.alpha = o.alpha ? *o.alpha == "on" : imageFormatHasAlpha(s.format);
+    s.alpha = o.alpha.value_or(imageFormatHasAlpha(s.format));
     if (s.alpha && !imageFormatHasAlpha(s.format) && s.format != ImageFormat::Null)
         throw InputError(std::string("--alpha on: ") + imageFormatName(s.format) + " output has no alpha channel");
     if (o.aovs && s.format == ImageFormat::Exr) s.aovs = parseAovList(*o.aovs);
@@ -160,6 +156,10 @@ CameraOverrides cameraOverrides(const RenderOptions& o) {
 Scene loadWithCamera(const RenderOptions& o) {
     ImportOptions import = o.import;
     import.camera = o.camera.value_or("");
+    for (const std::string& assignment : o.parameters) {  // a later --set of the same name wins
+        auto [name, value] = parseParameterAssignment(assignment);
+        import.parameters.insert_or_assign(std::move(name), std::move(value));
+    }
     import.aspect = double(o.render.width) / double(o.render.height);
     Scene scene = loadScene(o.scenePath, import);
     applyOverrides(scene.camera, cameraOverrides(o), scene.primitives.bounds(), Real(import.aspect));
@@ -205,13 +205,23 @@ std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSetti
     return accel;
 }
 
-// The bar's line ends (its destructor) before anything else is printed.
+// The bar's line ends (its destructor) before anything else is printed. A signal during the
+// render says how far it got (noteWorkInProgress), even with -q: a farm's log then shows it.
 Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
                                   ProgressMode mode, RenderStats& stats, const ImageTextures& images) {
     Progress progress(mode);
-    return rt::render(
+    const PixelWindow w = settings.window();
+    noteWorkInProgress("rt-render", "samples", 0,
+                       std::uint64_t(w.width()) * std::uint64_t(w.height()) * std::uint64_t(settings.pixelSamples));
+    Framebuffer image = rt::render(
         scene, accel, settings, stats,
-        [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); }, &images);
+        [&progress](std::uint64_t done, std::uint64_t total) {
+            progress.update(done, total);
+            noteWorkInProgress("rt-render", "samples", done, total);
+        },
+        &images);
+    noteWorkInProgress("rt-render", "samples", 0, 0);  // rendered: a signal now interrupts the writing
+    return image;
 }
 
 // What a run without -f or -o did, so that nobody waits for a picture that never comes.
@@ -242,8 +252,9 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
     if (o.statsLine) std::cout << thesisStatsLine(stats) << std::endl;
     if (o.statsJson) {
         const SceneSummary summary = summarizeScene(o.scenePath, scene);
+        const RunRecord run{o.arguments, o.optionValues, o.orbit > 0 ? std::optional<int>(frame) : std::nullopt};
         writeFileAtomically(framePath(*o.statsJson, frame),
-                            [&](std::ostream& out) { writeStatsJson(out, summary, o.render, tree, stats); });
+                            [&](std::ostream& out) { writeStatsJson(out, run, summary, o.render, tree, stats); });
     }
 }
 

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "accel/settings.h"
@@ -36,16 +37,20 @@ struct RenderOptions {
     bool statsLine = false;                      // -b
     bool preprocessOnly = false;                 // -p
     std::optional<std::string> statsJson;        // --stats-json FILE ("-" is standard output)
-    std::optional<std::string> alpha;            // --alpha on|off; default on where the format has alpha
+    std::optional<bool> alpha;                   // --alpha on|off; default on where the format has alpha
     std::optional<std::string> aovs;             // --aov LIST: AOV layers in the EXR (render/aov.h)
     // The camera: --camera NAME|INDEX, then --look-from, --look-at, --up (X,Y,Z), --fov, --frame.
     std::optional<std::string> camera;
     std::optional<std::string> lookFrom, lookAt, up;
     std::optional<double> fov;
     bool frame = false;
-    int orbit = 0;                      // --orbit N: N frames around the look-at point; 0 is one picture
-    std::optional<std::string> frames;  // --frames A..B: only frames A to B (inclusive) of the orbit
-    ImportOptions import;               // --flat, for a model file read directly
+    int orbit = 0;                        // --orbit N: N frames around the look-at point; 0 is one picture
+    std::optional<std::string> frames;    // --frames A..B: only frames A to B (inclusive) of the orbit
+    ImportOptions import;                 // --flat, for a model file read directly
+    std::vector<std::string> parameters;  // --set NAME=VALUE, any number: $NAME in the XML scene
+    // For --stats-json: the command line as given, and every option's value (given or default).
+    std::vector<std::string> arguments;
+    std::vector<std::pair<std::string, std::vector<std::string>>> optionValues;
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.

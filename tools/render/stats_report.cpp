@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "core/json_writer.h"
+#include "core/peak_memory.h"
+#include "version.h"
 
 namespace rt::tool::render {
 
@@ -12,6 +14,39 @@ std::string format(const char* fmt, auto... args) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer, fmt, args...);
     return buffer;
+}
+
+// "options": {"width": "800", "file": ["a.png", "a.exr"], "region": null}: the command line's words.
+void writeOptionsJson(JsonWriter& json, const RunRecord& run) {
+    json.beginObject();
+    for (const auto& [name, values] : run.options) {
+        json.key(name);
+        if (values.empty()) {
+            json.null();
+        } else if (values.size() == 1) {
+            json.value(values[0]);
+        } else {
+            json.beginArray();
+            for (const std::string& v : values) json.value(v);
+            json.endArray();
+        }
+    }
+    json.endObject();
+}
+
+void writeRunJson(JsonWriter& json, const RunRecord& run) {
+    json.member("rtVersion", kVersion);
+    json.key("commandLine");
+    json.beginArray();
+    for (const std::string& argument : run.arguments) json.value(argument);
+    json.endArray();
+    json.key("options");
+    writeOptionsJson(json, run);
+    json.key("frame");  // the turntable's frame, or null
+    if (run.frame)
+        json.value(*run.frame);
+    else
+        json.null();
 }
 
 }  // namespace
@@ -31,11 +66,12 @@ std::string thesisStatsLine(const RenderStats& s) {
                   static_cast<unsigned long long>(s.treeNodes), s.testsPerRay());
 }
 
-void writeStatsJson(std::ostream& out, const SceneSummary& scene, const RenderSettings& settings,
+void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary& scene, const RenderSettings& settings,
                     const TreeReport& tree, const RenderStats& s) {
     const NonFiniteSamples& nonFinite = s.counters.nonFinite;
     JsonWriter json(out);
     json.beginDocument();
+    writeRunJson(json, run);
     json.key("scene");
     writeSceneJson(json, scene);
     json.key("picture");
@@ -47,6 +83,7 @@ void writeStatsJson(std::ostream& out, const SceneSummary& scene, const RenderSe
     json.member("renderSeconds", s.renderSeconds);
     json.member("threads", s.threads);
     json.member("raysPerSecond", s.raysPerSecond());
+    json.member("peakMemoryBytes", peakMemoryBytes());
     json.member("nonFiniteSamples", nonFinite.count);
     json.key("firstNonFinitePixel");  // [x, y], or null when every sample was finite
     if (nonFinite.count) {

@@ -2,8 +2,11 @@
 // with every counter, and a short summary for people.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "accel/accelerator.h"
 #include "inspect/tree_report.h"
@@ -15,9 +18,17 @@ namespace rt::tool::render {
 // "preprocessing render objects lights nodes tests_per_ray", e.g. "0.09 3.51 7383 3 12423 10.05".
 std::string thesisStatsLine(const RenderStats& stats);
 
-// --stats-json: the scene, the picture, the tree and every counter as one JSON document
+// How a record's run was started, so that it can be repeated: rt's version, the command line,
+// every option's value (given or default), and which frame of a turntable the record is for.
+struct RunRecord {
+    std::vector<std::string> arguments;
+    std::vector<std::pair<std::string, std::vector<std::string>>> options;
+    std::optional<int> frame;  // --orbit's frame; none for a single picture
+};
+
+// --stats-json: the run, the scene, the picture, the tree and every counter as one JSON document
 // (docs/json.md), written with rt-inspect's pieces so that a quantity has one name in both.
-void writeStatsJson(std::ostream& out, const SceneSummary& scene, const RenderSettings& settings,
+void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary& scene, const RenderSettings& settings,
                     const TreeReport& tree, const RenderStats& stats);
 
 // One warning line for standard error if some samples came out NaN or infinite (written as
