@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 
 #include "core/error.h"
 
@@ -35,20 +34,21 @@ XmlFile::XmlFile(std::string text, std::string name, const SceneParameters& para
         doc_.load_buffer_inplace(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!result)
         throw inputErrorAt(name_, lineAt(result.offset), std::string("malformed XML: ") + result.description());
-    substitute(doc_, parameters);
+    substitute(parameters);
 }
 
-void XmlFile::substitute(pugi::xml_node node, const SceneParameters& parameters) {
-    for (pugi::xml_attribute a : node.attributes()) {
-        if (!std::strchr(a.value(), '$')) continue;
+// Every attribute value holding a '$', found by XPath: no recursion, however deep the nesting.
+void XmlFile::substitute(const SceneParameters& parameters) {
+    for (const pugi::xpath_node& found : doc_.select_nodes("//@*[contains(., '$')]")) {
+        pugi::xml_attribute a = found.attribute();
         std::string missing;
         const std::optional<std::string> value = substituteParameters(a.value(), parameters, missing);
         if (!value)
-            failAt(node, "attribute '" + std::string(a.name()) + "': parameter $" + missing +
-                             " has no value (give --set " + missing + "=VALUE, or write ${" + missing + ":-default})");
+            failAt(found.parent(), "attribute '" + std::string(a.name()) + "': parameter $" + missing +
+                                       " has no value (give --set " + missing + "=VALUE, or write ${" + missing +
+                                       ":-default})");
         a.set_value(value->c_str());
     }
-    for (pugi::xml_node child : node.children()) substitute(child, parameters);
 }
 
 int XmlFile::lineAt(std::ptrdiff_t offset) const {

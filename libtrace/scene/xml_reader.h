@@ -33,7 +33,7 @@ public:
     [[noreturn]] void failAt(pugi::xml_node node, const std::string& message) const;
 
 private:
-    void substitute(pugi::xml_node node, const SceneParameters& parameters);
+    void substitute(const SceneParameters& parameters);
 
     std::string text_;
     std::string name_;
