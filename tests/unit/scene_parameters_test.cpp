@@ -74,3 +74,17 @@ TEST(SceneParameters, AnUnsetNameIsAnErrorAtItsLine) {
               "sweep.xml:5: attribute 'r': parameter $radius has no value (give --set radius=VALUE, or write "
               "${radius:-default})");
 }
+
+// The parameters are filled before the loader reads the file, so a hostile file's nesting must
+// not cost stack there either: the loader's own limit is the error.
+TEST(SceneParameters, DeepNestingIsFilledWithoutRecursion) {
+    constexpr int kDepth = 200000;
+    std::string xml = R"(<scene><camera><origin /><destination z="1" /></camera><objects>)";
+    for (int i = 0; i < kDepth; ++i) xml += R"(<translate x="$x">)";
+    for (int i = 0; i < kDepth; ++i) xml += "</translate>";
+    xml += "</objects></scene>";
+    const std::string error = inputErrorOf([&] {
+        loadSceneXmlFromString(xml, "deep.xml", ".", readRawModelFileOnly, {{"x", "1"}});
+    });
+    EXPECT_NE(error.find("nested deeper than"), std::string::npos) << error;
+}
