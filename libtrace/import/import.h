@@ -41,6 +41,9 @@ struct ImportOptions {
     // `flat` (rt-convert --flat): then they keep their facets.
     bool flat = false;
     double creaseDegrees = kDefaultCreaseDegrees;
+    // A model with emissive materials but no light gets no default light: its emitters light it
+    // (rt-render --integrator path; the Whitted tracer shows emitters but lights nothing with them).
+    bool emittersLight = false;
 };
 
 // ImportOptions::camera value (rt-convert --camera auto) that ignores the file's cameras.

@@ -47,9 +47,6 @@ private:
     void addHit(PixelAovs& aovs, const Ray& ray, const Hit& hit, bool first) const;
     static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
                         const RenderCounters& after);
-    // The material's colour at the surface (vertex colour and texture applied), and what it emits.
-    Color surfaceColor(const Material& m, const SurfacePoint& s) const;
-    Color emitted(const Material& m, const SurfacePoint& s) const;
     Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
     // Fraction of `light` seen from the surface (1 without shadows).
