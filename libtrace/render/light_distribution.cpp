@@ -20,10 +20,15 @@ Vec3 uniformSphere(Real u1, Real u2) {
 }  // namespace
 
 LightDistribution::LightDistribution(const Scene& scene) : scene_(scene) {
+    // The scene's bounding sphere: the thesis's unattenuated point lights and the environment
+    // send their light over it.
+    const Aabb box = scene.primitives.bounds();
+    const double radius = box.empty() ? 1 : std::max(0.5 * double(length(box.diagonal())), 1e-6);
+    const double sphereArea = 4 * kPi * radius * radius;
     std::vector<double> power;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         entries_.push_back({LightSample::Source::Point, std::uint32_t(i)});
-        power.push_back(4 * kPi * double(luminance(scene.lights[i].color)));  // intensity over the sphere
+        power.push_back(sphereArea * double(luminance(scene.lights[i].color)));  // irradiance I everywhere
     }
     const auto triangles = scene.primitives.all<Triangle>();
     for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -37,11 +42,9 @@ LightDistribution::LightDistribution(const Scene& scene) : scene_(scene) {
     }
     const double background = luminance(scene.background);
     if (background > kNoPower) {
-        // a constant environment: radiance times the area the scene's bounding sphere shows it
-        const Aabb box = scene.primitives.bounds();
-        const double radius = box.empty() ? 1 : std::max(0.5 * double(length(box.diagonal())), 1e-6);
+        // a constant environment of radiance L gives irradiance pi L over the bounding sphere
         entries_.push_back({LightSample::Source::Environment, 0});
-        power.push_back(4 * kPi * kPi * radius * radius * background);
+        power.push_back(sphereArea * kPi * background);
     }
     double total = 0;
     for (const double p : power) cdf_.push_back(total += p);

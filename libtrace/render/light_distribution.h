@@ -1,8 +1,8 @@
 // What the path tracer's next-event estimation samples: the scene's point lights, its emissive
-// triangles as area lights (emitting from their front, the side their winding faces), and a non-black background as a constant environment, each picked
-// in proportion to an estimate of the power it sends into the scene (pbrt-v4's power light
-// sampler). Emissive spheres, cylinders and cones are not sampled: they light the scene through
-// the paths that hit them (docs/path-tracing.md).
+// triangles as area lights (emitting from their front, the side their winding faces), and a non-black background as a
+// constant environment, each picked in proportion to an estimate of the power it sends into the scene (pbrt-v4's power
+// light sampler). Emissive spheres, cylinders and cones are not sampled: they light the scene through the paths that
+// hit them (docs/path-tracing.md).
 #pragma once
 
 #include <cstdint>

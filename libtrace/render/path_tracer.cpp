@@ -144,7 +144,8 @@ Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const 
     const Color arriving = lightRadiance(*light, origin);
     if (arriving == Color{}) return {};
     // the shadow ray stops short of an area light's own surface
-    const Real tMax = light->source == LightSample::Source::Triangle ? light->distance * (1 - Real(1e-4)) : light->distance;
+    const Real tMax =
+        light->source == LightSample::Source::Triangle ? light->distance * (1 - Real(1e-4)) : light->distance;
     ++counters.shadow.rays;
     if (accel_.occluded({origin, light->direction}, tMax, counters.shadow)) return {};
     const Real weight = light->delta() ? 1 : powerHeuristic(light->pdf, bsdf.pdf(wo, wi));
@@ -161,13 +162,13 @@ Color PathTracer::emission(const Material& m, const SurfacePoint& s, const Ray& 
 
 Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) const {
     switch (light.source) {
-        case LightSample::Source::Point:  // intensity falls off with the square of the distance
-            return scene_.lights[light.index].color * float(1 / (light.distance * light.distance));
+        case LightSample::Source::Point:  // unattenuated, as the thesis's lights (docs/path-tracing.md)
+            return scene_.lights[light.index].color;
         case LightSample::Source::Triangle: {
             const Ray toLight{from, light.direction};
             const Hit there{light.distance, light.index, light.b1, light.b2};
-            return surfaceEmission(scene_, scene_.materialOf(light.index),
-                                   surfaceAt(scene_.primitives, toLight, there), images_);
+            return surfaceEmission(scene_, scene_.materialOf(light.index), surfaceAt(scene_.primitives, toLight, there),
+                                   images_);
         }
         case LightSample::Source::Environment:
             return scene_.background;

@@ -59,8 +59,7 @@ Real smithLambda(const Vec3& w, Real alpha) {
     return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
 }
 
-PbrBsdf::PbrBsdf(const PbrParameters& p)
-    : p_(p), alpha_(std::max(Real(p.roughness) * Real(p.roughness), kMinAlpha)) {}
+PbrBsdf::PbrBsdf(const PbrParameters& p) : p_(p), alpha_(std::max(Real(p.roughness) * Real(p.roughness), kMinAlpha)) {}
 
 Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
     if (wo.z <= 0 || wi.z <= 0) return {};
@@ -68,7 +67,8 @@ Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
     const auto s = float(schlickWeight(dot(wo, h)));
     const float dielectricF = p_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
     const Color metalF = p_.baseColor + (Color{1, 1, 1} + p_.baseColor * -1.0f) * s;
-    const auto dv = float(ggxD(h, alpha_) / ((1 + smithLambda(wo, alpha_) + smithLambda(wi, alpha_)) * 4 * wo.z * wi.z));
+    const auto dv =
+        float(ggxD(h, alpha_) / ((1 + smithLambda(wo, alpha_) + smithLambda(wi, alpha_)) * 4 * wo.z * wi.z));
     const float m = p_.metallic;
     const Color diffuse = p_.baseColor * ((1 - m) * (1 - dielectricF) / float(kPi));
     const Color glossy = (Color{1, 1, 1} * ((1 - m) * dielectricF) + metalF * m) * dv;
