@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/sobol_sampler.h"
+
 namespace rt {
 
 namespace {
@@ -43,6 +45,64 @@ Vec3 sampleCosine(Real u1, Real u2) {
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(Real(0), 1 - u1))};
 }
 
+// The directional albedo E(mu, roughness) of the GGX lobe with Fresnel 1, and its cosine-weighted
+// average, tabulated once (Kulla and Conty 2017, "Revisiting Physically Based Shading at
+// Imageworks"): the energy single scattering loses, 1 - E, is what the multiple-scattering lobe
+// gives back. Each entry is a 64-sample visible-normal estimate (weight G2 / G1, little variance)
+// on a fixed (0,2)-sequence, so the table is the same on every run.
+class GgxAlbedoTable {
+public:
+    static const GgxAlbedoTable& get() {
+        static const GgxAlbedoTable table;
+        return table;
+    }
+    Real albedo(Real mu, Real roughness) const { return lookup(albedo_, mu, roughness); }
+    Real average(Real roughness) const {
+        const Real r = std::clamp(roughness * kSize - Real(0.5), Real(0), Real(kSize - 1));
+        const int j = std::min(int(r), kSize - 2);
+        return average_[j] + (average_[j + 1] - average_[j]) * (r - Real(j));
+    }
+
+private:
+    static constexpr int kSize = 32, kSamples = 64;
+
+    GgxAlbedoTable() {
+        for (int j = 0; j < kSize; ++j) {
+            const Real roughness = (Real(j) + Real(0.5)) / kSize;
+            const Real alpha = std::max(roughness * roughness, kMinAlpha);
+            Real weighted = 0;
+            for (int i = 0; i < kSize; ++i) {
+                const Real mu = (Real(i) + Real(0.5)) / kSize;
+                const Vec3 wo{std::sqrt(1 - mu * mu), 0, mu};
+                Real sum = 0;
+                for (std::uint32_t k = 0; k < kSamples; ++k) {
+                    const Real u1 = (Real(k) + Real(0.5)) / kSamples;
+                    const Real u2 = Real(sobol_detail::reverseBits(k)) * Real(0x1p-32);
+                    const Vec3 h = sampleVisibleNormal(wo, alpha, u1, u2);
+                    const Vec3 wi = h * (2 * dot(wo, h)) - wo;
+                    if (wi.z > 0)
+                        sum += (1 + smithLambda(wo, alpha)) / (1 + smithLambda(wo, alpha) + smithLambda(wi, alpha));
+                }
+                albedo_[i][j] = sum / kSamples;
+                weighted += albedo_[i][j] * mu;
+            }
+            average_[j] = 2 * weighted / kSize;
+        }
+    }
+    static Real lookup(const Real (&t)[kSize][kSize], Real mu, Real roughness) {
+        const Real x = std::clamp(mu * kSize - Real(0.5), Real(0), Real(kSize - 1));
+        const Real y = std::clamp(roughness * kSize - Real(0.5), Real(0), Real(kSize - 1));
+        const int i = std::min(int(x), kSize - 2), j = std::min(int(y), kSize - 2);
+        const Real fx = x - Real(i), fy = y - Real(j);
+        const Real low = t[i][j] + (t[i + 1][j] - t[i][j]) * fx;
+        const Real high = t[i][j + 1] + (t[i + 1][j + 1] - t[i][j + 1]) * fx;
+        return low + (high - low) * fy;
+    }
+
+    Real albedo_[kSize][kSize];  // [mu][roughness]
+    Real average_[kSize];
+};
+
 }  // namespace
 
 Real ggxD(const Vec3& h, Real alpha) {
@@ -59,7 +119,28 @@ Real smithLambda(const Vec3& w, Real alpha) {
     return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
 }
 
-PbrBsdf::PbrBsdf(const PbrParameters& p) : p_(p), alpha_(std::max(Real(p.roughness) * Real(p.roughness), kMinAlpha)) {}
+PbrBsdf::PbrBsdf(const PbrParameters& p) : p_(p), alpha_(std::max(Real(p.roughness) * Real(p.roughness), kMinAlpha)) {
+    const GgxAlbedoTable& table = GgxAlbedoTable::get();
+    averageAlbedo_ = table.average(Real(p.roughness));
+    // Kulla and Conty's Fresnel for light that scatters several times: with F_avg, Schlick's
+    // Fresnel averaged over the hemisphere, F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),
+    // so that a white metal (F_avg = 1) gives back exactly what single scattering lost.
+    const auto tint = [this](float f0) {
+        const Real average = f0 + (1 - f0) / 21;
+        return float(average * average * averageAlbedo_ / (1 - average * (1 - averageAlbedo_)));
+    };
+    multipleScatteringFresnel_ = {tint(p.baseColor.r), tint(p.baseColor.g), tint(p.baseColor.b)};
+}
+
+// The metal's multiple-scattering lobe: F_ms (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)), a
+// diffuse-like lobe whose integral is F_ms (1 - E(mu_o)), the energy the single-scattering lobe
+// lost at wo's angle.
+Color PbrBsdf::multipleScattering(const Vec3& wo, const Vec3& wi) const {
+    if (p_.metallic <= 0 || !(averageAlbedo_ < 1)) return {};
+    const GgxAlbedoTable& table = GgxAlbedoTable::get();
+    const Real lost = (1 - table.albedo(wo.z, p_.roughness)) * (1 - table.albedo(wi.z, p_.roughness));
+    return multipleScatteringFresnel_ * float(lost / (kPi * (1 - averageAlbedo_)));
+}
 
 Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
     if (wo.z <= 0 || wi.z <= 0) return {};
@@ -72,7 +153,7 @@ Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
     const float m = p_.metallic;
     const Color diffuse = p_.baseColor * ((1 - m) * (1 - dielectricF) / float(kPi));
     const Color glossy = (Color{1, 1, 1} * ((1 - m) * dielectricF) + metalF * m) * dv;
-    return (diffuse + glossy) * float(wi.z);
+    return (diffuse + glossy + multipleScattering(wo, wi) * m) * float(wi.z);
 }
 
 // The share of reflected light the glossy lobe carries at wo's angle, by Schlick's Fresnel at
@@ -82,8 +163,11 @@ Real PbrBsdf::glossyProbability(const Vec3& wo) const {
     const Real dielectricF = p_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
     const Real metalF = luminance(p_.baseColor) + (1 - luminance(p_.baseColor)) * s;
     const Real m = p_.metallic;
-    const Real glossy = (1 - m) * dielectricF + m * metalF;
-    const Real diffuse = (1 - m) * (1 - dielectricF) * luminance(p_.baseColor);
+    const Real glossy = (1 - m) * dielectricF + m * metalF * GgxAlbedoTable::get().albedo(wo.z, p_.roughness);
+    // the cosine-sampled share: the base, and the metal's multiple scattering
+    const Real diffuse =
+        (1 - m) * (1 - dielectricF) * luminance(p_.baseColor) +
+        m * luminance(multipleScatteringFresnel_) * (1 - GgxAlbedoTable::get().albedo(wo.z, p_.roughness));
     return glossy + diffuse > 0 ? glossy / (glossy + diffuse) : Real(0.5);
 }
 

@@ -7,6 +7,9 @@
 //   F_m = base + (1 - base) (1 - |v.h|)^5
 //   D V = D(h) G2(v, l) / (4 |n.v| |n.l|),  alpha = roughness^2
 //
+// plus, for metals, Kulla and Conty's (2017) multiple-scattering lobe, which gives back the energy
+// single-scattering GGX loses between microfacets (a white metal reflects all the light it gets).
+//
 // Directions are in the local frame of the shading normal (z up). Sampling picks the glossy or
 // the diffuse lobe by their estimated reflectance, then the glossy lobe's visible normals (Heitz
 // 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4)) or a cosine-weighted
@@ -49,9 +52,12 @@ public:
 
 private:
     Real glossyProbability(const Vec3& wo) const;
+    Color multipleScattering(const Vec3& wo, const Vec3& wi) const;
 
     PbrParameters p_;
     Real alpha_;
+    Real averageAlbedo_;               // E_avg of the GGX lobe at this roughness
+    Color multipleScatteringFresnel_;  // F_ms, per channel
 };
 
 }  // namespace rt

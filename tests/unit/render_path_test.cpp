@@ -69,17 +69,18 @@ TEST(PathTracer, WhiteLambertianSphereInAWhiteFurnaceIsUniformlyOne) {
     EXPECT_NEAR(m.mean, 1.0, 4 * m.standardError + 1e-3) << "energy neither lost nor gained";
 }
 
-// The glTF model's single-scattering GGX loses the light that would scatter more than once
-// between microfacets, more at high roughness (measured: white metal shows 0.99 at roughness 0.2,
-// 0.38 at 1); its dielectric's Fresnel mix of diffuse and glossy, taken per half vector as the
-// specification writes it, gains up to about 1 % at low roughness. The test holds both to those
-// figures, so that a change in the BRDF or the sampling that moves them shows.
+// Metal: single-scattering GGX loses the light that would scatter more than once between
+// microfacets (0.38 left at roughness 1); Kulla and Conty's lobe gives it back (measured 0.998,
+// 1.001, 0.986 at roughness 0.2, 0.6, 1; the table's resolution costs the last 1.4 %). The
+// dielectric's Fresnel mix of diffuse and glossy, taken per half vector as the glTF specification
+// writes it, gains about 1 % at low roughness and loses 3 % at high. The test holds each case to
+// a band around these figures, so that a change in the BRDF or the sampling that moves them shows.
 TEST(PathTracer, WhiteMetalAndDielectricInAWhiteFurnaceStayNearOne) {
     struct Case {
         float metallic, roughness;
         double low, high;
     };
-    for (const Case c : {Case{1, 0.2f, 0.97, 1.0}, Case{1, 0.6f, 0.75, 1.0}, Case{1, 1.0f, 0.33, 0.45},
+    for (const Case c : {Case{1, 0.2f, 0.98, 1.0}, Case{1, 0.6f, 0.98, 1.01}, Case{1, 1.0f, 0.97, 1.0},
                          Case{0, 0.2f, 0.98, 1.02}, Case{0, 0.6f, 0.97, 1.01}, Case{0, 1.0f, 0.95, 1.0}}) {
         const ImageMean m = meanOverHits(furnace(pbr({1, 1, 1}, c.metallic, c.roughness), 200));
         EXPECT_GT(m.mean, c.low) << "metallic " << c.metallic << ", roughness " << c.roughness;
@@ -117,8 +118,9 @@ TEST(PathTracer, LambertianSphereUnderAPointLightMatchesItsIrradiance) {
     EXPECT_NEAR(image.at(2, 2).g, expected, 0.01f * expected);
 }
 
-// The GGX lobe's directional albedo by the tracer's own importance sampling, and by plain
-// uniform sampling of the hemisphere: two estimators that share nothing but evaluate().
+// The white metal's directional albedo (GGX with its multiple-scattering lobe) by the tracer's
+// own importance sampling, and by plain uniform sampling of the hemisphere: two estimators that
+// share nothing but evaluate().
 TEST(PathTracer, GgxAlbedoByImportanceSamplingAgreesWithUniformSampling) {
     for (const float roughness : {0.3f, 0.6f, 1.0f})
         for (const double cosTheta : {0.9, 0.5, 0.2}) {
@@ -138,7 +140,7 @@ TEST(PathTracer, GgxAlbedoByImportanceSamplingAgreesWithUniformSampling) {
             }
             byImportance /= kSamples, byUniform /= kSamples;
             EXPECT_NEAR(byImportance, byUniform, 0.01 * byUniform) << "roughness " << roughness << ", cos " << cosTheta;
-            EXPECT_LE(byImportance, 1.0 + 1e-3);
+            EXPECT_LE(byImportance, 1.005) << "white metal reflects at most what it gets (the table's error aside)";
         }
 }
 
