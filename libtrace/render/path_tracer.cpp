@@ -107,7 +107,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         const Vec3 toViewer = -ray.direction;
         const Frame frame = shadingFrame(s, toViewer);
         const Vec3 wo = frame.toLocal(toViewer);
-        const PbrBsdf bsdf(pbrParametersOf(m, surfaceColor(scene_, m, s, images_)));
+        const PbrBsdf bsdf(pbrParametersAt(m, s));
         result += clampIndirect(throughput * directLight(s, bsdf, frame.axes, wo, sampler, counters), bounce + 1);
 
         const Real lobe = sampler.next1D();
@@ -155,6 +155,16 @@ Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const 
 // Emitters shine from their front (a triangle's winding, a sphere's outside) only: a light
 // panel under a ceiling would otherwise also fill the gap above it, which paths find rarely
 // and then bring back as fireflies. (The Whitted tracer shows emission from both sides.)
+PbrParameters PathTracer::pbrParametersAt(const Material& m, const SurfacePoint& s) const {
+    PbrParameters p = pbrParametersOf(m, surfaceColor(scene_, m, s, images_));
+    if (m.metallicRoughnessTexture) {
+        const Color t = textureColor(scene_, *m.metallicRoughnessTexture, s, images_);
+        p.metallic = std::clamp(p.metallic * t.b, 0.0f, 1.0f);
+        p.roughness = std::clamp(p.roughness * t.g, 0.0f, 1.0f);
+    }
+    return p;
+}
+
 Color PathTracer::emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const {
     if (m.emission == Color{} || dot(scene_.primitives.normal(hit.prim, s.point), ray.direction) >= 0) return {};
     return surfaceEmission(scene_, m, s, images_);

@@ -44,6 +44,8 @@ private:
     // Light from one next-event sample at s, weighted against the BSDF's density.
     Color directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const Vec3 (&frame)[3], const Vec3& wo,
                       SobolSampler& sampler, RenderCounters& counters) const;
+    // The BRDF's parameters at s: the material's, its metallic-roughness texture applied.
+    PbrParameters pbrParametersAt(const Material& m, const SurfacePoint& s) const;
     Color emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const;
     Color lightRadiance(const LightSample& light, const Vec3& from) const;
     Color clampIndirect(const Color& c, int bounce) const;

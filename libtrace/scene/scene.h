@@ -61,6 +61,8 @@ struct Material {
     std::optional<std::uint32_t> emissionTexture{};
     // The path tracer's material; without it, it follows a rule from the Phong coefficients.
     std::optional<MetallicRoughnessFactors> metallicRoughness{};
+    // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
+    std::optional<std::uint32_t> metallicRoughnessTexture{};
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.

@@ -133,10 +133,10 @@ void SceneBuilder::readList(const XmlElement& list) {
     list.requireOnlyChildren({tag.substr(0, tag.size() - 1)});
     for (const pugi::xml_node& item : list.node().children()) {
         if (tag == "materials")
-            readMaterial(XmlElement(
-                file_, item,
-                {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection", "spread",
-                 "texture", "emission", "emission_texture", "metallic", "roughness", "specular_factor"}));
+            readMaterial(XmlElement(file_, item,
+                                    {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection",
+                                     "spread", "texture", "emission", "emission_texture", "metallic", "roughness",
+                                     "specular_factor", "metallic_roughness_texture"}));
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
@@ -225,6 +225,8 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
         textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});
     if (const auto name = e.optionalString("emission_texture"))
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
+    if (const auto name = e.optionalString("metallic_roughness_texture"))
+        textureUses_.push_back({index, &Material::metallicRoughnessTexture, *name, e.node()});
     scene_.materials.push_back(std::move(m));
 }
 

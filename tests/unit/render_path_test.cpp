@@ -258,3 +258,41 @@ TEST(PathTracer, TheLightPanelLightsTheBoxFromItsFrontOnly) {
     for (int x = 4; x < 12; ++x) darkFloor += dark.at(x, 14).g;
     EXPECT_LT(darkFloor, 0.2 * floor);
 }
+
+namespace {
+
+// Every image texture looks the same everywhere: (r, g, b) = value.
+class ConstantTextures : public ImageTextures {
+public:
+    explicit ConstantTextures(Color value) : value_(value) {}
+    Color lookup(std::uint32_t, float, float) const override { return value_; }
+
+private:
+    Color value_;
+};
+
+}  // namespace
+
+// glTF's metallicRoughnessTexture: blue scales metallic, green roughness (the path tracer's
+// BRDF per hit); the same sphere with the products as plain factors gives the same bits.
+TEST(PathTracer, MetallicRoughnessTextureScalesTheFactors) {
+    const auto sphereWith = [](Material m) {
+        Scene s = test::sphereSeenFromMinusZ(m, 14);
+        s.background = {0.8f, 0.9f, 1.0f};
+        s.lights.push_back({{-3, 3, -5}, {1, 1, 1}, 0});
+        s.textures.push_back({.name = "mr"});
+        s.flatten();
+        return s;
+    };
+    Material textured = pbr({0.9f, 0.6f, 0.2f}, 1, 1);
+    textured.metallicRoughnessTexture = 0;
+    const ConstantTextures texture({0.7f, 0.25f, 0.5f});
+    const Scene a = sphereWith(textured), b = sphereWith(pbr({0.9f, 0.6f, 0.2f}, 0.5f, 0.25f));
+    const RenderSettings settings = pathPicture(12, 4);
+    const NaiveAccelerator accelA(a.primitives), accelB(b.primitives);
+    RenderStats stats;
+    const Framebuffer viaTexture = render(a, accelA, settings, stats, {}, &texture);
+    const Framebuffer viaFactors = render(b, accelB, settings, stats);
+    EXPECT_EQ(viaTexture.pixels(), viaFactors.pixels());
+    EXPECT_NE(viaTexture.pixels(), renderNaive(a, settings).pixels()) << "without the lookups the texture is white";
+}
