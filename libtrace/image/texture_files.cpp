@@ -63,6 +63,9 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
     impl_->system->attribute("max_memory_MB", cacheMegabytes);
     impl_->system->attribute("automip", 1);
     for (const Texture& t : scene.textures) impl_->entries.push_back(impl_->open(t, warnings));
+    // Textures that hold data, not colour, are read as stored: no sRGB decoding.
+    for (const Material& m : scene.materials)
+        if (m.metallicRoughnessTexture) impl_->entries.at(*m.metallicRoughnessTexture).srgb = false;
 }
 
 TextureFiles::~TextureFiles() { OIIO::TextureSystem::destroy(impl_->system); }

@@ -334,8 +334,20 @@ private:
             m.colorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture, what + " baseColorTexture");
             m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
+            keepMetallicRoughnessTexture(gm, what, m);
         }
         return m;
+    }
+
+    // The path tracer follows the texture per hit, with the factors it scales (the Phong mapping
+    // above had to guess them: metallicRoughness()).
+    void keepMetallicRoughnessTexture(const tinygltf::Material& gm, const std::string& what, Material& m) {
+        const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
+        if (pbr.metallicRoughnessTexture.index < 0 || !m.metallicRoughness) return;
+        m.metallicRoughnessTexture = textureFor(pbr.metallicRoughnessTexture, what + " metallicRoughnessTexture");
+        if (!m.metallicRoughnessTexture) return;
+        m.metallicRoughness->metallic = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
+        m.metallicRoughness->roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
     }
 
     float emissiveStrength(const tinygltf::Material& gm, const std::string& what) const {

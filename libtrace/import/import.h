@@ -45,6 +45,9 @@ struct ImportOptions {
     // rt-render --set: fills $NAME in an XML scene's attribute values (scene/parameters.h);
     // a model file has none, so parameters given for one are an error.
     SceneParameters parameters;
+    // A model with emissive materials but no light gets no default light: its emitters light it
+    // (rt-render --integrator path; the Whitted tracer shows emitters but lights nothing with them).
+    bool emittersLight = false;
 };
 
 // ImportOptions::camera value (rt-convert --camera auto) that ignores the file's cameras.

@@ -28,6 +28,7 @@ Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
     m.shininess = std::clamp(2 / (alpha * alpha) - 2, 1.0f, 10000.0f);
     m.reflection = f0 * (1 - roughness);
     m.spread = alpha;
+    m.metallicRoughness = MetallicRoughnessFactors{metallic, roughness, clamp01(pbr.specularFactor)};
     return m;
 }
 

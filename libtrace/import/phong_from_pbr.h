@@ -11,6 +11,7 @@
 //                   Walter et al. 2007, "Microfacet Models for Refraction", section 5.2)
 //   reflection    = F0 * (1 - roughness)          rough surfaces give no sharp mirror image
 //   spread        = alpha (radians)               the glossy lobe of distributed ray tracing
+// The factors themselves are kept too (Material::metallicRoughness) for the path tracer.
 #pragma once
 
 #include "core/color.h"

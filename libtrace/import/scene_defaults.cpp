@@ -1,5 +1,6 @@
 #include "import/scene_defaults.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "import/mesh_data.h"
@@ -77,7 +78,11 @@ void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options
         report.notes.push_back(std::string(options.camera == kFramingCamera ? "--camera auto" : "no usable camera") +
                                ": made one with a 50 degree fov framing the scene's bounds");
     }
-    if (scene.lights.empty()) {
+    const auto emits = [](const Material& m) { return m.emission != Color{}; };
+    if (scene.lights.empty() && options.emittersLight &&
+        std::any_of(scene.materials.begin(), scene.materials.end(), emits)) {
+        report.notes.push_back("no light: lit by its emissive materials");
+    } else if (scene.lights.empty()) {
         scene.lights.push_back(Light{scene.camera.origin, Color(1, 1, 1), 0});
         report.lightGenerated = true;
         report.notes.push_back("no light: added a white point light at the camera");

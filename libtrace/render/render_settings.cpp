@@ -1,5 +1,6 @@
 #include "render/render_settings.h"
 
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -25,6 +26,12 @@ void validate(const RenderSettings& s) {
         throw InputError("samples per pixel must be 1-" + std::to_string(kMaxSamples));
     if (s.distributedSamples < 1 || s.distributedSamples > kMaxSamples)
         throw InputError("distributed ray tracing samples must be 1-" + std::to_string(kMaxSamples));
+    if (s.maxBounces < 0 || s.maxBounces > kMaxBounces)
+        throw InputError("--max-bounces must be 0-" + std::to_string(kMaxBounces));
+    if (!(s.clampRadiance >= 0) || !std::isfinite(s.clampRadiance))
+        throw InputError("--clamp must be a finite number >= 0 (0 is off)");
+    if (s.integrator == Integrator::Path && s.aovs)
+        throw InputError("AOVs are written by the whitted integrator only, so far");
     if (s.threads < 0) throw InputError("the thread count must not be negative");
     if (s.region && !s.region->inside(s.width, s.height)) {
         const PixelWindow& r = *s.region;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/names.h"
 #include "render/framebuffer.h"
 
 namespace rt {
@@ -12,6 +13,13 @@ namespace rt {
 inline constexpr int kMaxImageSide = 65536;  // width and height: larger than any real image
 inline constexpr int kMaxReflectionDepth = 10;
 inline constexpr int kMaxSamples = 1 << 20;  // -S and -r
+inline constexpr int kMaxBounces = 1000;     // --max-bounces
+
+// --integrator: the thesis's Whitted ray tracer (render/tracer.h) or the path tracer
+// (render/path_tracer.h, docs/path-tracing.md).
+enum class Integrator { Whitted, Path };
+inline constexpr NamedValues<Integrator, 2> kIntegratorNames{
+    {{"whitted", Integrator::Whitted}, {"path", Integrator::Path}}};
 
 struct RenderSettings {
     int width = 800;                    // -x
@@ -29,6 +37,9 @@ struct RenderSettings {
     int threads = 0;               // --threads; 0 lets OpenMP use every core
     std::uint32_t seed = 0;        // --seed: another seed gives independent noise, as deterministic
     bool aovs = false;             // --aov: fill each pixel's PixelAovs (render/aov.h) too
+    Integrator integrator = Integrator::Whitted;
+    int maxBounces = 8;       // --max-bounces: the path tracer's surface interactions after the camera ray
+    float clampRadiance = 0;  // --clamp: the path tracer's indirect samples capped at this value; 0 is off
 
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
 };

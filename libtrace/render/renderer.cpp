@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/stopwatch.h"
+#include "render/path_tracer.h"
 #include "render/tracer.h"
 
 namespace rt {
@@ -39,12 +40,10 @@ std::vector<PixelWindow> spreadOut(const std::vector<PixelWindow>& blocks) {
     return order;
 }
 
-}  // namespace
-
-Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
-                   const RenderProgress& progress, const ImageTextures* images) {
-    validate(settings);
-    const Tracer tracer(scene, accel, settings, images);
+// The block loop, for either integrator: both give pixel(x, y, counters, alpha, aovs).
+template <class Integrator>
+Framebuffer renderWith(const Integrator& integrator, const Scene& scene, const RenderSettings& settings,
+                       RenderStats& stats, const RenderProgress& progress) {
     Framebuffer image(settings.width, settings.height, settings.window(), scene.background, settings.aovs);
     const std::vector<PixelWindow> blocks = spreadOut(blocksOf(settings.window()));
     const int total = int(blocks.size());
@@ -63,7 +62,7 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
         RenderCounters& counters = perThread[std::size_t(omp_get_thread_num())].counters;
         for (int y = b.y0; y < b.y1; ++y)
             for (int x = b.x0; x < b.x1; ++x)
-                image.at(x, y) = tracer.pixel(x, y, counters, image.alphaAt(x, y), image.aovsAt(x, y));
+                image.at(x, y) = integrator.pixel(x, y, counters, image.alphaAt(x, y), image.aovsAt(x, y));
         if (progress) {
 #pragma omp critical(rt_render_progress)
             progress(samplesDone += samplesIn(b), samplesTotal);
@@ -77,6 +76,16 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
     stats.lights = scene.lights.size();
     stats.threads = threads;
     return image;
+}
+
+}  // namespace
+
+Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
+                   const RenderProgress& progress, const ImageTextures* images) {
+    validate(settings);
+    if (settings.integrator == Integrator::Path)
+        return renderWith(PathTracer(scene, accel, settings, images), scene, settings, stats, progress);
+    return renderWith(Tracer(scene, accel, settings, images), scene, settings, stats, progress);
 }
 
 }  // namespace rt

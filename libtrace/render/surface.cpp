@@ -1,6 +1,7 @@
 #include "render/surface.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rt {
 
@@ -38,6 +39,15 @@ void applyTriangleData(const Primitives& primitives, std::uint32_t index, const 
 }
 
 }  // namespace
+
+Real secondaryRayOffset(const Primitives& primitives) {
+    constexpr Real kRelative = sizeof(Real) == sizeof(float) ? Real(1e-4) : Real(1e-7);
+    const Aabb box = primitives.bounds();
+    if (box.empty()) return kRelative;
+    Real scale = std::max(length(box.diagonal()), Real(1e-3));
+    for (int a = 0; a < 3; ++a) scale = std::max({scale, std::abs(box.lo[a]), std::abs(box.hi[a])});
+    return kRelative * scale;
+}
 
 SurfacePoint surfaceAt(const Primitives& primitives, const Ray& ray, const Hit& hit) {
     SurfacePoint s;

@@ -20,6 +20,11 @@ struct SurfacePoint {
     Real u = 0, v = 0;     // texture coordinates
 };
 
+// How far secondary rays start off a surface, scaled to the size of the scene: the error of a
+// computed hit point grows with the magnitude of its coordinates, so a fixed offset is too
+// small for a city and too large for a teapot.
+Real secondaryRayOffset(const Primitives& primitives);
+
 // The surface at `hit`, a hit of `ray` on primitives[hit.prim].
 SurfacePoint surfaceAt(const Primitives& primitives, const Ray& ray, const Hit& hit);
 

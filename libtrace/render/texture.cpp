@@ -35,4 +35,13 @@ Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& 
     return images->lookup(index, uv[0], uv[1]);
 }
 
+Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
+    const Color c = m.color * s.tint;
+    return m.colorTexture ? c * textureColor(scene, *m.colorTexture, s, images) : c;
+}
+
+Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
+    return m.emissionTexture ? m.emission * textureColor(scene, *m.emissionTexture, s, images) : m.emission;
+}
+
 }  // namespace rt

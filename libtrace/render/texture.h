@@ -41,4 +41,9 @@ private:
 // The colour of texture `index` of the scene at the surface point.
 Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);
 
+// The material's colour at the surface point (vertex colour and texture applied), and what it
+// emits there (its emission times its emission texture).
+Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
+Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
+
 }  // namespace rt

@@ -9,25 +9,6 @@ namespace rt {
 
 namespace {
 
-// Secondary rays start this far off the surface, relative to the scene's size: the error
-// of a computed hit point grows with the magnitude of its coordinates, so a fixed offset
-// is too small for a city and too large for a teapot.
-constexpr Real kRelativeEpsilon = sizeof(Real) == sizeof(float) ? Real(1e-4) : Real(1e-7);
-
-Real sceneEpsilon(const Primitives& prims) {
-    const Aabb box = prims.bounds();
-    if (box.empty()) return kRelativeEpsilon;
-    Real scale = std::max(length(box.diagonal()), Real(1e-3));
-    for (int a = 0; a < 3; ++a) scale = std::max({scale, std::abs(box.lo[a]), std::abs(box.hi[a])});
-    return kRelativeEpsilon * scale;
-}
-
-const Material& materialOf(const Scene& scene, std::uint32_t prim) {
-    static const Material fallback;  // scenes built in code may give no materials
-    const std::uint32_t id = scene.primitives.material(prim);
-    return id < scene.materials.size() ? scene.materials[id] : fallback;
-}
-
 // A point on the disc of radius r around c facing along `axis` (unit): the light as the
 // shading point sees it. Uniform in area: radius r sqrt(u1), angle 2 pi u2.
 Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
@@ -46,7 +27,7 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
       accel_(accel),
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
-      epsilon_(sceneEpsilon(scene.primitives)),
+      epsilon_(secondaryRayOffset(scene.primitives)),
       images_(images) {
     for (const Light& light : scene.lights) ambientLight_ += light.color;
 }
@@ -93,7 +74,7 @@ void Tracer::addHit(PixelAovs& a, const SurfacePoint& s, const Hit& hit, bool fi
         a.ng[c] += float(ng[c]);
     }
     a.z += float(hit.t);
-    a.albedo += surfaceColor(materialOf(scene_, hit.prim), s);
+    a.albedo += surfaceColor(scene_, scene_.materialOf(hit.prim), s, images_);
     if (!first) return;
     a.material = scene_.primitives.material(hit.prim);
     a.primitive = hit.prim;
@@ -125,11 +106,13 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                     RenderCounters& counters) const {
-    const Material& m = materialOf(scene_, hit.prim);
-    const Color color = surfaceColor(m, s);
+    const Material& m = scene_.materialOf(hit.prim);
+    const Color color = surfaceColor(scene_, m, s, images_);
     const Vec3 toViewer = -ray.direction;
 
-    Color c = phongAmbient(color, m, ambientLight_) + emitted(m, s);
+    // Whitted's model has no light transport from surfaces: an emitter is seen (directly, in
+    // mirrors), but lights nothing else.
+    Color c = phongAmbient(color, m, ambientLight_) + surfaceEmission(scene_, m, s, images_);
     for (const Light& light : scene_.lights) {
         const Vec3 toLight = normalize(light.position - s.point);
         if (dot(s.shadingNormal, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
@@ -140,17 +123,6 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     if (m.reflection > 0 && depth < settings_.reflectionDepth)
         c += reflection(s, ray.direction, m, depth, inBundle, rng, counters) * m.reflection;
     return c;
-}
-
-Color Tracer::surfaceColor(const Material& m, const SurfacePoint& s) const {
-    const Color c = m.color * s.tint;
-    return m.colorTexture ? c * textureColor(scene_, *m.colorTexture, s, images_) : c;
-}
-
-// Whitted's model has no light transport from surfaces: an emitter is seen (directly, in
-// mirrors), but lights nothing else.
-Color Tracer::emitted(const Material& m, const SurfacePoint& s) const {
-    return m.emissionTexture ? m.emission * textureColor(scene_, *m.emissionTexture, s, images_) : m.emission;
 }
 
 float Tracer::visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,

@@ -47,9 +47,6 @@ private:
     void addHit(PixelAovs& aovs, const SurfacePoint& s, const Hit& hit, bool first) const;
     static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
                         const RenderCounters& after);
-    // The material's colour at the surface (vertex colour and texture applied), and what it emits.
-    Color surfaceColor(const Material& m, const SurfacePoint& s) const;
-    Color emitted(const Material& m, const SurfacePoint& s) const;
     // The colour at `s`, the surface of `hit` (surfaceAt).
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;

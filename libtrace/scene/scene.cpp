@@ -84,6 +84,12 @@ void Scene::dropDescription() {
     looseObjects = Primitives();
 }
 
+const Material& Scene::materialOf(std::uint32_t prim) const {
+    static const Material fallback;
+    const std::uint32_t id = primitives.material(prim);
+    return id < materials.size() ? materials[id] : fallback;
+}
+
 std::optional<std::uint32_t> Scene::findMaterial(const std::string& name) const {
     for (std::uint32_t i = 0; i < materials.size(); ++i)
         if (materials[i].name == name) return i;

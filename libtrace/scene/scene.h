@@ -36,6 +36,14 @@ struct Texture {
     float size = 1;
 };
 
+// The glTF metallic-roughness factors the path tracer renders with (docs/path-tracing.md;
+// rt extension). The base colour is the material's colour.
+struct MetallicRoughnessFactors {
+    float metallic = 0;
+    float roughness = 1;
+    float specular = 1;  // KHR_materials_specular's specularFactor
+};
+
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -51,6 +59,10 @@ struct Material {
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
     Color emission{0, 0, 0};
     std::optional<std::uint32_t> emissionTexture{};
+    // The path tracer's material; without it, it follows a rule from the Phong coefficients.
+    std::optional<MetallicRoughnessFactors> metallicRoughness{};
+    // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
+    std::optional<std::uint32_t> metallicRoughnessTexture{};
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.
@@ -107,6 +119,8 @@ struct Scene {
     // rays: a model's own copy of its geometry would otherwise add 36 bytes per triangle.
     void dropDescription();
     std::optional<std::uint32_t> findMaterial(const std::string& name) const;
+    // The material of primitives[prim]: a default one when the scene has none (scenes built in code).
+    const Material& materialOf(std::uint32_t prim) const;
     // Makes the camera named `nameOrIndex`, or numbered so (0 is the first in the file), the one
     // rendered (the first takes its place among the others). Throws rt::InputError naming the cameras there are.
     void selectCamera(const std::string& nameOrIndex);

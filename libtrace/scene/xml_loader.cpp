@@ -49,6 +49,7 @@ private:
     void readCamera(const XmlElement& e, bool& seen);
     Vec3 readPoint(pugi::xml_node node) const;
     void readMaterial(const XmlElement& e);
+    void readMetallicRoughness(const XmlElement& e, Material& m);
     void readTexture(const XmlElement& e);
     void resolveTextures();
     void readModel(const XmlElement& e);
@@ -134,7 +135,8 @@ void SceneBuilder::readList(const XmlElement& list) {
         if (tag == "materials")
             readMaterial(XmlElement(file_, item,
                                     {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection",
-                                     "spread", "texture", "emission", "emission_texture"}));
+                                     "spread", "texture", "emission", "emission_texture", "metallic", "roughness",
+                                     "specular_factor", "metallic_roughness_texture"}));
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
@@ -217,12 +219,30 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     m.spread = float(e.nonNegative("spread", m.spread));
     if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
     m.emission = e.color("emission", m.emission);
+    readMetallicRoughness(e, m);
     const auto index = std::uint32_t(scene_.materials.size());
     if (const auto name = e.optionalString("texture"))
         textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});
     if (const auto name = e.optionalString("emission_texture"))
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
+    if (const auto name = e.optionalString("metallic_roughness_texture"))
+        textureUses_.push_back({index, &Material::metallicRoughnessTexture, *name, e.node()});
     scene_.materials.push_back(std::move(m));
+}
+
+// rt extension: the path tracer's glTF metallic-roughness factors, each 0-1; given one, the
+// others take glTF's defaults (metallic 1, roughness 1, specular_factor 1).
+void SceneBuilder::readMetallicRoughness(const XmlElement& e, Material& m) {
+    if (!e.has("metallic") && !e.has("roughness") && !e.has("specular_factor")) return;
+    MetallicRoughnessFactors f{1, 1, 1};
+    const auto factor = [&e](const char* name, float& value) {
+        value = float(e.nonNegative(name, value));
+        if (value > 1) e.fail(std::string("<material> ") + name + " must be between 0 and 1");
+    };
+    factor("metallic", f.metallic);
+    factor("roughness", f.roughness);
+    factor("specular_factor", f.specular);
+    m.metallicRoughness = f;
 }
 
 // rt extension: an image file (any format OpenImageIO reads) or a procedural checker.

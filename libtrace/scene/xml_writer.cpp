@@ -188,6 +188,14 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             node.append_attribute("emission").set_value(numberList({m.emission.r, m.emission.g, m.emission.b}).c_str());
         if (m.emissionTexture)
             node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emissionTexture).c_str());
+        if (const auto& f = m.metallicRoughness) {
+            setNumber(node, "metallic", f->metallic);
+            setNumber(node, "roughness", f->roughness);
+            setNumber(node, "specular_factor", f->specular);
+        }
+        if (m.metallicRoughnessTexture)
+            node.append_attribute("metallic_roughness_texture")
+                .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
     }
 }
 

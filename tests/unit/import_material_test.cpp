@@ -32,6 +32,19 @@ TEST(ImportMaterial, PolishedMetalIsAMirrorOfItsColour) {
     EXPECT_LT(m.spread, 0.01f);
 }
 
+// The path tracer renders the factors themselves (docs/path-tracing.md), clamped as the mapping clamps them.
+TEST(ImportMaterial, TheFactorsAreKeptForThePathTracer) {
+    MetallicRoughness in;
+    in.metallic = 0.25f;
+    in.roughness = 1.5f;
+    in.specularFactor = 0.5f;
+    const Material m = phongFromMetallicRoughness(in);
+    ASSERT_TRUE(m.metallicRoughness);
+    EXPECT_EQ(m.metallicRoughness->metallic, 0.25f);
+    EXPECT_EQ(m.metallicRoughness->roughness, 1.0f);
+    EXPECT_EQ(m.metallicRoughness->specular, 0.5f);
+}
+
 TEST(ImportMaterial, RougherMeansBroaderAndDimmerReflection) {
     MetallicRoughness in;
     in.metallic = 1;

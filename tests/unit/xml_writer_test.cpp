@@ -268,3 +268,34 @@ TEST(XmlLoader, UnknownTexturesAndTypesAreErrors) {
     EXPECT_EQ(error("<textures><texture name=\"t\" file=\"a.png\" wrap=\"tile\"/></textures>"),
               dir.path("s.xml") + ":1: unknown wrap 'tile' (repeat, clamp or mirror)");
 }
+
+// The path tracer's metallic-roughness factors survive a save and a load; a material without
+// them gets none (the path tracer then derives them), and one factor alone takes glTF's
+// defaults for the others.
+TEST(XmlWriter, MetallicRoughnessFactorsRoundTrip) {
+    TempDir dir;
+    const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
+      <materials>
+        <material name="gold" metallic="1" roughness="0.25" specular_factor="0.5"/>
+        <material name="rough" roughness="0.75"/>
+        <material name="thesis"/>
+      </materials></scene>)";
+    const Scene first = loadSceneXml(dir.write("scene.xml", xml), readModelFile);
+    saveSceneXml(first, dir.path("out.xml"));
+    const Scene second = loadSceneXml(dir.path("out.xml"), readModelFile);
+    ASSERT_EQ(second.materials.size(), 3u);
+    ASSERT_TRUE(second.materials[0].metallicRoughness);
+    EXPECT_EQ(second.materials[0].metallicRoughness->metallic, 1.0f);
+    EXPECT_EQ(second.materials[0].metallicRoughness->roughness, 0.25f);
+    EXPECT_EQ(second.materials[0].metallicRoughness->specular, 0.5f);
+    ASSERT_TRUE(second.materials[1].metallicRoughness);
+    EXPECT_EQ(second.materials[1].metallicRoughness->metallic, 1.0f);
+    EXPECT_EQ(second.materials[1].metallicRoughness->roughness, 0.75f);
+    EXPECT_FALSE(second.materials[2].metallicRoughness);
+    const std::string error = inputErrorOf([&] {
+        loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
+            <materials><material name="m" metallic="1.5"/></materials></scene>)"),
+                     readModelFile);
+    });
+    EXPECT_NE(error.find("metallic must be between 0 and 1"), std::string::npos) << error;
+}

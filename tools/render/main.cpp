@@ -62,6 +62,21 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
         ->group(group);
 }
 
+void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Path tracing options (docs/path-tracing.md)";
+    addNamedOption(app, "--integrator", o.render.integrator, rt::kIntegratorNames,
+                   "whitted: the thesis's ray tracer; path: path tracing, -S paths per pixel")
+        ->group(group);
+    app.add_option("--max-bounces", o.render.maxBounces, "Surface bounces a path may take after the camera ray")
+        ->check(numberIn(0, rt::kMaxBounces))
+        ->capture_default_str()
+        ->group(group);
+    app.add_option("--clamp", o.render.clampRadiance,
+                   "Cap indirect samples at this value, trading bias for fewer fireflies (default 0: off)")
+        ->check(CLI::NonNegativeNumber)
+        ->group(group);
+}
+
 void addCameraOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Camera options (applied in this order)";
     app.add_option("--camera", o.camera, "The scene's camera to render: its name or number (0 is the first)")
@@ -145,6 +160,7 @@ int main(int argc, char** argv) {
     rt::tool::addPictureOptions(app, options.render);
     addRenderingOptions(app, options);
     addCameraOptions(app, options);
+    addPathTracingOptions(app, options);
     rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);
     addOtherOptions(app, options);

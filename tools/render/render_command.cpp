@@ -161,6 +161,7 @@ Scene loadWithCamera(const RenderOptions& o) {
         import.parameters.insert_or_assign(std::move(name), std::move(value));
     }
     import.aspect = double(o.render.width) / double(o.render.height);
+    import.emittersLight = o.render.integrator == Integrator::Path;
     Scene scene = loadScene(o.scenePath, import);
     applyOverrides(scene.camera, cameraOverrides(o), scene.primitives.bounds(), Real(import.aspect));
     return scene;

@@ -1,0 +1,59 @@
+// What the path tracer's next-event estimation samples: the scene's point lights, its emissive
+// triangles as area lights (emitting from their front, the side their winding faces), and a non-black background as a
+// constant environment, each picked in proportion to an estimate of the power it sends into the scene (pbrt-v4's power
+// light sampler). Emissive spheres, cylinders and cones are not sampled: they light the scene through the paths that
+// hit them (docs/path-tracing.md).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "core/color.h"
+#include "core/vec3.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+struct LightSample {
+    enum class Source { Point, Triangle, Environment };
+    Source source = Source::Point;
+    std::uint32_t index = 0;  // Point: in Scene::lights; Triangle: in Scene::primitives
+    Real b1 = 0, b2 = 0;      // Triangle: the point's barycentric weights of p1 and p2
+    Vec3 direction;           // unit, from the shading point
+    Real distance = kInfinity;
+    Real pdf = 0;  // per unit solid angle, the choice of the light included; Point: the choice only
+    bool delta() const { return source == Source::Point; }
+};
+
+class LightDistribution {
+public:
+    // The emitters of a flattened scene: materials with a non-black emission make their
+    // triangles area lights (the emission texture is not part of the estimate).
+    explicit LightDistribution(const Scene& scene);
+
+    bool empty() const { return cdf_.empty(); }
+    // One light for the point `from`: u picks it, (u1, u2) the point on it.
+    std::optional<LightSample> sample(const Vec3& from, Real u, Real u1, Real u2) const;
+    // The density per solid angle with which sample() would have chosen the point at `distance`
+    // along unit `direction` from the shading point on primitive `prim` (0: not an area light),
+    // and the background's direction, for multiple importance sampling.
+    Real pdfTriangle(std::uint32_t prim, const Vec3& direction, Real distance) const;
+    Real pdfEnvironment() const { return environmentProbability_ / (4 * kPi); }
+
+private:
+    struct Entry {
+        LightSample::Source source;
+        std::uint32_t index;
+    };
+    Real probability(std::size_t entry) const;
+
+    const Scene& scene_;
+    std::vector<Entry> entries_;
+    std::vector<double> cdf_;  // running sums of power, normalised to end at 1
+    std::unordered_map<std::uint32_t, std::size_t> triangleEntry_;
+    Real environmentProbability_ = 0;
+};
+
+}  // namespace rt

@@ -1,0 +1,197 @@
+#include "render/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+
+namespace {
+
+// Russian roulette starts after this many bounces, and never ends a path with a higher
+// probability than 1 - kMinSurvival (pbrt-v4 does the same).
+constexpr int kRouletteBounces = 3;
+constexpr Real kMinSurvival = Real(0.05);
+
+// Veach's power heuristic (beta = 2) for one sample of each strategy.
+Real powerHeuristic(Real pdf, Real otherPdf) {
+    const Real a = pdf * pdf, b = otherPdf * otherPdf;
+    return a + b > 0 ? a / (a + b) : 0;
+}
+
+float maxComponent(const Color& c) { return std::max({c.r, c.g, c.b}); }
+
+// The shading frame: tangent, bitangent, normal (z of the BSDF's local frame).
+struct Frame {
+    Vec3 axes[3];
+
+    explicit Frame(const Vec3& n) {
+        orthonormalBasis(n, axes[0], axes[1]);
+        axes[2] = n;
+    }
+    Vec3 toLocal(const Vec3& v) const { return {dot(v, axes[0]), dot(v, axes[1]), dot(v, axes[2])}; }
+    Vec3 toWorld(const Vec3& v) const { return axes[0] * v.x + axes[1] * v.y + axes[2] * v.z; }
+};
+
+// The frame of the shading normal, unless the viewer is below it (an interpolated normal can
+// face away from a grazing ray): then the geometric normal's.
+Frame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
+    const Frame shading(s.shadingNormal);
+    return dot(toViewer, s.shadingNormal) > 0 ? shading : Frame(s.geometricNormal);
+}
+
+}  // namespace
+
+PbrParameters pbrParametersOf(const Material& m, const Color& color) {
+    if (m.metallicRoughness)
+        return {color, m.metallicRoughness->metallic, m.metallicRoughness->roughness, m.metallicRoughness->specular};
+    // The inverse of import/phong_from_pbr.h: the spread is the lobe's alpha, and the Phong
+    // exponent n matches a lobe of alpha = sqrt(2 / (n + 2)) (Walter et al. 2007, 5.2).
+    const float alpha = m.reflection > 0 ? m.spread : std::sqrt(2 / (std::max(m.shininess, 0.0f) + 2));
+    return {color, std::clamp(m.reflection, 0.0f, 1.0f), std::clamp(std::sqrt(alpha), 0.0f, 1.0f),
+            m.specular > 0 ? 1.0f : 0.0f};
+}
+
+PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+                       const ImageTextures* images)
+    : scene_(scene),
+      accel_(accel),
+      settings_(settings),
+      camera_(scene.camera, settings.width, settings.height),
+      lights_(scene),
+      epsilon_(secondaryRayOffset(scene.primitives)),
+      images_(images) {}
+
+Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs*) const {
+    const int n = settings_.pixelSamples;
+    Color sum;
+    int hits = 0;
+    for (int i = 0; i < n; ++i) {
+        SobolSampler sampler{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i), settings_.seed};
+        const auto [sx, sy] = sampler.next2D();  // a box filter over the pixel
+        ++counters.camera.rays;
+        bool seen = false;
+        const Color sample = radiance(camera_.at(Real(x) + sx, Real(y) + sy), sampler, counters, seen);
+        hits += seen;
+        if (isFinite(sample))
+            sum += sample;
+        else
+            counters.nonFinite.add(x, y);
+    }
+    coverage = float(hits) / float(n);
+    return sum * (1.0f / float(n));
+}
+
+Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCounters& counters, bool& seen) const {
+    Color result, throughput{1, 1, 1};
+    Ray ray = cameraRay;
+    Real bsdfPdf = 0;  // the density of the direction `ray` was sampled with, for MIS at the emitter it hits
+    seen = false;
+    for (int bounce = 0;; ++bounce) {
+        Hit hit;
+        if (!accel_.intersect(ray, kInfinity, hit, bounce == 0 ? counters.camera : counters.reflection)) {
+            if (bounce == 0) return scene_.background;
+            const Real weight = powerHeuristic(bsdfPdf, lights_.pdfEnvironment());
+            result += clampIndirect(throughput * scene_.background * float(weight), bounce);
+            break;
+        }
+        seen = seen || bounce == 0;
+        const SurfacePoint s = surfaceAt(scene_.primitives, ray, hit);
+        const Material& m = scene_.materialOf(hit.prim);
+        if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {
+            const Real weight =
+                bounce == 0 ? 1 : powerHeuristic(bsdfPdf, lights_.pdfTriangle(hit.prim, ray.direction, hit.t));
+            result += clampIndirect(throughput * emitted * float(weight), bounce);
+        }
+        if (bounce == settings_.maxBounces) break;
+
+        const Vec3 toViewer = -ray.direction;
+        const Frame frame = shadingFrame(s, toViewer);
+        const Vec3 wo = frame.toLocal(toViewer);
+        const PbrBsdf bsdf(pbrParametersAt(m, s));
+        result += clampIndirect(throughput * directLight(s, bsdf, frame.axes, wo, sampler, counters), bounce + 1);
+
+        const Real lobe = sampler.next1D();
+        const auto [u1, u2] = sampler.next2D();
+        const std::optional<BsdfSample> next = bsdf.sample(wo, lobe, u1, u2);
+        if (!next) break;
+        const Vec3 wi = frame.toWorld(next->wi);
+        if (dot(wi, s.geometricNormal) <= 0) break;  // below the true surface: absorbed
+        throughput = throughput * next->weight;
+        bsdfPdf = next->pdf;
+        ray = {s.point + s.geometricNormal * epsilon_, wi};
+        ++counters.reflection.rays;
+
+        if (bounce + 1 >= kRouletteBounces) {
+            const Real survival = std::clamp(Real(maxComponent(throughput)), kMinSurvival, Real(1));
+            if (sampler.next1D() >= survival) break;
+            throughput = throughput * float(1 / survival);
+        }
+    }
+    return result;
+}
+
+Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const Vec3 (&axes)[3], const Vec3& wo,
+                              SobolSampler& sampler, RenderCounters& counters) const {
+    const Real pick = sampler.next1D();
+    const auto [u1, u2] = sampler.next2D();
+    if (lights_.empty()) return {};
+    const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
+    const std::optional<LightSample> light = lights_.sample(origin, pick, u1, u2);
+    if (!light || dot(light->direction, s.geometricNormal) <= 0) return {};
+    const Vec3 wi{dot(light->direction, axes[0]), dot(light->direction, axes[1]), dot(light->direction, axes[2])};
+    const Color f = bsdf.evaluate(wo, wi);
+    if (f == Color{}) return {};
+    const Color arriving = lightRadiance(*light, origin);
+    if (arriving == Color{}) return {};
+    // the shadow ray stops short of an area light's own surface
+    const Real tMax =
+        light->source == LightSample::Source::Triangle ? light->distance * (1 - Real(1e-4)) : light->distance;
+    ++counters.shadow.rays;
+    if (accel_.occluded({origin, light->direction}, tMax, counters.shadow)) return {};
+    const Real weight = light->delta() ? 1 : powerHeuristic(light->pdf, bsdf.pdf(wo, wi));
+    return f * arriving * float(weight / light->pdf);
+}
+
+// Emitters shine from their front (a triangle's winding, a sphere's outside) only: a light
+// panel under a ceiling would otherwise also fill the gap above it, which paths find rarely
+// and then bring back as fireflies. (The Whitted tracer shows emission from both sides.)
+PbrParameters PathTracer::pbrParametersAt(const Material& m, const SurfacePoint& s) const {
+    PbrParameters p = pbrParametersOf(m, surfaceColor(scene_, m, s, images_));
+    if (m.metallicRoughnessTexture) {
+        const Color t = textureColor(scene_, *m.metallicRoughnessTexture, s, images_);
+        p.metallic = std::clamp(p.metallic * t.b, 0.0f, 1.0f);
+        p.roughness = std::clamp(p.roughness * t.g, 0.0f, 1.0f);
+    }
+    return p;
+}
+
+Color PathTracer::emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const {
+    if (m.emission == Color{} || dot(scene_.primitives.normal(hit.prim, s.point), ray.direction) >= 0) return {};
+    return surfaceEmission(scene_, m, s, images_);
+}
+
+Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) const {
+    switch (light.source) {
+        case LightSample::Source::Point:  // unattenuated, as the thesis's lights (docs/path-tracing.md)
+            return scene_.lights[light.index].color;
+        case LightSample::Source::Triangle: {
+            const Ray toLight{from, light.direction};
+            const Hit there{light.distance, light.index, light.b1, light.b2};
+            return surfaceEmission(scene_, scene_.materialOf(light.index), surfaceAt(scene_.primitives, toLight, there),
+                                   images_);
+        }
+        case LightSample::Source::Environment:
+            return scene_.background;
+    }
+    return {};
+}
+
+// `interactions`: how many surfaces the light has met on its way to the camera; from two on it
+// is indirect light, which --clamp caps (a biased cure for fireflies, off by default).
+Color PathTracer::clampIndirect(const Color& c, int interactions) const {
+    if (settings_.clampRadiance <= 0 || interactions < 2) return c;
+    const float peak = maxComponent(c);
+    return peak > settings_.clampRadiance ? c * (settings_.clampRadiance / peak) : c;
+}
+
+}  // namespace rt

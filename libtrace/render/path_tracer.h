@@ -1,0 +1,62 @@
+// The path tracer beside the thesis's Whitted tracer (rt-render --integrator path; the thesis's
+// chapter 5 proposes its ray tracer as the base for one). Unidirectional path tracing with
+// next-event estimation, combined with the BSDF's own samples by multiple importance sampling
+// with the power heuristic (Veach 1997, ch. 9); Russian roulette after three bounces; the glTF
+// metallic-roughness BRDF (render/pbr_bsdf.h); per-pixel Owen-scrambled Sobol samples
+// (render/sobol_sampler.h), so the image has the same bits for any thread count or region split.
+// docs/path-tracing.md describes the model, the rule for thesis materials and the validation.
+#pragma once
+
+#include "accel/accelerator.h"
+#include "render/aov.h"
+#include "render/camera_rays.h"
+#include "render/light_distribution.h"
+#include "render/pbr_bsdf.h"
+#include "render/render_settings.h"
+#include "render/render_stats.h"
+#include "render/sampling.h"
+#include "render/sobol_sampler.h"
+#include "render/surface.h"
+#include "render/texture.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+// The BRDF parameters of material m whose colour at the point is `color`: its own
+// metallic-roughness factors, or for a thesis (Phong) material: metallic = reflection,
+// roughness from the mirror's spread or the Phong exponent, no specular layer when k_s = 0.
+PbrParameters pbrParametersOf(const Material& m, const Color& color);
+
+class PathTracer {
+public:
+    // As Tracer: the scene flattened, `accel` built over it; all three outlive the tracer.
+    PathTracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+               const ImageTextures* images = nullptr);
+
+    // The mean of the pixel's -S paths; coverage is the fraction whose camera ray hit something.
+    // Non-finite samples count as black and are recorded in counters.nonFinite.
+    Color pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs = nullptr) const;
+
+    // The radiance arriving along a camera ray; `seen` tells whether it hit anything.
+    Color radiance(const Ray& ray, SobolSampler& sampler, RenderCounters& counters, bool& seen) const;
+
+private:
+    // Light from one next-event sample at s, weighted against the BSDF's density.
+    Color directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const Vec3 (&frame)[3], const Vec3& wo,
+                      SobolSampler& sampler, RenderCounters& counters) const;
+    // The BRDF's parameters at s: the material's, its metallic-roughness texture applied.
+    PbrParameters pbrParametersAt(const Material& m, const SurfacePoint& s) const;
+    Color emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const;
+    Color lightRadiance(const LightSample& light, const Vec3& from) const;
+    Color clampIndirect(const Color& c, int bounce) const;
+
+    const Scene& scene_;
+    const Accelerator& accel_;
+    RenderSettings settings_;
+    CameraRays camera_;
+    LightDistribution lights_;
+    Real epsilon_;
+    const ImageTextures* images_;
+};
+
+}  // namespace rt

@@ -1,0 +1,199 @@
+#include "render/pbr_bsdf.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/sobol_sampler.h"
+
+namespace rt {
+
+namespace {
+
+// Below this alpha the lobe is a mirror for every practical purpose, and D's peak would
+// overflow float; glTF's roughness 0 renders as alpha 1e-3 (roughness 0.03).
+constexpr Real kMinAlpha = Real(1e-3);
+// The reflectance at normal incidence of a dielectric of ior 1.5: ((1.5 - 1) / (1.5 + 1))^2.
+constexpr float kDielectricF0 = 0.04f;
+
+Real schlickWeight(Real cosine) {
+    const Real m = std::clamp(1 - cosine, Real(0), Real(1));
+    return (m * m) * (m * m) * m;
+}
+
+Real smithG1(const Vec3& w, Real alpha) { return 1 / (1 + smithLambda(w, alpha)); }
+
+// Heitz 2018, section 3: stretch the view direction to the hemisphere configuration, sample
+// a point on the projected disc (denser on the visible half), lift it to the hemisphere and
+// unstretch the normal.
+Vec3 sampleVisibleNormal(const Vec3& wo, Real alpha, Real u1, Real u2) {
+    const Vec3 v = normalize(Vec3{alpha * wo.x, alpha * wo.y, wo.z});
+    const Real lengthSq = v.x * v.x + v.y * v.y;
+    const Vec3 t1 = lengthSq > 0 ? Vec3{-v.y, v.x, 0} / std::sqrt(lengthSq) : Vec3{1, 0, 0};
+    const Vec3 t2 = cross(v, t1);
+    const Real r = std::sqrt(u1);
+    const Real phi = 2 * kPi * u2;
+    const Real p1 = r * std::cos(phi);
+    const Real s = Real(0.5) * (1 + v.z);
+    const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
+    const Vec3 n = t1 * p1 + t2 * p2 + v * std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
+    return normalize(Vec3{alpha * n.x, alpha * n.y, std::max(Real(0), n.z)});
+}
+
+Vec3 sampleCosine(Real u1, Real u2) {
+    const Real r = std::sqrt(u1);
+    const Real phi = 2 * kPi * u2;
+    return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(Real(0), 1 - u1))};
+}
+
+// The directional albedo E(mu, roughness) of the GGX lobe with Fresnel 1, and its cosine-weighted
+// average, tabulated once (Kulla and Conty 2017, "Revisiting Physically Based Shading at
+// Imageworks"): the energy single scattering loses, 1 - E, is what the multiple-scattering lobe
+// gives back. Each entry is a 64-sample visible-normal estimate (weight G2 / G1, little variance)
+// on a fixed (0,2)-sequence, so the table is the same on every run.
+class GgxAlbedoTable {
+public:
+    static const GgxAlbedoTable& get() {
+        static const GgxAlbedoTable table;
+        return table;
+    }
+    Real albedo(Real mu, Real roughness) const { return lookup(albedo_, mu, roughness); }
+    Real average(Real roughness) const {
+        const Real r = std::clamp(roughness * kSize - Real(0.5), Real(0), Real(kSize - 1));
+        const int j = std::min(int(r), kSize - 2);
+        return average_[j] + (average_[j + 1] - average_[j]) * (r - Real(j));
+    }
+
+private:
+    static constexpr int kSize = 32, kSamples = 64;
+
+    GgxAlbedoTable() {
+        for (int j = 0; j < kSize; ++j) {
+            const Real roughness = (Real(j) + Real(0.5)) / kSize;
+            const Real alpha = std::max(roughness * roughness, kMinAlpha);
+            Real weighted = 0;
+            for (int i = 0; i < kSize; ++i) {
+                const Real mu = (Real(i) + Real(0.5)) / kSize;
+                const Vec3 wo{std::sqrt(1 - mu * mu), 0, mu};
+                Real sum = 0;
+                for (std::uint32_t k = 0; k < kSamples; ++k) {
+                    const Real u1 = (Real(k) + Real(0.5)) / kSamples;
+                    const Real u2 = Real(sobol_detail::reverseBits(k)) * Real(0x1p-32);
+                    const Vec3 h = sampleVisibleNormal(wo, alpha, u1, u2);
+                    const Vec3 wi = h * (2 * dot(wo, h)) - wo;
+                    if (wi.z > 0)
+                        sum += (1 + smithLambda(wo, alpha)) / (1 + smithLambda(wo, alpha) + smithLambda(wi, alpha));
+                }
+                albedo_[i][j] = sum / kSamples;
+                weighted += albedo_[i][j] * mu;
+            }
+            average_[j] = 2 * weighted / kSize;
+        }
+    }
+    static Real lookup(const Real (&t)[kSize][kSize], Real mu, Real roughness) {
+        const Real x = std::clamp(mu * kSize - Real(0.5), Real(0), Real(kSize - 1));
+        const Real y = std::clamp(roughness * kSize - Real(0.5), Real(0), Real(kSize - 1));
+        const int i = std::min(int(x), kSize - 2), j = std::min(int(y), kSize - 2);
+        const Real fx = x - Real(i), fy = y - Real(j);
+        const Real low = t[i][j] + (t[i + 1][j] - t[i][j]) * fx;
+        const Real high = t[i][j + 1] + (t[i + 1][j + 1] - t[i][j + 1]) * fx;
+        return low + (high - low) * fy;
+    }
+
+    Real albedo_[kSize][kSize];  // [mu][roughness]
+    Real average_[kSize];
+};
+
+}  // namespace
+
+Real ggxD(const Vec3& h, Real alpha) {
+    if (h.z <= 0) return 0;
+    const Real a2 = alpha * alpha;
+    const Real d = h.z * h.z * (a2 - 1) + 1;
+    return a2 / (kPi * d * d);
+}
+
+Real smithLambda(const Vec3& w, Real alpha) {
+    const Real cos2 = w.z * w.z;
+    if (cos2 <= 0) return kInfinity;
+    const Real tan2 = std::max(Real(0), 1 - cos2) / cos2;
+    return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
+}
+
+PbrBsdf::PbrBsdf(const PbrParameters& p) : p_(p), alpha_(std::max(Real(p.roughness) * Real(p.roughness), kMinAlpha)) {
+    const GgxAlbedoTable& table = GgxAlbedoTable::get();
+    averageAlbedo_ = table.average(Real(p.roughness));
+    // Kulla and Conty's Fresnel for light that scatters several times: with F_avg, Schlick's
+    // Fresnel averaged over the hemisphere, F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),
+    // so that a white metal (F_avg = 1) gives back exactly what single scattering lost.
+    const auto tint = [this](float f0) {
+        const Real average = f0 + (1 - f0) / 21;
+        return float(average * average * averageAlbedo_ / (1 - average * (1 - averageAlbedo_)));
+    };
+    multipleScatteringFresnel_ = {tint(p.baseColor.r), tint(p.baseColor.g), tint(p.baseColor.b)};
+}
+
+// The metal's multiple-scattering lobe: F_ms (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)), a
+// diffuse-like lobe whose integral is F_ms (1 - E(mu_o)), the energy the single-scattering lobe
+// lost at wo's angle.
+Color PbrBsdf::multipleScattering(const Vec3& wo, const Vec3& wi) const {
+    if (p_.metallic <= 0 || !(averageAlbedo_ < 1)) return {};
+    const GgxAlbedoTable& table = GgxAlbedoTable::get();
+    const Real lost = (1 - table.albedo(wo.z, p_.roughness)) * (1 - table.albedo(wi.z, p_.roughness));
+    return multipleScatteringFresnel_ * float(lost / (kPi * (1 - averageAlbedo_)));
+}
+
+Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
+    if (wo.z <= 0 || wi.z <= 0) return {};
+    const Vec3 h = normalize(wo + wi);
+    const auto s = float(schlickWeight(dot(wo, h)));
+    const float dielectricF = p_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
+    const Color metalF = p_.baseColor + (Color{1, 1, 1} + p_.baseColor * -1.0f) * s;
+    const auto dv =
+        float(ggxD(h, alpha_) / ((1 + smithLambda(wo, alpha_) + smithLambda(wi, alpha_)) * 4 * wo.z * wi.z));
+    const float m = p_.metallic;
+    const Color diffuse = p_.baseColor * ((1 - m) * (1 - dielectricF) / float(kPi));
+    const Color glossy = (Color{1, 1, 1} * ((1 - m) * dielectricF) + metalF * m) * dv;
+    return (diffuse + glossy + multipleScattering(wo, wi) * m) * float(wi.z);
+}
+
+// The share of reflected light the glossy lobe carries at wo's angle, by Schlick's Fresnel at
+// the normal: the better the lobe choice follows f, the less noise.
+Real PbrBsdf::glossyProbability(const Vec3& wo) const {
+    const Real s = schlickWeight(wo.z);
+    const Real dielectricF = p_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
+    const Real metalF = luminance(p_.baseColor) + (1 - luminance(p_.baseColor)) * s;
+    const Real m = p_.metallic;
+    const Real glossy = (1 - m) * dielectricF + m * metalF * GgxAlbedoTable::get().albedo(wo.z, p_.roughness);
+    // the cosine-sampled share: the base, and the metal's multiple scattering
+    const Real diffuse =
+        (1 - m) * (1 - dielectricF) * luminance(p_.baseColor) +
+        m * luminance(multipleScatteringFresnel_) * (1 - GgxAlbedoTable::get().albedo(wo.z, p_.roughness));
+    return glossy + diffuse > 0 ? glossy / (glossy + diffuse) : Real(0.5);
+}
+
+Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+    if (wo.z <= 0 || wi.z <= 0) return 0;
+    const Vec3 h = normalize(wo + wi);
+    // visible normals: D_wo(h) = G1(wo) (wo.h) D(h) / wo.z, and d(wi)/d(h) = 1 / (4 wo.h)
+    const Real glossy = smithG1(wo, alpha_) * ggxD(h, alpha_) / (4 * wo.z);
+    const Real diffuse = wi.z / kPi;
+    const Real p = glossyProbability(wo);
+    return p * glossy + (1 - p) * diffuse;
+}
+
+std::optional<BsdfSample> PbrBsdf::sample(const Vec3& wo, Real u1, Real u2, Real u3) const {
+    if (wo.z <= 0) return std::nullopt;
+    Vec3 wi;
+    if (u1 < glossyProbability(wo)) {
+        const Vec3 h = sampleVisibleNormal(wo, alpha_, u2, u3);
+        wi = h * (2 * dot(wo, h)) - wo;
+    } else {
+        wi = sampleCosine(u2, u3);
+    }
+    if (wi.z <= 0) return std::nullopt;
+    const Real density = pdf(wo, wi);
+    if (!(density > 0)) return std::nullopt;
+    return BsdfSample{wi, evaluate(wo, wi) * float(1 / density), density};
+}
+
+}  // namespace rt
