@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rt builds with, if any is missing. Needs root (or sudo).
+# With --checks, or in CI (CI=true), also clang and its runtimes for the tsan and fuzz presets.
 set -euo pipefail
 packages=(
     cmake ninja-build g++ pkg-config ccache
@@ -7,6 +8,9 @@ packages=(
     libpugixml-dev libgtest-dev libbenchmark-dev
     openimageio-tools opencolorio-tools
 )
+if [ "${1:-}" = --checks ] || [ "${CI:-}" = true ]; then
+    packages+=(clang-14 libclang-rt-14-dev libomp-14-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
