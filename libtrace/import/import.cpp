@@ -5,14 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
-#include <sstream>
 
 #include "core/error.h"
 #include "import/assimp_import.h"
 #include "import/gltf_import.h"
 #include "import/obj_import.h"
 #include "import/scene_defaults.h"
+#include "scene/input_file.h"
 #include "scene/raw_model.h"
 
 namespace rt {
@@ -77,12 +76,6 @@ Transform rootTransform(const ImportOptions& options, UpAxis importerUp) {
     return Transform::scale(Vec3(s, s, s)) * Transform::rotateX(-turns * kPi / 2);
 }
 
-std::string readStandardInput() {
-    std::ostringstream bytes;
-    bytes << std::cin.rdbuf();
-    return bytes.str();
-}
-
 bool fileStartsWith(const std::string& path, std::string_view magic) {
     std::ifstream in(path, std::ios::binary);
     std::string head(magic.size(), '\0');
@@ -100,6 +93,7 @@ ImportResult importScene(const std::string& path, const ImportOptions& options) 
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a model file");
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+    inputFileSize(path);  // refuses a file beyond --max-input before any parser sees it
     const std::string ext = lowerCaseExtension(path);
     ImportResult result = isGltfPath(path) || hasGlbMagic(path) ? importGltf(path, options, rootTransform(options))
                           : ext == ".obj"                       ? importObj(path, options, rootTransform(options))

@@ -1,6 +1,7 @@
 #include "import/load_scene.h"
 
 #include "import/model_file.h"
+#include "scene/input_file.h"
 #include "scene/xml_loader.h"
 
 namespace rt {

@@ -18,7 +18,7 @@ for tool in "$RT_RENDER" "$RT_INSPECT"; do
     expect_exit 2 "$tool" "$SCENE" --threads 1025
     expect_one_error "$name" "--threads: 1025 is not in 0-1024"
     expect_exit 2 "$tool" "$SCENE" --kd-traversal-cost -2
-    expect_one_error "$name" "--kd-traversal-cost: -2 is not a positive number"
+    expect_one_error "$name" "--kd-traversal-cost: -2 is not in 0.001-1000"
 done
 
 for tool in "$RT_RENDER" "$RT_INSPECT" "$RT_CONVERT"; do

@@ -14,10 +14,11 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
         ->check(numberIn(1, 1 << 20))->capture_default_str()->group(group);
     app.add_flag("--bsp-round-robin", bsp.roundRobin, "BSP: split X, Y, Z in turn instead of the longest axis")
         ->group(group);
+    // Only their ratio matters; beyond these bounds a cost is a typo, and products of it overflow.
     app.add_option("--kd-traversal-cost", kd.traversalCost, "KD: SAH cost of a traversal step")
-        ->check(positiveNumber())->capture_default_str()->group(group);
+        ->check(numberIn(1e-3, 1e3))->capture_default_str()->group(group);
     app.add_option("--kd-intersection-cost", kd.intersectionCost, "KD: SAH cost of an intersection test")
-        ->check(positiveNumber())->capture_default_str()->group(group);
+        ->check(numberIn(1e-3, 1e3))->capture_default_str()->group(group);
     app.add_option("--kd-empty-bonus", kd.emptyBonus, "KD: cost factor of splits cutting off empty space (1 = none)")
         ->check(numberIn(0.0, 1.0))->capture_default_str()->group(group);
     app.add_option("--kd-max-depth", kd.maxDepth, "KD: maximum depth [default: 8 + 1.3 log2 N]")

@@ -26,6 +26,11 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o, std::string& accelName
         ->group(group);
     app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
         ->group(group);
+    rt::tool::addMaxInputOption(app)->group(group);
+    app.add_option("--max-memory", o.maxMemoryGb,
+                   "Refuse to start a render estimated to need more memory than this, in GB [default: 3/4 of the "
+                   "machine's]")
+        ->check(rt::tool::numberIn(0.01, 1e6))->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
 }
 

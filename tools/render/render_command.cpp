@@ -1,5 +1,6 @@
 #include "render_command.h"
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "core/error.h"
 #include "import/load_scene.h"
 #include "progress.h"
+#include "render/memory_estimate.h"
 #include "render/renderer.h"
 #include "stats_report.h"
 #include "version.h"
@@ -17,12 +19,20 @@
 namespace rt::render_tool {
 
 PixelWindow parseRegion(const std::string& text) {
-    PixelWindow w;
-    int used = -1;
-    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%n", &w.x0, &w.y0, &w.x1, &w.y1, &used) != 4 ||
-        used != int(text.size()))
-        throw InputError("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
-    return w;
+    // from_chars, not sscanf: a number beyond int is an error here, where %d wrapped
+    // 4294967306 to 10 and rendered a region nobody asked for.
+    const InputError bad("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
+    int corners[4];
+    const char* at = text.data();
+    const char* const end = at + text.size();
+    for (int i = 0; i < 4; ++i) {
+        if (i > 0 && (at == end || *at++ != ',')) throw bad;
+        const auto [next, ec] = std::from_chars(at, end, corners[i]);
+        if (ec != std::errc()) throw bad;
+        at = next;
+    }
+    if (at != end) throw bad;
+    return {corners[0], corners[1], corners[2], corners[3]};
 }
 
 namespace {
@@ -105,8 +115,12 @@ int runRender(RenderOptions o) {
     prepareOutputs(o, output);
     const ProgressMode progress = progressMode(o.progress, o.quiet);
 
+    const std::uint64_t memoryLimit = o.maxMemoryGb ? std::uint64_t(*o.maxMemoryGb * 1e9) : defaultMemoryLimit();
+    checkMemoryLimit(estimateRenderMemory(o.render, 0, !o.preprocessOnly), memoryLimit);  // before the scene loads
+
     Scene scene = loadScene(o.scenePath);
     scene.dropDescription();
+    checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
     RenderStats stats;
     const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);
     const AccelStats accelStats = accel->stats();

@@ -26,6 +26,7 @@ struct RenderOptions {
     bool statsLine = false;               // -b
     bool preprocessOnly = false;          // -p
     std::optional<std::string> statsJson;  // --stats-json FILE ("-" is standard output)
+    std::optional<double> maxMemoryGb;    // --max-memory GB; default: rt::defaultMemoryLimit()
 };
 
 // "x0,y0,x1,y1" with x1 and y1 exclusive; throws rt::InputError if it is not four integers.
