@@ -39,10 +39,11 @@ expect_exit 2 "$RT_RENDER" "$WORK/s.xml" "${small[@]}"
 expect_one_error rt-render "s.xml:1: DOCTYPE is not allowed"
 scene_with '<lights><light r="1e308"/></lights>'
 expect_exit 2 "$RT_RENDER" "$WORK/s.xml" "${small[@]}"
-expect_one_error rt-render "s.xml:1: <light> attribute 'r' is too large"
+expect_one_error rt-render "s.xml:1: <light> attribute 'r'\(: '1e308' is not a finite number\| is too large\)"
 scene_with '<objects><scale factor="1e-320"><sphere r="1"/></scale></objects>'
 expect_exit 2 "$RT_RENDER" "$WORK/s.xml" "${small[@]}"
-expect_one_error rt-render "s.xml:1: <scale> makes the transform singular or not finite"
+# (in the float build 1e-320 reads as zero, which is said so)
+expect_one_error rt-render "s.xml:1: <scale> \(makes the transform singular or not finite\|factors must not be zero\)"
 
 # glTF buffers outside the model's folder are read only when the user says so.
 mkdir -p "$WORK/model"

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <type_traits>
 #include <sstream>
 
 #include "import/model_file.h"
@@ -346,6 +347,8 @@ std::string repeated(const std::string& text, int times) {
     return all;
 }
 
+constexpr bool kFloatGeometry = std::is_same_v<Real, float>;
+
 // Line 1 <scene>, line 2 the camera, the case's content from line 3.
 const BadScene kBadScenes[] = {
     {"malformed XML", sceneWith("<objects>\n<sphere r=\"1\">\n</objects>\n"),
@@ -411,10 +414,13 @@ const BadScene kBadScenes[] = {
      "s.xml:4: <rotate> takes y or ry, not both"},
     {"negative colour", sceneWith("<lights>\n<light g=\"-1\"/></lights>"),
      "s.xml:4: <light> attribute 'g' must not be negative"},
+    // Beyond float: too large for the colour in the double build, for any number in the float build.
     {"colour beyond float", sceneWith("<lights>\n<light r=\"1e308\"/></lights>"),
-     "s.xml:4: <light> attribute 'r' is too large"},
+     kFloatGeometry ? "s.xml:4: <light> attribute 'r': '1e308' is not a finite number"
+                    : "s.xml:4: <light> attribute 'r' is too large"},
     {"material factor beyond float", sceneWith("<materials>\n<material name=\"m\" diffuse=\"1e39\"/></materials>"),
-     "s.xml:4: <material> attribute 'diffuse' is too large"},
+     kFloatGeometry ? "s.xml:4: <material> attribute 'diffuse': '1e39' is not a finite number"
+                    : "s.xml:4: <material> attribute 'diffuse' is too large"},
     {"transforms nested too deep",
      sceneWith("<objects>\n" + repeated("<translate>", 300) + repeated("</translate>", 300) + "</objects>"),
      "s.xml:4: transforms nested deeper than 256"},
