@@ -2,6 +2,7 @@
 
 #include "core/text.h"
 #include "import/model_file.h"
+#include "scene/input_file.h"
 #include "scene/xml_loader.h"
 
 namespace rt {

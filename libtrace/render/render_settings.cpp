@@ -3,11 +3,13 @@
 #include <string>
 
 #include "core/error.h"
+#include "render/memory_estimate.h"
 
 namespace rt {
 
 namespace {
-// The most pixels rendered at once: the framebuffer (12 bytes a pixel) stays below 3.3 GB.
+// The pixel count bounds one render, whatever --max-memory allows: 2^28 pixels
+// (16384 x 16384) take 6.4 GB (render/memory_estimate.h).
 constexpr long long kMaxPixels = 1ll << 28;
 }  // namespace
 
@@ -15,9 +17,18 @@ void validate(const RenderSettings& s) {
     if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
         throw InputError("image size " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is outside 1-" +
                          std::to_string(kMaxImageSide));
+    // Before the window's size is taken: x1 - x0 of a region from INT_MIN to INT_MAX overflows.
+    if (s.region && !s.region->inside(s.width, s.height)) {
+        const PixelWindow& r = *s.region;
+        throw InputError("region " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) +
+                         "," + std::to_string(r.y1) + " is empty or outside the " + std::to_string(s.width) + "x" +
+                         std::to_string(s.height) + " image");
+    }
     if (const PixelWindow w = s.window(); (long long)w.width() * w.height() > kMaxPixels)
         throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
-                         " pixels at once needs more than 3 GB; render it in regions (--region)");
+                         " pixels at once needs more than " +
+                         gigabytes(std::uint64_t(kMaxPixels) * kRenderBytesPerPixel) +
+                         "; render it in regions (--region)");
     if (s.reflectionDepth < 0 || s.reflectionDepth > kMaxReflectionDepth)
         throw InputError("reflection depth " + std::to_string(s.reflectionDepth) + " is outside 0-" +
                          std::to_string(kMaxReflectionDepth));
@@ -26,12 +37,6 @@ void validate(const RenderSettings& s) {
     if (s.distributedSamples < 1 || s.distributedSamples > kMaxSamples)
         throw InputError("distributed ray tracing samples must be 1-" + std::to_string(kMaxSamples));
     if (s.threads < 0) throw InputError("the thread count must not be negative");
-    if (s.region && !s.region->inside(s.width, s.height)) {
-        const PixelWindow& r = *s.region;
-        throw InputError("region " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) +
-                         "," + std::to_string(r.y1) + " is empty or outside the " + std::to_string(s.width) + "x" +
-                         std::to_string(s.height) + " image");
-    }
 }
 
 }  // namespace rt

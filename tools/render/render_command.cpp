@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "image/texture_files.h"
 #include "import/load_scene.h"
 #include "progress.h"
+#include "render/memory_estimate.h"
 #include "render/renderer.h"
 #include "render/tiles.h"
 #include "stats_report.h"
@@ -22,11 +24,20 @@
 namespace rt::tool::render {
 
 PixelWindow parseRegion(const std::string& text) {
-    PixelWindow w;
-    int used = -1;
-    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%n", &w.x0, &w.y0, &w.x1, &w.y1, &used) != 4 || used != int(text.size()))
-        throw InputError("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
-    return w;
+    // from_chars, not sscanf: a number beyond int is an error here, where %d wrapped
+    // 4294967306 to 10 and rendered a region nobody asked for.
+    const InputError bad("--region: expected x0,y0,x1,y1 (pixels, x1 and y1 exclusive), got '" + text + "'");
+    int corners[4];
+    const char* at = text.data();
+    const char* const end = at + text.size();
+    for (int i = 0; i < 4; ++i) {
+        if (i > 0 && (at == end || *at++ != ',')) throw bad;
+        const auto [next, ec] = std::from_chars(at, end, corners[i]);
+        if (ec != std::errc()) throw bad;
+        at = next;
+    }
+    if (at != end) throw bad;
+    return {corners[0], corners[1], corners[2], corners[3]};
 }
 
 Vec3 parseVector(const std::string& option, const std::string& text) {
@@ -261,8 +272,12 @@ int runRender(RenderOptions o) {
     if (outputsComplete(o, outputs, frames, progress)) return 0;
     prepareOutputs(o, outputs, frames.first);
 
+    const std::uint64_t memoryLimit = o.maxMemoryGb ? std::uint64_t(*o.maxMemoryGb * 1e9) : defaultMemoryLimit();
+    checkMemoryLimit(estimateRenderMemory(o.render, 0, !o.preprocessOnly), memoryLimit);  // before the scene loads
+
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
+    checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
     const TextureFiles images(scene, scene.warnings);  // before the warnings are shown: it adds its own
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';

@@ -46,6 +46,7 @@ struct RenderOptions {
     int orbit = 0;                      // --orbit N: N frames around the look-at point; 0 is one picture
     std::optional<std::string> frames;  // --frames A..B: only frames A to B (inclusive) of the orbit
     ImportOptions import;               // --flat, for a model file read directly
+    std::optional<double> maxMemoryGb;  // --max-memory GB; default: rt::defaultMemoryLimit()
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.
