@@ -2,8 +2,6 @@
 
 #include <unistd.h>
 
-#include <cstdio>
-
 #include "core/error.h"
 
 namespace rt {
@@ -12,7 +10,8 @@ MemoryEstimate estimateRenderMemory(const RenderSettings& settings, std::size_t 
     MemoryEstimate e;
     if (renders) {
         const PixelWindow w = settings.window();
-        e.image = std::uint64_t(w.width()) * std::uint64_t(w.height()) * kRenderBytesPerPixel;
+        const std::uint64_t perPixel = kRenderBytesPerPixel + (settings.aovs ? kAovBytesPerPixel : 0);
+        e.image = std::uint64_t(w.width()) * std::uint64_t(w.height()) * perPixel;
     }
     e.sceneAndTree = std::uint64_t(primitives) * kRenderBytesPerPrimitive;
     return e;
@@ -22,12 +21,6 @@ std::uint64_t defaultMemoryLimit() {
     const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
     if (pages <= 0 || pageSize <= 0) return std::uint64_t(16) << 30;  // unknown: a typical machine's
     return std::uint64_t(pages) * std::uint64_t(pageSize) / 4 * 3;
-}
-
-std::string gigabytes(std::uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f GB", double(bytes) / 1e9);
-    return text;
 }
 
 void checkMemoryLimit(const MemoryEstimate& e, std::uint64_t limit) {

@@ -7,14 +7,17 @@
 #include <cstdint>
 #include <string>
 
+#include "core/text.h"  // gigabytes(), for the messages
 #include "render/render_settings.h"
 
 namespace rt {
 
 // Measured peaks (docs/robustness.md), rounded up.
-// A pixel: the framebuffer's float RGB and the output's converted copy (16384 x 16384 to PNG
-// peaked at 6.3 GB, 23.5 bytes a pixel).
-constexpr std::uint64_t kRenderBytesPerPixel = 24;
+// A pixel: the framebuffer's float RGB and alpha and the output's converted copies (4096 x 4096
+// to PNG peaked 1.24 GB above the tool's start, 75.5 bytes a pixel).
+constexpr std::uint64_t kRenderBytesPerPixel = 80;
+// With --aov, a pixel's PixelAovs (render/aov.h) and their channels in the EXR (not measured).
+constexpr std::uint64_t kAovBytesPerPixel = 160;
 // A primitive: the scene's geometry and the KD tree's build at its peak (boxes, events of three
 // axes, the references of both children); the Stanford bunny's 69,451 triangles took 260.
 constexpr std::uint64_t kRenderBytesPerPrimitive = 300;
@@ -31,11 +34,8 @@ MemoryEstimate estimateRenderMemory(const RenderSettings& settings, std::size_t 
 // Three quarters of the machine's physical memory: what --max-memory allows unless told.
 std::uint64_t defaultMemoryLimit();
 
-// Throws rt::InputError ("rendering needs about 6.4 GB (image 6.4 GB, scene and tree 0.0 GB),
+// Throws rt::InputError ("rendering needs about 21.5 GB (image 21.5 GB, scene and tree 0.0 GB),
 // more than --max-memory 4.0 GB") when the estimate exceeds `limit` bytes.
 void checkMemoryLimit(const MemoryEstimate& estimate, std::uint64_t limit);
-
-// "6.4 GB", for messages.
-std::string gigabytes(std::uint64_t bytes);
 
 }  // namespace rt

@@ -9,7 +9,7 @@ namespace rt {
 
 namespace {
 // The pixel count bounds one render, whatever --max-memory allows: 2^28 pixels
-// (16384 x 16384) take 6.4 GB (render/memory_estimate.h).
+// (16384 x 16384) take 21.5 GB (render/memory_estimate.h).
 constexpr long long kMaxPixels = 1ll << 28;
 }  // namespace
 

@@ -19,7 +19,7 @@ expect_one_error rt-render "--kd-intersection-cost: 1e-308 is not in 0.001-1000"
 
 # Memory: the estimate is checked before the scene is read or a pixel allocated.
 expect_exit 2 "$RT_RENDER" "$scene" -q -x 16384 -y 16384 --max-memory 4 -o null
-expect_one_error rt-render "rendering needs about 6.4 GB .*more than --max-memory 4.0 GB"
+expect_one_error rt-render "rendering needs about 21.5 GB .*more than --max-memory 4.0 GB"
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" --max-memory 1 -o null
 
 # Input size: a file beyond --max-input is refused before it is read; standard input that never
