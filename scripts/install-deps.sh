@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rt builds with, if any is missing. Needs root (or sudo).
 #   scripts/install-deps.sh           what rt builds, tests and runs with
+#   scripts/install-deps.sh --checks  also clang 14 with its sanitizer runtimes and OpenMP, for the
+#                                     asan, tsan and fuzz presets (CI, where CI=true, installs them)
 #   scripts/install-deps.sh --bench   also what only the benchmarks use: Intel Embree 3 for
 #                                     bench/vs_embree, clang 14 and its OpenMP for the compiler
-#                                     table of bench/thesis_tables.sh (CI installs neither)
+#                                     table of bench/thesis_tables.sh (CI does not install Embree)
 set -euo pipefail
 packages=(
     cmake ninja-build g++ pkg-config ccache
@@ -14,6 +16,9 @@ packages=(
     python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
     slurm-wlm munge  # tests/cli/farm_slurm.sh starts a one-node Slurm cluster (as root) for rt-farm
 )
+if [ "${1:-}" = --checks ] || [ "${CI:-}" = true ]; then
+    packages+=(clang-14 libclang-rt-14-dev libomp-14-dev)
+fi
 [ "${1:-}" = "--bench" ] && packages+=(libembree-dev clang-14 libomp-14-dev)
 missing=()
 for p in "${packages[@]}"; do

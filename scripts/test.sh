@@ -1,11 +1,24 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test in both geometry precisions
-# (double, the default, and float: thesis 3.3.1).
+# (double, the default, and float: thesis 3.3.1). With CI=true (.ci/run) also: warnings are
+# errors in the release builds and the tsan build (GCC and clang), the debug configuration at
+# -O1 under ASan and UBSan with the whole suite and each fuzz target's corpus replayed (the asan
+# preset), and the multi-threaded tests under ThreadSanitizer. Each stage is timed on standard
+# error; docs/robustness.md says why each runs and what it costs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-for preset in release release-float; do
-    echo "== $preset" >&2
-    scripts/build.sh "$preset"
-    ctest --preset "$preset"
+presets=(release release-float)
+if [ "${CI:-}" = true ]; then
+    export RT_WERROR=ON
+    presets+=(asan tsan)
+fi
+for preset in "${presets[@]}"; do
+    echo "== $preset $(date +%T)" >&2
+    targets=()
+    # ThreadSanitizer runs the multi-threaded tests only (the tsan test preset names them).
+    [ "$preset" = tsan ] && targets=(trace_tests rt-render)
+    time scripts/build.sh "$preset" "${targets[@]}"
+    time ctest --preset "$preset"
 done
+echo "== done $(date +%T)" >&2

@@ -27,6 +27,14 @@ namespace {
 // Measured: 10% less build time than 32, and no worse than carrying them to the leaves.
 constexpr std::size_t kSweepMinimum = 8;
 
+// The primitive references all leaves of a tree may hold, per primitive of the scene. A split
+// copies the primitives that straddle its plane into both children; adversarial scenes (large
+// triangles over a cluster of tiny ones) make the SAH split on and on, to millions of nodes
+// for 40,000 triangles. The budget is shared out top-down in proportion to the children's
+// references, so a path that keeps duplicating runs out and ends in a leaf, while the tree
+// stays the same for any number of threads. Real scenes stay far below it (docs/trees.md).
+constexpr double kReferenceBudgetPerPrimitive = 16;
+
 bool carriesEvents(KdSplitMethod method, std::size_t primitives) {
     return method == KdSplitMethod::Sweep && primitives >= kSweepMinimum;
 }
@@ -57,6 +65,7 @@ struct KdNode {
     std::array<std::vector<SplitEvent>, 3> events;  // Sweep only: per axis, sorted, indices into `primitives`
     Aabb voxel;
     int depth = 0;
+    double referenceBudget = 0;  // references the leaves of this subtree may hold at most
 };
 
 // Bounds rounded outwards to float, then kept inside the (float-valued) voxel.
@@ -81,7 +90,9 @@ public:
         if (sah.degenerate()) return std::nullopt;
         const SahSplit best = findSplit(node, sah);
         if (best.axis < 0 || best.cost >= sah.leafCost(n)) return std::nullopt;  // no plane beats the leaf
-        return partition(node, best);
+        Partition<KdNode> parts = partition(node, best);
+        if (!shareBudget(node.referenceBudget, parts.below, parts.above)) return std::nullopt;
+        return parts;
     }
 
 private:
@@ -164,6 +175,16 @@ private:
         return parts;
     }
 
+    // Gives each child its share of the parent's budget, or returns false when the children's
+    // references alone exceed it (the parent becomes a leaf).
+    static bool shareBudget(double budget, KdNode& below, KdNode& above) {
+        const double references = double(below.primitives.size() + above.primitives.size());
+        if (references == 0 || references > budget) return false;
+        below.referenceBudget = budget * double(below.primitives.size()) / references;
+        above.referenceBudget = budget - below.referenceBudget;
+        return true;
+    }
+
     static std::uint32_t add(KdNode& child, std::uint32_t id, const FloatBox& box) {
         child.primitives.push_back(id);
         child.boxes.push_back(box);
@@ -208,6 +229,7 @@ KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
     KdNode root;
     root.voxel = roundOutToFloat(prims.bounds());
     const std::uint32_t n = prims.size();
+    root.referenceBudget = kReferenceBudgetPerPrimitive * n;
     root.primitives.resize(n);
     root.boxes.resize(n);
 #pragma omp parallel for schedule(static)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 namespace rt {
@@ -13,6 +14,12 @@ std::string lowerCase(std::string text) {
 
 std::string lowerCaseExtension(const std::string& path) {
     return lowerCase(std::filesystem::path(path).extension().string());
+}
+
+std::string gigabytes(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GB", double(bytes) / 1e9);
+    return text;
 }
 
 }  // namespace rt

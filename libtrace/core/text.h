@@ -1,10 +1,11 @@
 // Small text helpers shared by the layers: ASCII lower case, for the case-insensitive names
-// of formats, extensions and file names; the numbers of option values such as "X,Y,Z".
+// of formats, extensions and file names; the numbers of option values such as "X,Y,Z"; sizes for messages.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,5 +35,8 @@ std::optional<std::array<T, N>> parseSeparated(std::string_view text, std::strin
     }
     return values;
 }
+
+// "6.4 GB" (decimal gigabytes, one decimal), for messages about memory.
+std::string gigabytes(std::uint64_t bytes);
 
 }  // namespace rt

@@ -42,6 +42,10 @@ Matrix invertAffine(const Matrix& m) {
     r[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * s;
     r[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * s;
     for (int i = 0; i < 3; ++i) r[i][3] = -(r[i][0] * m[0][3] + r[i][1] * m[1][3] + r[i][2] * m[2][3]);
+    // A tiny determinant (a scale by 1e-104 in double) is not zero, yet its inverse overflows.
+    for (const auto& row : r)
+        for (const Real x : row)
+            if (!std::isfinite(x)) throw std::invalid_argument("transform matrix is singular");
     return r;
 }
 

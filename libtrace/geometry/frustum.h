@@ -59,7 +59,11 @@ struct Cone : Frustum {
 // around it even where the call is never taken (docs/benchmarks.md: 17 % more
 // instructions per ray on scenes of spheres).
 inline bool intersect(const Frustum& f, const Ray& ray, Real tMax, Hit& hit) {
-    const auto [w, height] = f.axis();
+    // Plain variables, not a structured binding: the lambdas below capture them, which clang 14
+    // does not allow for bindings (C++20 does).
+    const Frustum::Axis axis = f.axis();
+    const Vec3 w = axis.w;
+    const Real height = axis.height;
     const Real slope = (f.topRadius - f.baseRadius) / height;
     const Vec3 q0 = ray.origin - f.base;
     const Real h0 = dot(q0, w), dh = dot(ray.direction, w);

@@ -14,9 +14,11 @@
 #include <set>
 
 #include "core/error.h"
+#include "import/assimp_contained.h"
 #include "import/camera_3ds.h"
 #include "import/scene_assembly.h"
 #include "import/scene_defaults.h"
+#include "scene/input_file.h"
 
 namespace rt {
 namespace {
@@ -342,15 +344,19 @@ private:
 ImportResult importAssimp(const std::string& path, const ImportOptions& options) {
     Assimp::Importer importer;
     removeGltfImporters(importer);
-    // --up-axis describes the file, so it takes the place of a Collada file's own <up_axis>.
-    if (options.upAxis) importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     ImportResult result;
     result.report.format = formatName(importer, path);
-    const aiScene* ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
-    if (!ai || !ai->mRootNode) {
-        const std::string why = importer.GetErrorString();
-        throw InputError(path + ": " + (why.empty() ? "Assimp cannot read the file" : why));
-    }
+    const aiScene* ai = readContained(importer, path, inputFileSize(path), [&](Assimp::Importer& reader) {
+        removeGltfImporters(reader);
+        // --up-axis describes the file, so it takes the place of a Collada file's own <up_axis>.
+        if (options.upAxis) reader.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+        const aiScene* scene = reader.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
+        if (!scene || !scene->mRootNode) {
+            const std::string why = reader.GetErrorString();
+            throw InputError(path + ": " + (why.empty() ? "Assimp cannot read the file" : why));
+        }
+        return scene;
+    });
     AssimpSceneBuilder(*ai, path, options, result).build(rootTransform(options, importerUpAxis(result.report.format)));
     return result;
 }

@@ -42,9 +42,33 @@ bool isRegularFile(const std::string& path, void*) {
 
 std::string samePath(const std::string& path, void*) { return path; }
 
-bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+// The files a glTF may have read (its buffers): those in the model's folder or below, unless
+// ImportOptions::filesOutsideModelFolder. A buffer URI "../../../etc/passwd" or "/etc/passwd"
+// would otherwise copy any file the user can read into the scene and onto standard output.
+struct FileAccess {
+    std::filesystem::path folder;  // canonical
+    bool anywhere = false;
+
+    FileAccess(const std::string& modelPath, bool anywhereAllowed) : anywhere(anywhereAllowed) {
+        std::error_code ec;
+        folder = std::filesystem::weakly_canonical(std::filesystem::absolute(modelPath).parent_path(), ec);
+    }
+    // After symbolic links are resolved, so that a link in the folder cannot lead out of it.
+    bool allows(const std::string& path) const {
+        std::error_code ec;
+        const std::filesystem::path relative =
+            std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec).lexically_relative(folder);
+        return anywhere || (!ec && !relative.empty() && *relative.begin() != "..");
+    }
+};
+
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* access) {
     out->assign(1, 0);
     if (isImagePath(path)) return true;
+    if (!static_cast<const FileAccess*>(access)->allows(path)) {
+        *err += "outside the model's folder (rt-convert --allow-outside-files reads it)\n";
+        return false;
+    }
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) {
         *err += "not a file: " + path + "\n";
@@ -79,10 +103,11 @@ std::string firstLine(const std::string& text) {
 
 // `load(loader, model, error, warning)` reads the file or the bytes; `name` names them in messages.
 template <class Load>
-tinygltf::Model loadGltf(const std::string& name, bool binary, ImportReport& report, Load load) {
+tinygltf::Model loadGltf(const std::string& name, bool binary, const FileAccess& access, ImportReport& report,
+                         Load load) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
-    loader.SetFsCallbacks({isRegularFile, samePath, readRegularFile, refuseWrite, nullptr});
+    loader.SetFsCallbacks({isRegularFile, samePath, readRegularFile, refuseWrite, const_cast<FileAccess*>(&access)});
     tinygltf::Model gltf;
     std::string error, warning;
     report.format = binary ? "glTF 2.0 binary (.glb)" : "glTF 2.0";
@@ -553,11 +578,11 @@ ImportResult importGltf(const std::string& path, const ImportOptions& options) {
     if (!std::ifstream(path, std::ios::binary)) throw InputError(path + ": cannot open the file");
     ImportResult result;
     const bool binary = hasGlbMagic(path);
-    const tinygltf::Model gltf =
-        loadGltf(path, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
-            return binary ? loader.LoadBinaryFromFile(&model, &e, &w, path)
-                          : loader.LoadASCIIFromFile(&model, &e, &w, path);
-        });
+    const tinygltf::Model gltf = loadGltf(path, binary, FileAccess(path, options.filesOutsideModelFolder),
+                                          result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
+                                              return binary ? loader.LoadBinaryFromFile(&model, &e, &w, path)
+                                                            : loader.LoadASCIIFromFile(&model, &e, &w, path);
+                                          });
     GltfSceneBuilder(gltf, path, options, result).build(rootTransform(options));
     return result;
 }
@@ -567,8 +592,9 @@ ImportResult importGltfBytes(const std::string& bytes, const std::string& name, 
     ImportResult result;
     const bool binary = bytes.starts_with(kGlbMagic);
     const auto size = unsigned(bytes.size());
-    const tinygltf::Model gltf =
-        loadGltf(name, binary, result.report, [&](auto& loader, auto& model, auto& e, auto& w) {
+    const tinygltf::Model gltf = loadGltf(
+        name, binary, FileAccess("./-", options.filesOutsideModelFolder), result.report,
+        [&](auto& loader, auto& model, auto& e, auto& w) {
             return binary ? loader.LoadBinaryFromMemory(&model, &e, &w,
                                                         reinterpret_cast<const unsigned char*>(bytes.data()), size, ".")
                           : loader.LoadASCIIFromString(&model, &e, &w, bytes.data(), size, ".");

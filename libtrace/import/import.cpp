@@ -4,8 +4,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -15,6 +13,7 @@
 #include "import/gltf_import.h"
 #include "import/obj_import.h"
 #include "import/scene_defaults.h"
+#include "scene/input_file.h"
 #include "scene/raw_model.h"
 
 namespace rt {
@@ -95,12 +94,6 @@ Transform rootTransform(const ImportOptions& options, UpAxis importerUp) {
     return Transform::scale(Vec3(s, s, s)) * Transform::rotateX(-turns * kPi / 2);
 }
 
-std::string readStandardInput() {
-    std::ostringstream bytes;
-    bytes << std::cin.rdbuf();
-    return bytes.str();
-}
-
 bool fileStartsWith(const std::string& path, std::string_view magic) {
     std::ifstream in(path, std::ios::binary);
     std::string head(magic.size(), '\0');
@@ -118,6 +111,7 @@ ImportResult importScene(const std::string& path, const ImportOptions& options) 
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a model file");
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+    inputFileSize(path);  // refuses a file beyond --max-input before any parser sees it
     return finishImport(importByFormat(path, options), path, options);
 }
 

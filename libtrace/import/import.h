@@ -48,6 +48,9 @@ struct ImportOptions {
     // A model with emissive materials but no light gets no default light: its emitters light it
     // (rt-render --integrator path; the Whitted tracer shows emitters but lights nothing with them).
     bool emittersLight = false;
+    // glTF buffers may be read from anywhere; by default only from the model's folder and below
+    // (standard input: the working folder), so that a file cannot make rt copy /etc/passwd.
+    bool filesOutsideModelFolder = false;
 };
 
 // ImportOptions::camera value (rt-convert --camera auto) that ignores the file's cameras.
@@ -88,9 +91,6 @@ bool looksLikeGltf(std::string_view bytes);
 // unreadable, unknown or invalid file; never reads out of bounds or allocates more than the
 // file's data can justify.
 ImportResult importScene(const std::string& path, const ImportOptions& options = {});
-
-// All of standard input.
-std::string readStandardInput();
 
 // importScene for a model held in memory, read from standard input: GLB or glTF JSON.
 ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportOptions& options);

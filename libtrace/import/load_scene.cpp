@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "import/model_file.h"
+#include "scene/input_file.h"
 #include "scene/xml_loader.h"
 
 namespace rt {

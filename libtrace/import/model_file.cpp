@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "import/assimp_contained.h"
 #include "scene/input_file.h"
 #include "scene/raw_model.h"
 
@@ -42,11 +43,14 @@ Model load3ds(const std::string& path) {
     if (bytes.size() < 6 || bytes[0] != 0x4d || bytes[1] != 0x4d)
         throw fail("not a 3DS file (no 0x4D4D main chunk at byte 0)");
     Assimp::Importer importer;
-    // ValidateDataStructure rejects out-of-range indices before we follow them.
-    const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
-                                                       aiProcess_Triangulate | aiProcess_ValidateDataStructure, "3ds");
-    if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-        throw fail(importer.GetErrorString());
+    const aiScene* scene = readContained(importer, path, bytes.size(), [&](Assimp::Importer& reader) {
+        // ValidateDataStructure rejects out-of-range indices before we follow them.
+        const aiScene* read = reader.ReadFileFromMemory(bytes.data(), bytes.size(),
+                                                        aiProcess_Triangulate | aiProcess_ValidateDataStructure, "3ds");
+        if (!read || !read->mRootNode || (read->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+            throw fail(reader.GetErrorString());
+        return read;
+    });
     Model model;
     appendNodeTriangles(*scene, *scene->mRootNode, aiMatrix4x4(), model);
     const auto bad = std::find_if(model.triangleVertices.begin(), model.triangleVertices.end(),

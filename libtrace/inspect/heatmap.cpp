@@ -18,13 +18,14 @@ float heatPosition(float value, float maximum, HeatScale scale) {
 
 std::vector<float> heatTicks(float maximum, HeatScale scale) {
     std::vector<float> ticks{0};
-    if (!(maximum > 0)) return ticks;
+    if (!(maximum > 0) || !std::isfinite(maximum)) return ticks;
     if (scale == HeatScale::Linear) {
-        // A step of 1, 2 or 5 times a power of ten giving about five intervals.
-        const float rough = maximum / 5;
-        const float decade = std::pow(10.0f, std::floor(std::log10(rough)));
-        const float step = decade * (rough >= 5 * decade ? 5 : rough >= 2 * decade ? 2 : 1);
-        for (float v = step; v <= maximum * 1.0001f; v += step) ticks.push_back(v);
+        // A step of 1, 2 or 5 times a power of ten giving about five intervals. In double and
+        // counted: a float sum stops growing near 3e38 and never starts from a step of 1e-46.
+        const double rough = double(maximum) / 5;
+        const double decade = std::pow(10.0, std::floor(std::log10(rough)));
+        const double step = decade * (rough >= 5 * decade ? 5 : rough >= 2 * decade ? 2 : 1);
+        for (int i = 1; i * step <= double(maximum) * 1.0001; ++i) ticks.push_back(float(i * step));
         return ticks;
     }
     // Powers of ten, with 2 and 5 between them when there are few decades.

@@ -4,11 +4,13 @@
 #include <string>
 
 #include "core/error.h"
+#include "render/memory_estimate.h"
 
 namespace rt {
 
 namespace {
-// The most pixels rendered at once: the framebuffer (12 bytes a pixel) stays below 3.3 GB.
+// The pixel count bounds one render, whatever --max-memory allows: 2^28 pixels
+// (16384 x 16384) take 21.5 GB (render/memory_estimate.h).
 constexpr long long kMaxPixels = 1ll << 28;
 }  // namespace
 
@@ -16,9 +18,18 @@ void validate(const RenderSettings& s) {
     if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
         throw InputError("image size " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is outside 1-" +
                          std::to_string(kMaxImageSide));
+    // Before the window's size is taken: x1 - x0 of a region from INT_MIN to INT_MAX overflows.
+    if (s.region && !s.region->inside(s.width, s.height)) {
+        const PixelWindow& r = *s.region;
+        throw InputError("region " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) +
+                         "," + std::to_string(r.y1) + " is empty or outside the " + std::to_string(s.width) + "x" +
+                         std::to_string(s.height) + " image");
+    }
     if (const PixelWindow w = s.window(); (long long)w.width() * w.height() > kMaxPixels)
         throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
-                         " pixels at once needs more than 3 GB; render it in regions (--region)");
+                         " pixels at once needs more than " +
+                         gigabytes(std::uint64_t(kMaxPixels) * kRenderBytesPerPixel) +
+                         "; render it in regions (--region)");
     if (s.reflectionDepth < 0 || s.reflectionDepth > kMaxReflectionDepth)
         throw InputError("reflection depth " + std::to_string(s.reflectionDepth) + " is outside 0-" +
                          std::to_string(kMaxReflectionDepth));
@@ -33,12 +44,6 @@ void validate(const RenderSettings& s) {
     if (s.integrator == Integrator::Path && s.aovs)
         throw InputError("AOVs are written by the whitted integrator only, so far");
     if (s.threads < 0) throw InputError("the thread count must not be negative");
-    if (s.region && !s.region->inside(s.width, s.height)) {
-        const PixelWindow& r = *s.region;
-        throw InputError("region " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) +
-                         "," + std::to_string(r.y1) + " is empty or outside the " + std::to_string(s.width) + "x" +
-                         std::to_string(s.height) + " image");
-    }
 }
 
 }  // namespace rt

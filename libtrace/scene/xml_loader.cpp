@@ -5,8 +5,6 @@
 
 #include <filesystem>
 #include <functional>
-#include <iostream>
-#include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -58,6 +56,7 @@ private:
     void readObjects(pugi::xml_node parent, const Transform& toWorld, int depth);
     static bool isTransform(std::string_view tag);
     Transform readTransform(pugi::xml_node node) const;
+    Transform placedBy(pugi::xml_node node, const Transform& toWorld) const;
     void addSphere(const XmlElement& e, const Transform& toWorld);
     template <class K>
     void addFrustum(const XmlElement& e, const Transform& toWorld, Real baseRadius, Real topRadius);
@@ -211,12 +210,12 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     m.name = e.string("name");
     define(materials_, "material", m.name, std::uint32_t(scene_.materials.size()), e);
     m.color = e.rgb(1);
-    m.ambient = float(e.nonNegative("ambient", m.ambient));
-    m.diffuse = float(e.nonNegative("diffuse", m.diffuse));
-    m.specular = float(e.nonNegative("specular", m.specular));
-    m.shininess = float(e.nonNegative("shininess", m.shininess));
-    m.reflection = float(e.nonNegative("reflection", m.reflection));
-    m.spread = float(e.nonNegative("spread", m.spread));
+    m.ambient = e.nonNegativeFloat("ambient", m.ambient);
+    m.diffuse = e.nonNegativeFloat("diffuse", m.diffuse);
+    m.specular = e.nonNegativeFloat("specular", m.specular);
+    m.shininess = e.nonNegativeFloat("shininess", m.shininess);
+    m.reflection = e.nonNegativeFloat("reflection", m.reflection);
+    m.spread = e.nonNegativeFloat("spread", m.spread);
     if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
     m.emission = e.color("emission", m.emission);
     readMetallicRoughness(e, m);
@@ -371,7 +370,7 @@ void SceneBuilder::readObjects(pugi::xml_node parent, const Transform& toWorld, 
             // The outer element applies first (thesis 3.4.2: <scale> around <rotate> around
             // <translate> scales, then rotates, then translates), so each element's transform
             // goes on the left of what its ancestors built.
-            readObjects(child, readTransform(child) * toWorld, depth + 1);
+            readObjects(child, placedBy(child, toWorld), depth + 1);
         } else {
             file_.failAt(child, "unknown element <" + std::string(tag) + "> in <" + parent.name() + ">");
         }
@@ -417,6 +416,19 @@ Transform SceneBuilder::readTransform(pugi::xml_node node) const {
         return Transform(m);
     } catch (const std::invalid_argument&) {
         e.fail("<matrix> is singular");
+    }
+}
+
+// The transform below `node`: its own after its ancestors'. Each factor may be fine and their
+// product not (two scales by 1e100 overflow, by 1e-200 underflow, one by 1e308 has no finite
+// inverse): what reaches the geometry must be finite and invertible, or the scene is bad input.
+Transform SceneBuilder::placedBy(pugi::xml_node node, const Transform& toWorld) const {
+    try {
+        const Transform placed = readTransform(node) * toWorld;
+        Transform{placed.matrix()};  // throws for a singular or non-finite matrix
+        return placed;
+    } catch (const std::invalid_argument&) {
+        file_.failAt(node, "<" + std::string(node.name()) + "> makes the transform singular or not finite");
     }
 }
 
@@ -494,11 +506,7 @@ Scene loadScene(std::string xml, const std::string& name, const std::string& bas
 }  // namespace
 
 Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile, const SceneParameters& parameters) {
-    if (path == "-") {
-        std::ostringstream text;
-        text << std::cin.rdbuf();
-        return loadScene(text.str(), "<stdin>", ".", readModelFile, parameters);
-    }
+    if (path == "-") return loadScene(readStandardInput(), "<stdin>", ".", readModelFile, parameters);
     const std::string folder = std::filesystem::path(path).parent_path().string();
     return loadScene(readInputFile(path), path, folder.empty() ? "." : folder, readModelFile, parameters);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 
@@ -25,15 +26,23 @@ bool isListed(std::string_view name, std::initializer_list<std::string_view> lis
 
 XmlFile::XmlFile(std::string text, std::string name, const SceneParameters& parameters)
     : text_(std::move(text)), name_(std::move(name)) {
-    lineStarts_.push_back(0);
-    for (std::size_t i = 0; i < text_.size(); ++i)
-        if (text_[i] == '\n') lineStarts_.push_back(i + 1);
-    // In place (text_ lives as long as the document) and UTF-8 only, so that pugixml's
-    // offsets are offsets into the text as read.
+    newlinesBefore_.push_back(0);
+    for (std::size_t block = 0; block < text_.size(); block += kLineBlock) {
+        const auto begin = text_.begin() + std::ptrdiff_t(block);
+        const auto end = text_.begin() + std::ptrdiff_t(std::min(block + kLineBlock, text_.size()));
+        newlinesBefore_.push_back(newlinesBefore_.back() + std::uint64_t(std::count(begin, end, '\n')));
+    }
+    // A copy, not in place: pugixml rewrites the text it parses in place (newlines in attributes
+    // become spaces), and lineAt counts the newlines of the text as read. UTF-8 only, so that
+    // pugixml's offsets are offsets into that text. pugixml never reads a DTD or expands an
+    // entity other than the five of XML; the DOCTYPE is kept only to be refused, so that a scene
+    // that relies on one hears so instead of losing its entities silently.
     const pugi::xml_parse_result result =
-        doc_.load_buffer_inplace(text_.data(), text_.size(), pugi::parse_default, pugi::encoding_utf8);
+        doc_.load_buffer(text_.data(), text_.size(), pugi::parse_default | pugi::parse_doctype, pugi::encoding_utf8);
     if (!result)
         throw inputErrorAt(name_, lineAt(result.offset), std::string("malformed XML: ") + result.description());
+    for (const pugi::xml_node& n : doc_.children())
+        if (n.type() == pugi::node_doctype) failAt(n, "DOCTYPE is not allowed: scenes have no DTD and no entities");
     substitute(parameters);
 }
 
@@ -52,9 +61,10 @@ void XmlFile::substitute(const SceneParameters& parameters) {
 }
 
 int XmlFile::lineAt(std::ptrdiff_t offset) const {
-    const std::size_t at = std::size_t(std::max<std::ptrdiff_t>(offset, 0));
-    const auto next = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), at);
-    return int(next - lineStarts_.begin());
+    const std::size_t at = std::min(std::size_t(std::max<std::ptrdiff_t>(offset, 0)), text_.size());
+    const std::size_t block = at / kLineBlock;
+    const auto from = text_.begin() + std::ptrdiff_t(block * kLineBlock);
+    return int(1 + newlinesBefore_[block] + std::uint64_t(std::count(from, text_.begin() + std::ptrdiff_t(at), '\n')));
 }
 
 void XmlFile::failAt(pugi::xml_node node, const std::string& message) const {
@@ -126,6 +136,12 @@ Real XmlElement::nonNegative(const char* attribute, Real fallback) const {
     return v;
 }
 
+float XmlElement::nonNegativeFloat(const char* attribute, float fallback) const {
+    const Real v = nonNegative(attribute, fallback);
+    if (v > std::numeric_limits<float>::max()) fail(tag() + " attribute '" + attribute + "' is too large");
+    return float(v);
+}
+
 Real XmlElement::positive(const char* attribute) const {
     const Real v = number(attribute);
     if (!(v > 0)) fail(tag() + " attribute '" + attribute + "' must be positive");
@@ -151,13 +167,15 @@ Vec3 XmlElement::xyz(Real fallback) const {
 }
 
 Color XmlElement::rgb(float fallback) const {
-    return {float(nonNegative("r", fallback)), float(nonNegative("g", fallback)), float(nonNegative("b", fallback))};
+    return {nonNegativeFloat("r", fallback), nonNegativeFloat("g", fallback), nonNegativeFloat("b", fallback)};
 }
 
 Color XmlElement::color(const char* attribute, Color fallback) const {
     if (!has(attribute)) return fallback;
     const std::vector<Real> v = numbers(attribute, 3);
     if (v[0] < 0 || v[1] < 0 || v[2] < 0) fail(std::string(attribute) + " must not be negative");
+    for (const Real x : v)
+        if (x > std::numeric_limits<float>::max()) fail(std::string(attribute) + " is too large");
     return {float(v[0]), float(v[1]), float(v[2])};
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <pugixml.hpp>
@@ -35,9 +36,12 @@ public:
 private:
     void substitute(const SceneParameters& parameters);
 
+    // newlinesBefore_[i]: the newlines before byte i * kLineBlock. A table of every line's start
+    // took 8 bytes a line, 8 GB for a file of 1 GB of empty lines.
+    static constexpr std::size_t kLineBlock = 4096;
     std::string text_;
     std::string name_;
-    std::vector<std::size_t> lineStarts_;
+    std::vector<std::uint64_t> newlinesBefore_;
     pugi::xml_document doc_;
 };
 
@@ -65,9 +69,13 @@ public:
     // Whitespace-separated numbers, exactly `count` of them.
     std::vector<Real> numbers(const char* attribute, std::size_t count) const;
 
+    // nonNegative() kept as a float (colours, material factors): beyond float's range is an
+    // error here, not +inf in the picture.
+    float nonNegativeFloat(const char* attribute, float fallback) const;
+
     Vec3 xyz(Real fallback) const;                             // attributes x, y, z
-    Color rgb(float fallback) const;                           // attributes r, g, b, each >= 0
-    Color color(const char* attribute, Color fallback) const;  // "r g b", each >= 0
+    Color rgb(float fallback) const;                           // attributes r, g, b, each >= 0 and a finite float
+    Color color(const char* attribute, Color fallback) const;  // "r g b", each >= 0 and a finite float
 
     // Child elements other than those named in `allowed`, and any text, are errors.
     void requireOnlyChildren(std::initializer_list<std::string_view> allowed) const;

@@ -18,7 +18,7 @@ for tool in "$RT_RENDER" "$RT_INSPECT"; do
     expect_exit 2 "$tool" "$SCENE" --threads 1025
     expect_one_error "$name" "--threads: 1025 is not in 0-1024"
     expect_exit 2 "$tool" "$SCENE" --kd-traversal-cost -2
-    expect_one_error "$name" "--kd-traversal-cost: -2 is not a positive number"
+    expect_one_error "$name" "--kd-traversal-cost: -2 is not in 0.001-1000"
 done
 
 for tool in "$RT_RENDER" "$RT_INSPECT" "$RT_CONVERT"; do
@@ -42,7 +42,7 @@ expect_exit 2 "$RT_CONVERT" --generate ships --scene -1
 expect_one_error rt-convert "--scene: -1 is not in 0-1073741824"
 # rt-inspect's heat-map maximum too, and a name outside the library's table is named with the valid ones.
 expect_exit 2 "$RT_INSPECT" "$SCENE" --heatmap-max -3
-expect_one_error rt-inspect "--heatmap-max: -3 is not a positive number"
+expect_one_error rt-inspect "--heatmap-max: -3 is not in 0.001-1e+09"
 expect_exit 2 "$RT_INSPECT" "$SCENE" --heatmap-scale cubic
 expect_one_error rt-inspect "--heatmap-scale: cubic not in {linear,log}"
 expect_exit 2 "$RT_RENDER" "$SCENE" -x abc --no-such-option

@@ -131,8 +131,9 @@ TEST(Camera, OrbitTurnsAboutTheUpAxisThroughTheDestination) {
 TEST(Camera, SceneSelectsACameraByNameThenNumber) {
     Scene s;
     s.camera.name = "main";
-    s.extraCameras.push_back(focalCamera(5));
-    s.extraCameras.back().name = "0";  // a name that looks like a number wins over the number
+    Camera numberLike = focalCamera(5);
+    numberLike.name = "0";  // a name that looks like a number wins over the number
+    s.extraCameras.push_back(numberLike);
     s.extraCameras.push_back(focalCamera(6));
     s.selectCamera("0");
     EXPECT_EQ(s.camera.focalDistance, Real(5));

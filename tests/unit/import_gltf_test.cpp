@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "import/import.h"
 #include "import_test_util.h"
+#include "scene/base64.h"
 #include "test_util.h"
 
 namespace rt {
@@ -287,6 +288,30 @@ TEST(ImportGltf, AHugeCountWithoutDataIsRefusedBeforeAllocating) {
     std::string json = replaceOnce(GltfFixture().json(), R"({"bufferView": 0, "componentType": 5126, "count": 3,)",
                                    R"({"componentType": 5126, "count": 4000000000000,)");
     EXPECT_THROW(importScene(dir.write("huge.gltf", json)), InputError);
+}
+
+// A buffer URI may name files in the model's folder and below; "../" would let a model copy any
+// readable file into the scene, so it needs ImportOptions::filesOutsideModelFolder.
+TEST(ImportGltf, BuffersOutsideTheModelsFolderAreRefused) {
+    TempDir dir;
+    const std::string json = GltfFixture().json();
+    const std::size_t start = json.find("data:application"), end = json.find('"', start);
+    std::size_t badAt = 0;
+    const auto bytes = decodeBase64(json.substr(json.find(',', start) + 1, end - json.find(',', start) - 1), badAt);
+    ASSERT_TRUE(bytes);
+    dir.write("outside.bin", std::string(bytes->begin(), bytes->end()));
+    dir.write("model/data/inside.bin", std::string(bytes->begin(), bytes->end()));
+    const auto naming = [&](const std::string& uri) {
+        return dir.write("model/m.gltf", json.substr(0, start) + uri + json.substr(end));
+    };
+    EXPECT_NO_THROW(importScene(naming("data/inside.bin")));
+    for (const std::string uri : {"../outside.bin", "data/../../outside.bin"}) {
+        const std::string error = inputErrorOf([&] { importScene(naming(uri)); });
+        EXPECT_NE(error.find("outside the model's folder"), std::string::npos) << uri << ": " << error;
+        ImportOptions trusting;
+        trusting.filesOutsideModelFolder = true;
+        EXPECT_NO_THROW(importScene(naming(uri), trusting)) << uri;
+    }
 }
 
 // Element 0 of the positions is replaced by the fourth point of the data, (5, 5, 5).

@@ -1,6 +1,7 @@
 // The heat map: colour map, scale, colour bar, lettering, and a hottest region where the
 // geometry is densest.
 #include <algorithm>
+#include <limits>
 
 #include "core/color.h"
 #include "inspect/bitmap_font.h"
@@ -103,6 +104,10 @@ TEST(Heatmap, TicksAreRoundNumbers) {
     EXPECT_EQ(heatTicks(1500, HeatScale::Linear), (std::vector<float>{0, 200, 400, 600, 800, 1000, 1200, 1400}));
     EXPECT_EQ(heatTicks(150, HeatScale::Log), (std::vector<float>{0, 1, 2, 5, 10, 20, 50, 100}));
     EXPECT_EQ(heatTicks(20000, HeatScale::Log), (std::vector<float>{0, 1, 10, 100, 1000, 10000}));
+    // --heatmap-max at the ends of float: a few ticks, not a loop that fills the memory.
+    for (const float extreme : {3.4e38f, 1e-45f, std::numeric_limits<float>::infinity()})
+        for (const HeatScale scale : {HeatScale::Linear, HeatScale::Log})
+            EXPECT_LE(heatTicks(extreme, scale).size(), 40u) << extreme;
     EXPECT_FLOAT_EQ(heatPosition(50, 100, HeatScale::Linear), 0.5f);
     EXPECT_FLOAT_EQ(heatPosition(200, 100, HeatScale::Linear), 1.0f);
     EXPECT_FLOAT_EQ(heatPosition(9, 99, HeatScale::Log), 0.5f);  // log(10) / log(100)

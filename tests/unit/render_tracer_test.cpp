@@ -1,5 +1,7 @@
 #include "render/tracer.h"
 
+#include <climits>
+
 #include "accel/naive.h"
 #include "core/error.h"
 #include "render/phong.h"
@@ -184,6 +186,8 @@ TEST(RenderSettings, OutOfRangeSettingsAreInputErrors) {
     bad([](RenderSettings& s) { s.width = s.height = 65536; });  // 48 GB of framebuffer
     bad([](RenderSettings& s) { s.region = PixelWindow{10, 10, 10, 20}; });
     bad([](RenderSettings& s) { s.region = PixelWindow{0, 0, 801, 600}; });
+    // Its width does not fit in an int: no signed overflow (UBSan) before the region is refused.
+    bad([](RenderSettings& s) { s.region = PixelWindow{INT_MIN, 0, INT_MAX, 600}; });
     RenderSettings ok;
     ok.region = PixelWindow{0, 0, 800, 600};
     EXPECT_NO_THROW(validate(ok));

@@ -1,7 +1,11 @@
 #include "scene/xml_loader.h"
 
+#include <cmath>
+#include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <type_traits>
 
 #include "import/model_file.h"
 #include "scene_test_files.h"
@@ -353,6 +357,14 @@ struct BadScene {
     std::string error;  // the whole message
 };
 
+std::string repeated(const std::string& text, int times) {
+    std::string all;
+    for (int i = 0; i < times; ++i) all += text;
+    return all;
+}
+
+constexpr bool kFloatGeometry = std::is_same_v<Real, float>;
+
 // Line 1 <scene>, line 2 the camera, the case's content from line 3.
 const BadScene kBadScenes[] = {
     {"malformed XML", sceneWith("<objects>\n<sphere r=\"1\">\n</objects>\n"),
@@ -419,6 +431,18 @@ const BadScene kBadScenes[] = {
      "s.xml:4: <rotate> takes y or ry, not both"},
     {"negative colour", sceneWith("<lights>\n<light g=\"-1\"/></lights>"),
      "s.xml:4: <light> attribute 'g' must not be negative"},
+    // Beyond float: too large for the colour in the double build, for any number in the float build.
+    {"colour beyond float", sceneWith("<lights>\n<light r=\"1e308\"/></lights>"),
+     kFloatGeometry ? "s.xml:4: <light> attribute 'r': '1e308' is not a finite number"
+                    : "s.xml:4: <light> attribute 'r' is too large"},
+    {"material factor beyond float", sceneWith("<materials>\n<material name=\"m\" diffuse=\"1e39\"/></materials>"),
+     kFloatGeometry ? "s.xml:4: <material> attribute 'diffuse': '1e39' is not a finite number"
+                    : "s.xml:4: <material> attribute 'diffuse' is too large"},
+    {"transforms nested too deep",
+     sceneWith("<objects>\n" + repeated("<translate>", 300) + repeated("</translate>", 300) + "</objects>"),
+     "s.xml:4: transforms nested deeper than 256"},
+    {"DOCTYPE naming a file", "<!DOCTYPE scene [ <!ENTITY x SYSTEM \"/etc/passwd\"> ]>\n<scene>&x;</scene>",
+     "s.xml:1: DOCTYPE is not allowed: scenes have no DTD and no entities"},
     {"wrong root", "<?xml version=\"1.0\"?>\n<scenery/>", "s.xml:2: the root element must be <scene>"},
     {"empty file", "", "s.xml:1: malformed XML: No document element found"},
 };
@@ -440,6 +464,23 @@ INSTANTIATE_TEST_SUITE_P(Cases, XmlLoaderBadInput, ::testing::ValuesIn(kBadScene
                                  if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                              return name;
                          });
+
+// Scale factors computed from Real's range, so that the double and the float build both see a
+// finite factor whose transform is not: its determinant (the cube) overflows or its inverse does.
+TEST(XmlLoader, TransformsWithoutAFiniteInverseAreInputErrors) {
+    const auto scale = [](Real factor) {
+        std::ostringstream s;
+        s << std::setprecision(std::numeric_limits<Real>::max_digits10) << "<scale factor=\"" << factor << "\">";
+        return s.str();
+    };
+    const Real huge = std::cbrt(std::numeric_limits<Real>::max()) * 2;
+    const Real tiny = std::cbrt(std::numeric_limits<Real>::min()) / 2;
+    const Real root = std::sqrt(huge);  // fine alone, not twice
+    const std::string error = "s.xml:4: <scale> makes the transform singular or not finite";
+    EXPECT_EQ(errorOf(sceneWith("<objects>\n" + scale(huge) + "</scale></objects>")), error);
+    EXPECT_EQ(errorOf(sceneWith("<objects>\n" + scale(tiny) + "</scale></objects>")), error);
+    EXPECT_EQ(errorOf(sceneWith("<objects>" + scale(root) + "\n" + scale(root) + "</scale></scale></objects>")), error);
+}
 
 TEST(XmlLoader, BadModelFilesGiveTheSceneLine) {
     SKIP_WITHOUT_SHARED_MODELS();

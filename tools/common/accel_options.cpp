@@ -18,12 +18,13 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
         ->group(group);
     app.add_flag("--bsp-round-robin", bsp.roundRobin, "BSP: split X, Y, Z in turn instead of the longest axis")
         ->group(group);
+    // Only their ratio matters; beyond these bounds a cost is a typo, and products of it overflow.
     app.add_option("--kd-traversal-cost", kd.traversalCost, "KD: SAH cost of a traversal step")
-        ->check(positiveNumber())
+        ->check(numberIn(1e-3, 1e3))
         ->capture_default_str()
         ->group(group);
     app.add_option("--kd-intersection-cost", kd.intersectionCost, "KD: SAH cost of an intersection test")
-        ->check(positiveNumber())
+        ->check(numberIn(1e-3, 1e3))
         ->capture_default_str()
         ->group(group);
     app.add_option("--kd-empty-bonus", kd.emptyBonus, "KD: cost factor of splits cutting off empty space (1 = none)")

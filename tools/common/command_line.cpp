@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scene/input_file.h"
 #include "tool.h"
 
 namespace rt::tool {
@@ -47,6 +48,15 @@ CLI::Validator positiveNumber() {
 
 CLI::Option* addThreadsOption(CLI::App& app, int& threads) {
     return app.add_option("--threads", threads, "Threads (default 0: all cores)")->check(numberIn(0, kMaxThreads));
+}
+
+CLI::Option* addMaxInputOption(CLI::App& app) {
+    return app
+        .add_option_function<std::uint64_t>(
+            "--max-input", [](std::uint64_t mib) { setMaxInputBytes(mib << 20); },
+            "Largest input file or standard input in MiB [default: " + std::to_string(kDefaultMaxInputBytes >> 20) +
+                "]")
+        ->check(numberIn<std::uint64_t>(1, std::uint64_t(1) << 30));
 }
 
 }  // namespace rt::tool

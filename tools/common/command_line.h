@@ -70,4 +70,7 @@ constexpr int kMaxThreads = 1024;
 // --threads N (0, the default, lets OpenMP use every core), checked as 0 to kMaxThreads.
 CLI::Option* addThreadsOption(CLI::App& app, int& threads);
 
+// --max-input MIB: the largest scene, model file or standard input read (scene/input_file.h).
+CLI::Option* addMaxInputOption(CLI::App& app);
+
 }  // namespace rt::tool

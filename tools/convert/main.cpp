@@ -87,6 +87,9 @@ int main(int argc, char** argv) {
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")
         ->check(rt::tool::positiveNumber());
     app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp);
+    app.add_flag("--allow-outside-files", o.import.filesOutsideModelFolder,
+                 "Read glTF buffers outside the model's folder (../, absolute paths): only for files you trust");
+    rt::tool::addMaxInputOption(app);
     app.add_flag("--json", o.json, "Print the summary as JSON on standard output");
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no summary or notes on standard error (errors still are)");
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-convert", argc, argv)) return *exitCode;

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
     app.add_flag("--json", o.json, "Print the statistics as one JSON document");
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no warnings or notes on standard error (errors still are)");
     rt::tool::addThreadsOption(app, o.picture.threads);
+    rt::tool::addMaxInputOption(app);
 
     app.add_flag("--rays", o.rays, "Render the picture (options as rt-render's) and report the work per ray");
     rt::tool::addPictureOptions(app, o.picture);
@@ -62,7 +63,7 @@ int main(int argc, char** argv) {
     addNamedOption(app, "--heatmap-scale", o.heatmap.scale, rt::kHeatScaleNames, "Colour scale: linear or log")
         ->group(dumps);
     app.add_option("--heatmap-max", heatmapMax, "Work at the top of the colour bar [default: the largest]")
-        ->check(rt::tool::positiveNumber())
+        ->check(rt::tool::numberIn(1e-3f, 1e9f))
         ->group(dumps);
     rt::tool::addAccelOptions(app, o.accel);
 

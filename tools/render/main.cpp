@@ -50,6 +50,12 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     app.add_flag("--skip-existing", o.skipExisting,
                  "Exit 0 at once if -f already holds this render, complete (read back: size, window, pixels)")
         ->group(group);
+    rt::tool::addMaxInputOption(app)->group(group);
+    app.add_option("--max-memory", o.maxMemoryGb,
+                   "Refuse to start a render estimated to need more memory than this, in GB [default: 3/4 of the "
+                   "machine's]")
+        ->check(rt::tool::numberIn(0.01, 1e6))
+        ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
     app.add_option("--seed", o.render.seed,
                    "Random seed of the samples: another seed, independent noise (default 0, always the same)")

@@ -16,6 +16,7 @@
 #include "image/texture_files.h"
 #include "import/load_scene.h"
 #include "progress.h"
+#include "render/memory_estimate.h"
 #include "render/renderer.h"
 #include "render/tiles.h"
 #include "stats_report.h"
@@ -273,8 +274,12 @@ int runRender(RenderOptions o) {
     if (outputsComplete(o, outputs, frames, progress)) return 0;
     prepareOutputs(o, outputs, frames.first);
 
+    const std::uint64_t memoryLimit = o.maxMemoryGb ? std::uint64_t(*o.maxMemoryGb * 1e9) : defaultMemoryLimit();
+    checkMemoryLimit(estimateRenderMemory(o.render, 0, !o.preprocessOnly), memoryLimit);  // before the scene loads
+
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
+    checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
     const TextureFiles images(scene, scene.warnings);  // before the warnings are shown: it adds its own
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';

@@ -51,6 +51,7 @@ struct RenderOptions {
     // For --stats-json: the command line as given, and every option's value (given or default).
     std::vector<std::string> arguments;
     std::vector<std::pair<std::string, std::vector<std::string>>> optionValues;
+    std::optional<double> maxMemoryGb;  // --max-memory GB; default: rt::defaultMemoryLimit()
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.
