@@ -80,10 +80,11 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     std::uint64_t steps = 0;            // in a register; added to the caller's counters once
     const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     for (;;) {
-        if (tLimit < tMin) break;
-        ++steps;
-        const SplitNode node = nodes_[index];
-        if (!node.isLeaf()) {
+        // Down to a leaf. On the way tMin stays and tLimit, which only a leaf lowers, too:
+        // the early exit is tested once per leaf, after the next node is taken from the stack.
+        SplitNode node = nodes_[index];
+        while (!node.isLeaf()) {
+            ++steps;
             const int axis = node.axis();
             const Real split = node.split();
             const Real tPlane = (split - origin[axis]) * inverse[axis];
@@ -106,14 +107,16 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
                 stack[size++] = {second, tMin, tMax};
                 index = first;
             }
-            continue;
+            node = nodes_[index];
         }
+        ++steps;
         if (node.primitiveCount() != 0 && visitLeaf(prims, leaves_[node.primitiveOffset()])) break;
         if (size == 0) break;
         --size;
         index = stack[size].node;
         tMin = stack[size].tMin;
         tMax = stack[size].tMax;
+        if (tLimit < tMin) break;
     }
     counters.traversalSteps += steps;
 }
@@ -126,8 +129,9 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
     const RayLanes lanes(ray);
     const TriangleBlock* blocks = blocks_.data();
     const std::uint32_t* otherIds = otherIds_.data();
+    std::uint64_t tests = 0;  // in a register; added to the caller's counters once
     traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
-        counters.intersectionTests += leaf.triangles + leaf.others;
+        tests += leaf.triangles + leaf.others;
         for (std::uint32_t b = leaf.firstBlock; b < leaf.firstBlock + leaf.blocks(); ++b) {
             const BlockHits hits = intersectBlock(blocks[b], lanes, nearest.t);
             for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
@@ -143,6 +147,7 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
             prims.intersect(otherIds[i], ray, nearest.t, nearest);
         return false;  // a nearer hit may still lie in a later node; traverse() knows when not
     });
+    counters.intersectionTests += tests;
     // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
     if (!(nearest.t < tMax)) return false;
     hit = nearest;

@@ -80,15 +80,33 @@ inline RealLanes broadcast(Real x) { return {{x, x, x, x}}; }
 inline void storeLanes(Real* p, RealLanes a) {
     for (int i = 0; i < 4; ++i) p[i] = a.v[i];
 }
-inline RealLanes operator+(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return x + y; }); }
-inline RealLanes operator-(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return x - y; }); }
-inline RealLanes operator*(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return x * y; }); }
-inline RealLanes operator/(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return x / y; }); }
-inline RealLanes operator&(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return Real(x != 0 && y != 0); }); }
-inline RealLanes lessThan(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return Real(x < y); }); }
-inline RealLanes notLessThan(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return Real(!(x < y)); }); }
-inline RealLanes notGreaterThan(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return Real(!(x > y)); }); }
-inline RealLanes notEqual(RealLanes a, RealLanes b) { return eachLane(a, b, [](Real x, Real y) { return Real(x != y); }); }
+inline RealLanes operator+(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return x + y; });
+}
+inline RealLanes operator-(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return x - y; });
+}
+inline RealLanes operator*(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return x * y; });
+}
+inline RealLanes operator/(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return x / y; });
+}
+inline RealLanes operator&(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(x != 0 && y != 0); });
+}
+inline RealLanes lessThan(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(x < y); });
+}
+inline RealLanes notLessThan(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(!(x < y)); });
+}
+inline RealLanes notGreaterThan(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(!(x > y)); });
+}
+inline RealLanes notEqual(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(x != y); });
+}
 inline unsigned laneBits(RealLanes mask) {
     unsigned bits = 0;
     for (int i = 0; i < 4; ++i) bits |= unsigned(mask.v[i] != 0) << i;

@@ -64,7 +64,7 @@ inline BlockHits intersectBlock(const TriangleBlock& b, const RayLanes& ray, Rea
     const RealLanes invDet = broadcast(1) / det;
     // s = origin - p0, u = dot(s, p) / det
     const RealLanes sx = ray.origin[0] - load(b.p0, 0), sy = ray.origin[1] - load(b.p0, 1),
-                sz = ray.origin[2] - load(b.p0, 2);
+                    sz = ray.origin[2] - load(b.p0, 2);
     const RealLanes u = (sx * px + sy * py + sz * pz) * invDet;
     // q = cross(s, e1), v = dot(d, q) / det, t = dot(e2, q) / det
     const RealLanes qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
@@ -72,7 +72,7 @@ inline BlockHits intersectBlock(const TriangleBlock& b, const RayLanes& ray, Rea
     const RealLanes t = (e2x * qx + e2y * qy + e2z * qz) * invDet;
     const RealLanes zero = broadcast(0), one = broadcast(1);
     const RealLanes inside = notEqual(det, zero) & notLessThan(u, zero) & notGreaterThan(u, one) &
-                         notLessThan(v, zero) & notGreaterThan(u + v, one);
+                             notLessThan(v, zero) & notGreaterThan(u + v, one);
     BlockHits hits;
     hits.lanes = laneBits(inside & lessThan(zero, t) & lessThan(t, broadcast(tMax)));
     if (hits.lanes) {
