@@ -50,8 +50,8 @@ TEST(TriangleBlock, EdgesParallelRaysAndEmptyLanes) {
     const Triangle parallel{{-1, 0, -1}, {1, 0, -1}, {0, 0, 1}};
     Triangle tris[kSimdWidth];
     for (int lane = 0; lane < kSimdWidth; ++lane) tris[lane] = lane % 3 == 0 ? left : lane % 3 == 1 ? right : parallel;
-    EXPECT_EQ(differingLanes(tris, {{0, 0, 1}, {0, 0, -1}}, kInfinity), 0);  // down the shared edge
-    EXPECT_EQ(differingLanes(tris, {{-2, 0, 0}, {1, 0, 0}}, kInfinity), 0);  // in the plane z = 0 and y = 0
+    EXPECT_EQ(differingLanes(tris, {{0, 0, 1}, {0, 0, -1}}, kInfinity), 0);   // down the shared edge
+    EXPECT_EQ(differingLanes(tris, {{-2, 0, 0}, {1, 0, 0}}, kInfinity), 0);   // in the plane z = 0 and y = 0
     EXPECT_EQ(differingLanes(tris, {{0, 0, -1}, {0, 0, -1}}, kInfinity), 0);  // all behind
 
     TriangleBlock empty;  // no triangle set: no lane hits, whatever the ray
