@@ -1,5 +1,6 @@
 #include "accel/split_tree.h"
 
+#include <bit>
 #include <cmath>
 #include <utility>
 
@@ -21,12 +22,35 @@ void FlatTree::append(const FlatTree& subtree) {
 }
 
 SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs)
-    : prims_(prims),
-      view_(prims.view()),
-      bounds_(bounds),
-      nodes_(std::move(tree.nodes)),
-      primitiveIndices_(std::move(tree.primitiveIndices)) {
+    : prims_(prims), view_(prims.view()), bounds_(bounds), nodes_(std::move(tree.nodes)) {
+    layOutLeaves(tree);
     stats_ = computeStats(std::move(name), costs);
+}
+
+// Copies each leaf's triangles into blocks in leaf order and its other ids after them. The
+// triangles keep their order among themselves and are tested before the other kinds; the
+// order decides only between hits at exactly the same distance.
+void SplitTree::layOutLeaves(const FlatTree& tree) {
+    for (SplitNode& node : nodes_) {
+        if (!node.isLeaf() || node.primitiveCount() == 0) continue;
+        LeafPrimitives leaf;
+        leaf.firstBlock = std::uint32_t(blocks_.size());
+        leaf.firstOther = std::uint32_t(otherIds_.size());
+        const std::uint32_t* ids = &tree.primitiveIndices[node.primitiveOffset()];
+        for (std::uint32_t i = 0; i < node.primitiveCount(); ++i) {
+            const std::optional<std::uint32_t> triangle = prims_.indexIn<Triangle>(ids[i]);
+            if (!triangle) {
+                otherIds_.push_back(ids[i]);
+                continue;
+            }
+            if (leaf.triangles % kSimdWidth == 0) blocks_.emplace_back();
+            blocks_.back().set(int(leaf.triangles % kSimdWidth), prims_.all<Triangle>()[*triangle], ids[i]);
+            ++leaf.triangles;
+        }
+        leaf.others = std::uint32_t(otherIds_.size()) - leaf.firstOther;
+        node = SplitNode::leaf(std::uint32_t(leaves_.size()), node.primitiveCount());
+        leaves_.push_back(leaf);
+    }
 }
 
 // Front-to-back traversal with an explicit stack (Havran's TA_B, thesis [7]; pbrt-v3's
@@ -56,10 +80,11 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     std::uint64_t steps = 0;            // in a register; added to the caller's counters once
     const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     for (;;) {
-        if (tLimit < tMin) break;
-        ++steps;
-        const SplitNode node = nodes_[index];
-        if (!node.isLeaf()) {
+        // Down to a leaf. On the way tMin stays and tLimit, which only a leaf lowers, too:
+        // the early exit is tested once per leaf, after the next node is taken from the stack.
+        SplitNode node = nodes_[index];
+        while (!node.isLeaf()) {
+            ++steps;
             const int axis = node.axis();
             const Real split = node.split();
             const Real tPlane = (split - origin[axis]) * inverse[axis];
@@ -82,26 +107,47 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
                 stack[size++] = {second, tMin, tMax};
                 index = first;
             }
-            continue;
+            node = nodes_[index];
         }
-        if (visitLeaf(prims, &primitiveIndices_[node.primitiveOffset()], node.primitiveCount()) || size == 0) break;
+        ++steps;
+        if (node.primitiveCount() != 0 && visitLeaf(prims, leaves_[node.primitiveOffset()])) break;
+        if (size == 0) break;
         --size;
         index = stack[size].node;
         tMin = stack[size].tMin;
         tMax = stack[size].tMax;
+        if (tLimit < tMin) break;
     }
     counters.traversalSteps += steps;
 }
 
+// Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
+// triangles, each only if nearer than the nearest so far (a lane before it may have come nearer).
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;
-    traverse(ray, tMax, nearest.t, counters,
-             [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
-                 counters.intersectionTests += count;
-                 for (std::uint32_t i = 0; i < count; ++i) prims.intersect(ids[i], ray, nearest.t, nearest);
-                 return false;  // a nearer hit may still lie in a later node; traverse() knows when not
-             });
+    const RayLanes lanes(ray);
+    const TriangleBlock* blocks = blocks_.data();
+    const std::uint32_t* otherIds = otherIds_.data();
+    std::uint64_t tests = 0;  // in a register; added to the caller's counters once
+    traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
+        tests += leaf.triangles + leaf.others;
+        for (std::uint32_t b = leaf.firstBlock; b < leaf.firstBlock + leaf.blocks(); ++b) {
+            const BlockHits hits = intersectBlock(blocks[b], lanes, nearest.t);
+            for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
+                const int lane = std::countr_zero(bits);
+                if (!(hits.t[lane] < nearest.t)) continue;
+                nearest.t = hits.t[lane];
+                nearest.u = hits.u[lane];
+                nearest.v = hits.v[lane];
+                nearest.prim = blocks[b].id[lane];
+            }
+        }
+        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i)
+            prims.intersect(otherIds[i], ray, nearest.t, nearest);
+        return false;  // a nearer hit may still lie in a later node; traverse() knows when not
+    });
+    counters.intersectionTests += tests;
     // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
     if (!(nearest.t < tMax)) return false;
     hit = nearest;
@@ -109,14 +155,23 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
 }
 
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
+    const RayLanes lanes(ray);
+    const TriangleBlock* blocks = blocks_.data();
+    const std::uint32_t* otherIds = otherIds_.data();
+    std::uint64_t tests = 0;
     bool found = false;
-    traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
-        for (std::uint32_t i = 0; i < count; ++i) {
-            ++counters.intersectionTests;
-            if (prims.intersectsAny(ids[i], ray, tMax)) return found = true;
+    traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
+        for (std::uint32_t b = 0; b < leaf.blocks(); ++b) {
+            tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
+            if (intersectBlock(blocks[leaf.firstBlock + b], lanes, tMax).lanes) return found = true;
+        }
+        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i) {
+            ++tests;
+            if (prims.intersectsAny(otherIds[i], ray, tMax)) return found = true;
         }
         return false;
     });
+    counters.intersectionTests += tests;
     return found;
 }
 
@@ -156,7 +211,8 @@ AccelStats SplitTree::computeStats(std::string name, SahCosts costs) const {
     AccelStats s;
     s.name = std::move(name);
     s.primitives = prims_.size();
-    s.memoryBytes = nodes_.size() * sizeof(SplitNode) + primitiveIndices_.size() * sizeof(std::uint32_t);
+    s.memoryBytes = nodes_.size() * sizeof(SplitNode) + leaves_.size() * sizeof(LeafPrimitives) +
+                    blocks_.size() * sizeof(TriangleBlock) + otherIds_.size() * sizeof(std::uint32_t);
     const double rootArea = bounds_.surfaceArea();
     double leafDepthSum = 0;
     std::uint64_t nonEmptyLeaves = 0;

@@ -15,6 +15,7 @@
 
 #include "accel/accelerator.h"
 #include "accel/settings.h"
+#include "geometry/triangle_block.h"
 
 namespace rt {
 
@@ -71,6 +72,16 @@ struct SahCosts {
 
 inline SahCosts sahCosts(const KdSettings& kd) { return {kd.traversalCost, kd.intersectionCost}; }
 
+// A non-empty leaf as the traversal reads it: its triangles, copied in blocks of kSimdWidth
+// (two with Real = double, four with float; geometry/triangle_block.h) so that they are read in sequence and tested
+// together, then the ids of its other primitives, tested one by one through the PrimitiveView.
+struct LeafPrimitives {
+    std::uint32_t firstBlock = 0, triangles = 0;
+    std::uint32_t firstOther = 0, others = 0;
+
+    std::uint32_t blocks() const { return (triangles + kSimdWidth - 1) / kSimdWidth; }
+};
+
 class SplitTree final : public Accelerator {
 public:
     // `bounds` is the root voxel; every plane in `tree` must lie inside it.
@@ -84,6 +95,7 @@ public:
     void setBuildSeconds(double seconds) { stats_.buildSeconds = seconds; }
 
 private:
+    void layOutLeaves(const FlatTree& tree);
     template <typename LeafVisitor>
     void traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
                   const LeafVisitor& visitLeaf) const;
@@ -92,8 +104,11 @@ private:
     const Primitives& prims_;
     PrimitiveView view_;  // of prims_, which must not change while the tree is used
     Aabb bounds_;
+    // As the builder made them, except that a non-empty leaf's primitiveOffset() indexes leaves_.
     std::vector<SplitNode> nodes_;
-    std::vector<std::uint32_t> primitiveIndices_;
+    std::vector<LeafPrimitives> leaves_;
+    std::vector<TriangleBlock> blocks_;
+    std::vector<std::uint32_t> otherIds_;  // of the primitives that are not triangles
     AccelStats stats_;
 };
 

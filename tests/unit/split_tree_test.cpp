@@ -81,8 +81,8 @@ TEST(SplitTree, StatsAndVisitorDescribeTheTree) {
     EXPECT_EQ(st.nodes, 3u);
     EXPECT_EQ(st.leaves, 2u);
     EXPECT_EQ(st.primitiveReferences, 2u);
-    EXPECT_EQ(st.memoryBytes, 3 * 8u + 2 * 4u);
-    EXPECT_DOUBLE_EQ(st.bytesPerPrimitive(), 16.0);
+    EXPECT_EQ(st.memoryBytes, 3 * 8u + 2 * sizeof(LeafPrimitives) + 2 * 4u);  // nodes, leaves, sphere ids
+    EXPECT_DOUBLE_EQ(st.bytesPerPrimitive(), double(st.memoryBytes) / 2);
     EXPECT_EQ(st.maxDepth, 1u);
     // Root 1.0 * C_T; each half has area 2*(16 + 2*4*2) = 64 of 96: 2 * 1.5 * 1 * 2/3.
     EXPECT_NEAR(st.sahCost, 1.0 + 2.0, 1e-9);
@@ -96,4 +96,37 @@ TEST(SplitTree, StatsAndVisitorDescribeTheTree) {
     EXPECT_EQ(nodes[1].bounds.hi.z, 0);  // the lower child first
     EXPECT_EQ(nodes[2].bounds.lo.z, 0);
     EXPECT_EQ(nodes[2].depth, 1u);
+}
+
+// One leaf of six triangles (blocks of kSimdWidth, two or four: the last one then half empty) across the z axis at
+// z = 6, 5, ..., 1, listed farthest first so that every lane's hit is nearer than the one
+// before, and a sphere: the leaf's nearest hit must be the scalar test's, to the bit.
+TEST(SplitTree, LeafBlocksFindTheNearestTriangleAsTheScalarTestDoes) {
+    Primitives prims;
+    for (int i = 0; i < 6; ++i) {
+        const Real z = Real(6 - i);
+        prims.add<Triangle>({{-1, -1, z}, {Real(1.5), Real(-0.5), z + Real(0.1)}, {Real(-0.25), 1, z}}, 0);
+    }
+    prims.add<Sphere>({{0, 0, Real(0.5)}, Real(0.25)}, 0);
+    FlatTree flat;
+    flat.addLeaf({0, 1, 2, 3, 4, 5, 6});
+    const SplitTree tree(prims, Aabb{{-2, -2, -2}, {8, 8, 8}}, flat, "test", SahCosts{1.0, 1.5});
+    RayCounters counters;
+    const Ray ray{{Real(0.1), Real(0.2), 0}, normalize(Vec3{Real(0.01), Real(-0.02), 1})};
+
+    Hit hit;
+    ASSERT_TRUE(tree.intersect(ray, kInfinity, hit, counters));
+    EXPECT_EQ(hit.prim, 6u);  // the sphere, nearer than every triangle
+    Real t, u, v;
+    const Ray fromAbove{ray.origin + ray.direction * Real(0.9), ray.direction};  // past the sphere
+    ASSERT_TRUE(intersectTriangle(prims.all<Triangle>()[5], fromAbove, kInfinity, t, u, v));
+    ASSERT_TRUE(tree.intersect(fromAbove, kInfinity, hit, counters));
+    EXPECT_EQ(hit.prim, 5u);
+    EXPECT_EQ(hit.t, t);
+    EXPECT_EQ(hit.u, u);
+    EXPECT_EQ(hit.v, v);
+    EXPECT_EQ(counters.intersectionTests, 2 * 7u);
+
+    EXPECT_TRUE(tree.occluded(fromAbove, t * Real(1.01), counters));
+    EXPECT_FALSE(tree.occluded(fromAbove, t * Real(0.99), counters));
 }
