@@ -93,15 +93,23 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     counters.traversalSteps += steps;
 }
 
+// Each query has one leaf loop, instantiated twice: with the hit filter and, when there is
+// none, without it (`test` checks one primitive).
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;
-    traverse(ray, tMax, nearest.t, counters,
-             [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
-                 counters.intersectionTests += count;
-                 for (std::uint32_t i = 0; i < count; ++i) prims.intersect(ids[i], ray, nearest.t, nearest);
-                 return false;  // a nearer hit may still lie in a later node; traverse() knows when not
-             });
+    const auto run = [&](const auto& test) {
+        traverse(ray, tMax, nearest.t, counters,
+                 [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
+                     counters.intersectionTests += count;
+                     for (std::uint32_t i = 0; i < count; ++i) test(prims, ids[i]);
+                     return false;  // a nearer hit may still lie in a later node; traverse() knows when not
+                 });
+    };
+    if (filter_)
+        run([&](const PrimitiveView& p, std::uint32_t id) { intersectFiltered(p, id, ray, *filter_, nearest); });
+    else
+        run([&](const PrimitiveView& p, std::uint32_t id) { p.intersect(id, ray, nearest.t, nearest); });
     // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
     if (!(nearest.t < tMax)) return false;
     hit = nearest;
@@ -110,13 +118,20 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
 
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     bool found = false;
-    traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
-        for (std::uint32_t i = 0; i < count; ++i) {
-            ++counters.intersectionTests;
-            if (prims.intersectsAny(ids[i], ray, tMax)) return found = true;
-        }
-        return false;
-    });
+    const auto run = [&](const auto& test) {
+        traverse(ray, tMax, tMax, counters,
+                 [&](const PrimitiveView& prims, const std::uint32_t* ids, std::uint32_t count) {
+                     for (std::uint32_t i = 0; i < count; ++i) {
+                         ++counters.intersectionTests;
+                         if (test(prims, ids[i])) return found = true;
+                     }
+                     return false;
+                 });
+    };
+    if (filter_)
+        run([&](const PrimitiveView& p, std::uint32_t id) { return occludesFiltered(p, id, ray, tMax, *filter_); });
+    else
+        run([&](const PrimitiveView& p, std::uint32_t id) { return p.intersectsAny(id, ray, tMax); });
     return found;
 }
 

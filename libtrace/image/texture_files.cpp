@@ -31,10 +31,17 @@ struct TextureFiles::Impl {
         OIIO::ustring file;
         OIIO::TextureOpt options;
         int channels = 0;
+        int alphaChannel = -1;  // none
         bool srgb = false;
     };
     OIIO::TextureSystem* system = nullptr;
     std::vector<Entry> entries;
+
+    // The channel alpha() reads (a mask without alpha: its first), or -1 for none.
+    static int alphaChannel(const Entry& e, bool mask) {
+        if (e.file.empty()) return -1;
+        return e.alphaChannel >= 0 ? e.alphaChannel : mask ? 0 : -1;
+    }
 
     Entry open(const Texture& t, std::vector<std::string>& warnings) const {
         Entry e;
@@ -48,6 +55,7 @@ struct TextureFiles::Impl {
         }
         e.file = file;
         e.channels = std::min(spec->nchannels, 3);
+        e.alphaChannel = spec->alpha_channel >= 0 ? spec->alpha_channel : spec->nchannels == 2 ? 1 : -1;
         e.srgb = !spec->format.is_floating_point();
         e.options.swrap = wrapOf(t.wrapS);
         e.options.twrap = wrapOf(t.wrapT);
@@ -56,6 +64,10 @@ struct TextureFiles::Impl {
         return e;
     }
 };
+
+bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
+    return impl_->alphaChannel(impl_->entries[index], mask) >= 0;
+}
 
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes)
     : impl_(std::make_unique<Impl>()) {
@@ -78,6 +90,17 @@ Color TextureFiles::lookup(std::uint32_t index, float s, float t) const {
     if (e.srgb)
         for (float& c : rgb) c = srgbToLinear(c);
     return {rgb[0], rgb[1], rgb[2]};
+}
+
+float TextureFiles::alpha(std::uint32_t index, float s, float t, bool mask) const {
+    const Impl::Entry& e = impl_->entries[index];
+    const int channel = impl_->alphaChannel(e, mask);
+    if (channel < 0) return 1;
+    float a = 1;
+    OIIO::TextureOpt options = e.options;
+    options.firstchannel = channel;
+    if (!impl_->system->texture(e.file, options, s, t, 0, 0, 0, 0, 1, &a)) return 1;
+    return a;
 }
 
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include "render/texture.h"
 
 #include <cmath>
+#include <optional>
 
 namespace rt {
 
@@ -29,6 +30,34 @@ Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& 
     if (!images) return {1, 1, 1};
     const std::array<float, 2> uv = transformUv(t, s.u, s.v);
     return images->lookup(index, uv[0], uv[1]);
+}
+
+namespace {
+
+// The image texture giving the material's alpha, if any; `mask` says how it is read.
+std::optional<std::uint32_t> alphaImage(const Scene& scene, const Material& m, const ImageTextures* images,
+                                        bool& mask) {
+    if (!m.alphaTexture || !images || scene.textures[*m.alphaTexture].kind != Texture::Kind::Image) return {};
+    mask = m.alphaTexture != m.colorTexture;
+    return m.alphaTexture;
+}
+
+}  // namespace
+
+float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const ImageTextures* images) {
+    bool mask = false;
+    const std::optional<std::uint32_t> image = alphaImage(scene, m, images, mask);
+    if (!image) return m.alpha;
+    const std::array<float, 2> uv = transformUv(scene.textures[*image], u, v);
+    return m.alpha * images->alpha(*image, uv[0], uv[1], mask);
+}
+
+bool cutsOut(const Scene& scene, const Material& m, const ImageTextures* images) {
+    if (!m.alphaCutoff || !(*m.alphaCutoff > 0)) return false;
+    if (m.alpha < *m.alphaCutoff) return true;
+    bool mask = false;
+    const std::optional<std::uint32_t> image = alphaImage(scene, m, images, mask);
+    return image && images->hasAlpha(*image, mask);
 }
 
 }  // namespace rt

@@ -18,6 +18,12 @@ public:
     // Linear RGB of the scene's image texture `index` at (s, t), texture coordinates already
     // transformed (transformUv), with the texture's wrap modes. Thread-safe.
     virtual Color lookup(std::uint32_t index, float s, float t) const = 0;
+    // The opacity of image texture `index` at (s, t): its alpha channel; an image without one
+    // gives its first channel if `mask` (a greyscale mask, as OBJ's map_d), else 1. Not
+    // colour-decoded. Thread-safe.
+    virtual float alpha(std::uint32_t index, float s, float t, bool mask) const = 0;
+    // Whether the image has what alpha(index, ..., mask) reads; without it alpha is 1 everywhere.
+    virtual bool hasAlpha(std::uint32_t index, bool mask) const = 0;
 };
 
 // Texture coordinates after the texture's transform, as KHR_texture_transform defines it:
@@ -26,5 +32,12 @@ std::array<float, 2> transformUv(const Texture& t, Real u, Real v);
 
 // The colour of texture `index` of the scene at the surface point.
 Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);
+
+// The opacity of the material at texture coordinates (u, v) (Material::alpha, alphaTexture);
+// a checker or no image lookups: alpha alone.
+float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const ImageTextures* images);
+// Whether materialAlpha can be below the material's cut-off anywhere: a cut-out whose texture
+// has no alpha and whose factor is above the cut-off is opaque.
+bool cutsOut(const Scene& scene, const Material& m, const ImageTextures* images);
 
 }  // namespace rt

@@ -51,6 +51,13 @@ struct Material {
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
     Color emission{0, 0, 0};
     std::optional<std::uint32_t> emissionTexture{};
+    // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times
+    // alphaTexture's alpha at the hit, is below alphaCutoff, rays pass through the surface.
+    // An alpha texture that is the colour texture gives its alpha channel (1 without one); any
+    // other is a mask: its alpha channel, or its first channel when it has none.
+    std::optional<float> alphaCutoff{};  // set: the material is a cut-out
+    float alpha = 1;
+    std::optional<std::uint32_t> alphaTexture{};
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.

@@ -49,6 +49,7 @@ private:
     void readCamera(const XmlElement& e, bool& seen);
     Vec3 readPoint(pugi::xml_node node) const;
     void readMaterial(const XmlElement& e);
+    void readCutout(const XmlElement& e, std::uint32_t index, Material& m);
     void readTexture(const XmlElement& e);
     void resolveTextures();
     void readModel(const XmlElement& e);
@@ -132,9 +133,10 @@ void SceneBuilder::readList(const XmlElement& list) {
     list.requireOnlyChildren({tag.substr(0, tag.size() - 1)});
     for (const pugi::xml_node& item : list.node().children()) {
         if (tag == "materials")
-            readMaterial(XmlElement(file_, item,
-                                    {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection",
-                                     "spread", "texture", "emission", "emission_texture"}));
+            readMaterial(XmlElement(
+                file_, item,
+                {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection", "spread",
+                 "texture", "emission", "emission_texture", "alpha", "alpha_texture", "alpha_cutoff"}));
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
@@ -222,7 +224,17 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
         textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});
     if (const auto name = e.optionalString("emission_texture"))
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
+    readCutout(e, index, m);
     scene_.materials.push_back(std::move(m));
+}
+
+// rt extension: a cut-out material has alpha_cutoff; alpha and alpha_texture give its opacity.
+void SceneBuilder::readCutout(const XmlElement& e, std::uint32_t index, Material& m) {
+    if (e.has("alpha_cutoff")) m.alphaCutoff = float(e.nonNegative("alpha_cutoff", 0.5));
+    m.alpha = float(e.nonNegative("alpha", m.alpha));
+    if (m.alpha > 1) e.fail("<material> alpha must be between 0 and 1");
+    if (const auto name = e.optionalString("alpha_texture"))
+        textureUses_.push_back({index, &Material::alphaTexture, *name, e.node()});
 }
 
 // rt extension: an image file (any format OpenImageIO reads) or a procedural checker.

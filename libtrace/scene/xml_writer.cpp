@@ -188,6 +188,9 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             node.append_attribute("emission").set_value(numberList({m.emission.r, m.emission.g, m.emission.b}).c_str());
         if (m.emissionTexture)
             node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emissionTexture).c_str());
+        if (m.alphaCutoff) setNumber(node, "alpha_cutoff", *m.alphaCutoff);
+        if (m.alpha != 1) setNumber(node, "alpha", m.alpha);
+        if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
     }
 }
 
