@@ -311,7 +311,7 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
                              [&](const std::string& n) { return n.find(text) != std::string::npos; });
     };
     EXPECT_EQ(count("`Tr`"), 0) << "d and Tr are not used: no warning about them";
-    EXPECT_EQ(count("3 material(s) with texture maps other than map_Kd"), 1);
+    EXPECT_EQ(count("3 material(s) with texture maps other than map_Kd and map_d"), 1);
     EXPECT_EQ(count("3 material(s) partly transparent"), 1);
     EXPECT_EQ(count("material"), 2) << "one note per kind, not per material";
     // Ke is the emission, map_Kd the colour texture, beside the OBJ.
@@ -319,6 +319,25 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
     EXPECT_EQ(a.emission, (Color{1, 1, 1}));
     ASSERT_TRUE(a.colorTexture);
     EXPECT_EQ(r.scene.textures[*a.colorTexture].path, dir.path("wood.png"));
+}
+
+// map_d is the cut-out's mask; without it map_Kd's alpha; without either no cut-out.
+TEST(ImportObj, MapDAndTheAlphaOfMapKdCutOut) {
+    TempDir dir;
+    dir.write("m.mtl",
+              "newmtl fence\nmap_Kd wood.png\nmap_d fence.png\nnewmtl leaf\nmap_Kd leaf.png\n"
+              "newmtl glass\nd 0.5\n");
+    const ImportResult r = importScene(dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare +
+                                                              "usemtl fence\nf 1 2 3\nusemtl leaf\nf 1 3 4\n"
+                                                              "usemtl glass\nf 1 2 4\n"));
+    const auto material = [&](const char* name) { return r.scene.materials[*r.scene.findMaterial(name)]; };
+    const Material fence = material("fence"), leaf = material("leaf"), glass = material("glass");
+    ASSERT_TRUE(fence.alphaTexture);
+    EXPECT_EQ(r.scene.textures[*fence.alphaTexture].path, dir.path("fence.png"));
+    EXPECT_EQ(fence.alphaCutoff, std::optional<float>(0.5f));
+    EXPECT_EQ(leaf.alphaTexture, leaf.colorTexture);
+    EXPECT_EQ(leaf.alphaCutoff, std::optional<float>(0.5f));
+    EXPECT_FALSE(glass.alphaCutoff) << "a constant d is not a cut-out";
 }
 
 // vn and vt go with their corners; OBJ's v (up the image) becomes rt's (down).
