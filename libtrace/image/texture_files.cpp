@@ -37,6 +37,19 @@ struct TextureFiles::Impl {
     OIIO::TextureSystem* system = nullptr;
     std::vector<Entry> entries;
 
+    // The first three channels at (s, t) as stored (a grey image's one in all three); `c` is
+    // left as it is when the image cannot be read.
+    bool sample(const Entry& e, float s, float t, Color& c) const {
+        if (e.file.empty()) return false;
+        float rgb[3] = {c.r, c.g, c.b};
+        OIIO::TextureOpt options = e.options;  // per call: the system may write to it
+        // No ray differentials yet: the finest level, filtered bilinearly.
+        if (!system->texture(e.file, options, s, t, 0, 0, 0, 0, e.channels, rgb)) return false;
+        if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
+        c = {rgb[0], rgb[1], rgb[2]};
+        return true;
+    }
+
     // The channel alpha() reads (a mask without alpha: its first), or -1 for none.
     static int alphaChannel(const Entry& e, bool mask) {
         if (e.file.empty()) return -1;
@@ -81,15 +94,15 @@ TextureFiles::~TextureFiles() { OIIO::TextureSystem::destroy(impl_->system); }
 
 Color TextureFiles::lookup(std::uint32_t index, float s, float t) const {
     const Impl::Entry& e = impl_->entries[index];
-    if (e.file.empty()) return {1, 1, 1};
-    float rgb[3] = {1, 1, 1};
-    OIIO::TextureOpt options = e.options;  // per call: the system may write to it
-    // No ray differentials yet: the finest level, filtered bilinearly.
-    if (!impl_->system->texture(e.file, options, s, t, 0, 0, 0, 0, e.channels, rgb)) return {1, 1, 1};
-    if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
-    if (e.srgb)
-        for (float& c : rgb) c = srgbToLinear(c);
-    return {rgb[0], rgb[1], rgb[2]};
+    Color c{1, 1, 1};
+    if (!impl_->sample(e, s, t, c) || !e.srgb) return c;
+    return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)};
+}
+
+Color TextureFiles::data(std::uint32_t index, float s, float t) const {
+    Color c{0.5f, 0.5f, 1};
+    impl_->sample(impl_->entries[index], s, t, c);
+    return c;
 }
 
 float TextureFiles::alpha(std::uint32_t index, float s, float t, bool mask) const {

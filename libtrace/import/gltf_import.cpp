@@ -336,6 +336,9 @@ private:
             m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             readAlphaMode(gm, what, m);
+            m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
+            if (m.normalTexture)
+                m.normalScale = float(finiteNumber(gm.normalTexture.scale, file_, what + " normal scale"));
         }
         return m;
     }

@@ -18,6 +18,9 @@ public:
     // Linear RGB of the scene's image texture `index` at (s, t), texture coordinates already
     // transformed (transformUv), with the texture's wrap modes. Thread-safe.
     virtual Color lookup(std::uint32_t index, float s, float t) const = 0;
+    // The same values as stored, not colour-decoded (normal maps); (0.5, 0.5, 1), the
+    // unperturbed normal, where the image cannot be read. Thread-safe.
+    virtual Color data(std::uint32_t index, float s, float t) const = 0;
     // The opacity of image texture `index` at (s, t): its alpha channel; an image without one
     // gives its first channel if `mask` (a greyscale mask, as OBJ's map_d), else 1. Not
     // colour-decoded. Thread-safe.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/normal_map.h"
 #include "render/phong.h"
 
 namespace rt {
@@ -121,8 +122,9 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                     RenderCounters& counters) const {
-    const SurfacePoint s = surfaceAt(scene_.primitives, ray, hit);
     const Material& m = materialOf(scene_, hit.prim);
+    SurfacePoint s = surfaceAt(scene_.primitives, ray, hit);
+    applyNormalMap(scene_, m, hit, images_, s);
     const Color color = surfaceColor(m, s);
     const Vec3 toViewer = -ray.direction;
 

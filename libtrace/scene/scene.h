@@ -58,6 +58,10 @@ struct Material {
     std::optional<float> alphaCutoff{};  // set: the material is a cut-out
     float alpha = 1;
     std::optional<std::uint32_t> alphaTexture{};
+    // rt extension: a tangent-space normal map in glTF's convention (render/normal_map.h); its
+    // x and y are multiplied by normalScale (glTF's normalTexture.scale).
+    std::optional<std::uint32_t> normalTexture{};
+    float normalScale = 1;
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.

@@ -133,10 +133,10 @@ void SceneBuilder::readList(const XmlElement& list) {
     list.requireOnlyChildren({tag.substr(0, tag.size() - 1)});
     for (const pugi::xml_node& item : list.node().children()) {
         if (tag == "materials")
-            readMaterial(XmlElement(
-                file_, item,
-                {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection", "spread",
-                 "texture", "emission", "emission_texture", "alpha", "alpha_texture", "alpha_cutoff"}));
+            readMaterial(XmlElement(file_, item,
+                                    {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection",
+                                     "spread", "texture", "emission", "emission_texture", "alpha", "alpha_texture",
+                                     "alpha_cutoff", "normal_texture", "normal_scale"}));
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
@@ -225,6 +225,9 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     if (const auto name = e.optionalString("emission_texture"))
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
     readCutout(e, index, m);
+    if (const auto name = e.optionalString("normal_texture"))
+        textureUses_.push_back({index, &Material::normalTexture, *name, e.node()});
+    m.normalScale = float(e.number("normal_scale", m.normalScale));
     scene_.materials.push_back(std::move(m));
 }
 

@@ -205,9 +205,9 @@ TEST(XmlWriter, ModelFolderFollowsTheXmlName) {
     EXPECT_EQ(modelFolderFor("scene"), "scene.models");
 }
 
-// Textures, material textures, emission and cut-outs, and RAW per-corner sections survive a save and a
+// Textures, material textures, emission, cut-outs and normal maps, and RAW per-corner sections survive a save and a
 // load; an image's file is written relative to the new scene's folder.
-TEST(XmlWriter, TexturesEmissionCutoutsAndVertexDataRoundTrip) {
+TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     TempDir dir;
     const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
       <textures>
@@ -216,7 +216,7 @@ TEST(XmlWriter, TexturesEmissionCutoutsAndVertexDataRoundTrip) {
       </textures>
       <materials>
         <material name="lamp" texture="floor" emission="2 1 0.5" emission_texture="wood"
-                  alpha_cutoff="0.25" alpha="0.75" alpha_texture="wood"/>
+                  alpha_cutoff="0.25" alpha="0.75" alpha_texture="wood" normal_texture="wood" normal_scale="0.5"/>
       </materials></scene>)";
     Scene first = loadSceneXml(dir.write("in/scene.xml", xml), readModelFile);
     Model m;
@@ -250,6 +250,8 @@ TEST(XmlWriter, TexturesEmissionCutoutsAndVertexDataRoundTrip) {
     EXPECT_EQ(lamp.alphaCutoff, std::optional<float>(0.25f));
     EXPECT_EQ(lamp.alpha, 0.75f);
     EXPECT_EQ(lamp.alphaTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.normalTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.normalScale, 0.5f);
     ASSERT_EQ(second.models.size(), 1u);
     EXPECT_EQ(second.models[0].vertexNormals, m.vertexNormals);
     EXPECT_EQ(second.models[0].vertexUvs, m.vertexUvs);
