@@ -113,7 +113,8 @@ private:
             const auto found = sums_.find(k.key);
             const Accumulated a = found != sums_.end() ? found->second : Accumulated{};
             Vec3 t = orthogonalTo(a.tangent, k.normal);
-            if (!(length(t) > 0)) t = orthogonalTo(std::abs(k.normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}, k.normal);
+            if (!(length(t) > 0))
+                t = orthogonalTo(std::abs(k.normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}, k.normal);
             const float w = dot(cross(k.normal, t), a.bitangent) > 0 ? -1.0f : 1.0f;
             for (int a3 = 0; a3 < 3; ++a3) out.values[4 * c + a3] = float(t[a3]);
             out.values[4 * c + 3] = w;

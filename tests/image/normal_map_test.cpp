@@ -52,7 +52,8 @@ Scene plane(const std::string& normalMap, bool mirrored, bool facingAway, const 
     quad.vertexUvs = {0, 0, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1};
     if (facingAway) {  // swap the second and third corners
         for (std::size_t t = 0; t < 2; ++t) {
-            for (int a = 0; a < 3; ++a) std::swap(quad.triangleVertices[9 * t + 3 + a], quad.triangleVertices[9 * t + 6 + a]);
+            for (int a = 0; a < 3; ++a)
+                std::swap(quad.triangleVertices[9 * t + 3 + a], quad.triangleVertices[9 * t + 6 + a]);
             for (int a = 0; a < 2; ++a) std::swap(quad.vertexUvs[6 * t + 2 + a], quad.vertexUvs[6 * t + 4 + a]);
         }
     }
@@ -115,7 +116,8 @@ TEST(NormalMap, APlaneShadesAsThePerturbedNormalPredicts) {
         const Vec3 perturbed = normalize((tangent * stored.x + bitangent * stored.y) * tilt + normal * stored.z);
         const Vec3 flipped = normalize((tangent * stored.x + bitangent * stored.y) * -tilt + normal * stored.z);
         const float error = worstError(scene, images, perturbed);
-        EXPECT_LT(error, 1e-3f) << "mirrored " << c.mirrored << ", facing away " << c.facingAway << ", mapped " << c.mapped.x << " " << c.mapped.y;
+        EXPECT_LT(error, 1e-3f) << "mirrored " << c.mirrored << ", facing away " << c.facingAway << ", mapped "
+                                << c.mapped.x << " " << c.mapped.y;
         EXPECT_GT(worstError(scene, images, flipped), 0.1f) << "the test tells a wrong tilt from the right one";
         EXPECT_GT(worstError(scene, images, normal), 0.1f) << "the map changes the shading";
     }
