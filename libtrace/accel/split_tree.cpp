@@ -122,13 +122,15 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
 }
 
 // Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
-// triangles, each only if nearer than the nearest so far (a lane before it may have come nearer).
+// triangles, each only if nearer than the nearest so far (a lane before it may have come nearer)
+// and, in a scene with cut-outs, only if the hit filter accepts it.
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;
     const RayLanes lanes(ray);
     const TriangleBlock* blocks = blocks_.data();
     const std::uint32_t* otherIds = otherIds_.data();
+    const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
     traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
         tests += leaf.triangles + leaf.others;
@@ -137,14 +139,17 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
             for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
                 const int lane = std::countr_zero(bits);
                 if (!(hits.t[lane] < nearest.t)) continue;
-                nearest.t = hits.t[lane];
-                nearest.u = hits.u[lane];
-                nearest.v = hits.v[lane];
-                nearest.prim = blocks[b].id[lane];
+                const Hit candidate{hits.t[lane], blocks[b].id[lane], hits.u[lane], hits.v[lane]};
+                if (filter && !filter->accepts(ray, candidate)) continue;
+                nearest = candidate;
             }
         }
-        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i)
-            prims.intersect(otherIds[i], ray, nearest.t, nearest);
+        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i) {
+            if (filter)
+                intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
+            else
+                prims.intersect(otherIds[i], ray, nearest.t, nearest);
+        }
         return false;  // a nearer hit may still lie in a later node; traverse() knows when not
     });
     counters.intersectionTests += tests;
@@ -160,14 +165,27 @@ bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const
     const std::uint32_t* otherIds = otherIds_.data();
     std::uint64_t tests = 0;
     bool found = false;
+    const HitFilter* filter = filter_;
+    // whether a block's hits count: any of them without a filter, else one the filter accepts
+    const auto counts = [&](const TriangleBlock& block, const BlockHits& hits) {
+        if (!filter) return hits.lanes != 0;
+        for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
+            const int lane = std::countr_zero(bits);
+            if (filter->accepts(ray, {hits.t[lane], block.id[lane], hits.u[lane], hits.v[lane]})) return true;
+        }
+        return false;
+    };
     traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
         for (std::uint32_t b = 0; b < leaf.blocks(); ++b) {
             tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
-            if (intersectBlock(blocks[leaf.firstBlock + b], lanes, tMax).lanes) return found = true;
+            const TriangleBlock& block = blocks[leaf.firstBlock + b];
+            if (counts(block, intersectBlock(block, lanes, tMax))) return found = true;
         }
         for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i) {
             ++tests;
-            if (prims.intersectsAny(otherIds[i], ray, tMax)) return found = true;
+            const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, tMax, *filter)
+                                     : prims.intersectsAny(otherIds[i], ray, tMax);
+            if (hits) return found = true;
         }
         return false;
     });

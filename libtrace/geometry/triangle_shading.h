@@ -31,6 +31,10 @@ struct CornerValues {
 
 using CornerNormals = CornerValues<3>;  // unit, or all zero: the geometric normal
 using CornerUvs = CornerValues<2>;
+// Tangent-space frames for normal maps (geometry/tangents.h): unit tangent xyz along +u and
+// the handedness w (+1 or -1) of the bitangent w * cross(normal, tangent), which points up the
+// image (-v: rt's v runs down it, as glTF's).
+using CornerTangents = CornerValues<4>;
 struct CornerColors : CornerValues<3> {
     CornerColors() { values.fill(1); }
 };
@@ -65,15 +69,19 @@ struct TriangleShading {
     CornerAttribute<CornerNormals> normals;
     CornerAttribute<CornerUvs> uvs;
     CornerAttribute<CornerColors> colors;
+    CornerAttribute<CornerTangents> tangents;
 
-    bool empty() const { return normals.empty() && uvs.empty() && colors.empty(); }
+    bool empty() const { return normals.empty() && uvs.empty() && colors.empty() && tangents.empty(); }
     // Appends `other` for triangles numbered from `offset` (this side's triangle count) on.
     void append(const TriangleShading& other, std::size_t offset) {
         normals.append(other.normals, offset);
         uvs.append(other.uvs, offset);
         colors.append(other.colors, offset);
+        tangents.append(other.tangents, offset);
     }
-    std::size_t memoryBytes() const { return normals.memoryBytes() + uvs.memoryBytes() + colors.memoryBytes(); }
+    std::size_t memoryBytes() const {
+        return normals.memoryBytes() + uvs.memoryBytes() + colors.memoryBytes() + tangents.memoryBytes();
+    }
 };
 
 }  // namespace rt

@@ -31,10 +31,30 @@ struct TextureFiles::Impl {
         OIIO::ustring file;
         OIIO::TextureOpt options;
         int channels = 0;
+        int alphaChannel = -1;  // none
         bool srgb = false;
     };
     OIIO::TextureSystem* system = nullptr;
     std::vector<Entry> entries;
+
+    // The first three channels at (s, t) as stored (a grey image's one in all three); `c` is
+    // left as it is when the image cannot be read.
+    bool sample(const Entry& e, float s, float t, Color& c) const {
+        if (e.file.empty()) return false;
+        float rgb[3] = {c.r, c.g, c.b};
+        OIIO::TextureOpt options = e.options;  // per call: the system may write to it
+        // No ray differentials yet: the finest level, filtered bilinearly.
+        if (!system->texture(e.file, options, s, t, 0, 0, 0, 0, e.channels, rgb)) return false;
+        if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
+        c = {rgb[0], rgb[1], rgb[2]};
+        return true;
+    }
+
+    // The channel alpha() reads (a mask without alpha: its first), or -1 for none.
+    static int alphaChannel(const Entry& e, bool mask) {
+        if (e.file.empty()) return -1;
+        return e.alphaChannel >= 0 ? e.alphaChannel : mask ? 0 : -1;
+    }
 
     Entry open(const Texture& t, std::vector<std::string>& warnings) const {
         Entry e;
@@ -48,6 +68,7 @@ struct TextureFiles::Impl {
         }
         e.file = file;
         e.channels = std::min(spec->nchannels, 3);
+        e.alphaChannel = spec->alpha_channel >= 0 ? spec->alpha_channel : spec->nchannels == 2 ? 1 : -1;
         e.srgb = !spec->format.is_floating_point();
         e.options.swrap = wrapOf(t.wrapS);
         e.options.twrap = wrapOf(t.wrapT);
@@ -57,30 +78,42 @@ struct TextureFiles::Impl {
     }
 };
 
+bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
+    return impl_->alphaChannel(impl_->entries[index], mask) >= 0;
+}
+
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes)
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
     impl_->system = OIIO::TextureSystem::create(false);
     impl_->system->attribute("max_memory_MB", cacheMegabytes);
     impl_->system->attribute("automip", 1);
     for (const Texture& t : scene.textures) impl_->entries.push_back(impl_->open(t, warnings));
-    // Textures that hold data, not colour, are read as stored: no sRGB decoding.
-    for (const Material& m : scene.materials)
-        if (m.metallicRoughnessTexture) impl_->entries.at(*m.metallicRoughnessTexture).srgb = false;
 }
 
 TextureFiles::~TextureFiles() { OIIO::TextureSystem::destroy(impl_->system); }
 
 Color TextureFiles::lookup(std::uint32_t index, float s, float t) const {
     const Impl::Entry& e = impl_->entries[index];
-    if (e.file.empty()) return {1, 1, 1};
-    float rgb[3] = {1, 1, 1};
-    OIIO::TextureOpt options = e.options;  // per call: the system may write to it
-    // No ray differentials yet: the finest level, filtered bilinearly.
-    if (!impl_->system->texture(e.file, options, s, t, 0, 0, 0, 0, e.channels, rgb)) return {1, 1, 1};
-    if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
-    if (e.srgb)
-        for (float& c : rgb) c = srgbToLinear(c);
-    return {rgb[0], rgb[1], rgb[2]};
+    Color c{1, 1, 1};
+    if (!impl_->sample(e, s, t, c) || !e.srgb) return c;
+    return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)};
+}
+
+Color TextureFiles::data(std::uint32_t index, float s, float t) const {
+    Color c{0.5f, 0.5f, 1};
+    impl_->sample(impl_->entries[index], s, t, c);
+    return c;
+}
+
+float TextureFiles::alpha(std::uint32_t index, float s, float t, bool mask) const {
+    const Impl::Entry& e = impl_->entries[index];
+    const int channel = impl_->alphaChannel(e, mask);
+    if (channel < 0) return 1;
+    float a = 1;
+    OIIO::TextureOpt options = e.options;
+    options.firstchannel = channel;
+    if (!impl_->system->texture(e.file, options, s, t, 0, 0, 0, 0, 1, &a)) return 1;
+    return a;
 }
 
 }  // namespace rt

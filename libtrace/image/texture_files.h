@@ -23,6 +23,9 @@ public:
     ~TextureFiles() override;
 
     Color lookup(std::uint32_t index, float s, float t) const override;
+    Color data(std::uint32_t index, float s, float t) const override;
+    float alpha(std::uint32_t index, float s, float t, bool mask) const override;
+    bool hasAlpha(std::uint32_t index, bool mask) const override;
 
 private:
     struct Impl;

@@ -2,6 +2,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -360,6 +361,10 @@ private:
             m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             keepMetallicRoughnessTexture(gm, what, m);
+            readAlphaMode(gm, what, m);
+            m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
+            if (m.normalTexture)
+                m.normalScale = float(finiteNumber(gm.normalTexture.scale, file_, what + " normal scale"));
         }
         return m;
     }
@@ -373,6 +378,20 @@ private:
         if (!m.metallicRoughnessTexture) return;
         m.metallicRoughness->metallic = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
         m.metallicRoughness->roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+    }
+
+    // alphaMode MASK is a cut-out at alphaCutoff of the base colour's alpha (factor times the
+    // texture's); BLEND, which a ray tracer without transparency sorting cannot follow, is
+    // taken as MASK at 0.5 (docs/conversion.md). OPAQUE ignores alpha.
+    void readAlphaMode(const tinygltf::Material& gm, const std::string& what, Material& m) {
+        if (gm.alphaMode != "MASK" && gm.alphaMode != "BLEND") return;
+        const bool blend = gm.alphaMode == "BLEND";
+        m.alphaCutoff = blend ? 0.5f : float(finiteNumber(gm.alphaCutoff, file_, what + " alphaCutoff"));
+        const std::vector<double>& factor = gm.pbrMetallicRoughness.baseColorFactor;
+        if (factor.size() == 4) m.alpha = float(std::clamp(finiteNumber(factor[3], file_, what + " alpha"), 0.0, 1.0));
+        m.alphaTexture = m.colorTexture;
+        if (blend)
+            assembly_.report().notes.push_back(what + " (" + gm.name + "): alphaMode BLEND drawn as a cut-out at 0.5");
     }
 
     float emissiveStrength(const tinygltf::Material& gm, const std::string& what) const {

@@ -74,14 +74,13 @@ private:
 
 // What a material defines that rt's Phong material drops, counted for the notes.
 struct DroppedMaterialData {
-    std::size_t textured = 0;     // any map_* or bump/disp/refl texture but map_Kd
+    std::size_t textured = 0;     // any map_* or disp/refl texture but map_Kd, map_d and the normal map
     std::size_t transparent = 0;  // d < 1 (or Tr > 0)
 
     void count(const tinyobj::material_t& m) {
-        const std::string* maps[] = {&m.ambient_texname,    &m.specular_texname,     &m.specular_highlight_texname,
-                                     &m.bump_texname,       &m.displacement_texname, &m.alpha_texname,
-                                     &m.reflection_texname, &m.roughness_texname,    &m.metallic_texname,
-                                     &m.sheen_texname,      &m.emissive_texname,     &m.normal_texname};
+        const std::string* maps[] = {&m.ambient_texname,      &m.specular_texname,   &m.specular_highlight_texname,
+                                     &m.displacement_texname, &m.reflection_texname, &m.roughness_texname,
+                                     &m.metallic_texname,     &m.sheen_texname,      &m.emissive_texname};
         textured += std::any_of(std::begin(maps), std::end(maps), [](const std::string* t) { return !t->empty(); });
         transparent += m.dissolve < 1;
     }
@@ -89,7 +88,7 @@ struct DroppedMaterialData {
     void note(std::vector<std::string>& notes) const {
         if (textured)
             notes.push_back(std::to_string(textured) +
-                            " material(s) with texture maps other than map_Kd: those ignored");
+                            " material(s) with texture maps other than map_Kd, map_d and a normal map: those ignored");
         if (transparent)
             notes.push_back(std::to_string(transparent) + " material(s) partly transparent (d, Tr): rendered opaque");
     }
@@ -105,15 +104,36 @@ Material materialFromMtl(const tinyobj::material_t& mtl) {
     return m;
 }
 
-// map_Kd as a texture, its file relative to the .obj's folder. OBJ's -o and -s work with v up
-// the image; rt's v runs down (v' = 1 - v), so the v offset becomes 1 - s - o.
-Texture diffuseTexture(const tinyobj::material_t& mtl, const std::string& objPath) {
-    Texture t = textureBeside(objPath, mtl.diffuse_texname);
-    const tinyobj::texture_option_t& o = mtl.diffuse_texopt;
+// A map_* texture, its file relative to the .obj's folder. OBJ's -o and -s work with v up the
+// image; rt's v runs down (v' = 1 - v), so the v offset becomes 1 - s - o.
+Texture mapTexture(const std::string& file, const tinyobj::texture_option_t& o, const std::string& objPath) {
+    Texture t = textureBeside(objPath, file);
     t.wrapS = t.wrapT = o.clamp ? Texture::Wrap::Clamp : Texture::Wrap::Repeat;
     t.scale = {float(o.scale[0]), float(o.scale[1])};
     t.offset = {float(o.origin_offset[0]), float(1 - o.scale[1] - o.origin_offset[1])};
     return t;
+}
+
+// Cut-outs: map_d is a mask (its alpha channel, or its grey); without it, the alpha channel of
+// map_Kd, as McGuire's archive models (scrub-pine) expect. An image without alpha then cuts
+// nothing, and the renderer drops the material from the cut-out test (render/cutout.h).
+void readCutout(const tinyobj::material_t& mtl, const std::string& objPath, Scene& scene, Material& m) {
+    if (!mtl.alpha_texname.empty())
+        m.alphaTexture = addTexture(scene, mapTexture(mtl.alpha_texname, mtl.alpha_texopt, objPath));
+    else
+        m.alphaTexture = m.colorTexture;
+    if (m.alphaTexture) m.alphaCutoff = 0.5f;
+}
+
+// The normal map: `norm`, else `map_bump` or `bump`, read as a tangent-space normal map in
+// glTF's convention (as Blender writes them), -bm as its scale. A grey height map is not.
+void readNormalMap(const tinyobj::material_t& mtl, const std::string& objPath, Scene& scene, Material& m) {
+    const bool norm = !mtl.normal_texname.empty();
+    const std::string& file = norm ? mtl.normal_texname : mtl.bump_texname;
+    if (file.empty()) return;
+    const tinyobj::texture_option_t& o = norm ? mtl.normal_texopt : mtl.bump_texopt;
+    m.normalTexture = addTexture(scene, mapTexture(file, o, objPath));
+    m.normalScale = float(o.bump_multiplier);
 }
 
 class ObjSceneBuilder {
@@ -323,7 +343,10 @@ private:
         dropped_.count(mtl);
         Material m = materialFromMtl(mtl);
         m.name = mtl.name;
-        if (!mtl.diffuse_texname.empty()) m.colorTexture = addTexture(out_.scene, diffuseTexture(mtl, path_));
+        if (!mtl.diffuse_texname.empty())
+            m.colorTexture = addTexture(out_.scene, mapTexture(mtl.diffuse_texname, mtl.diffuse_texopt, path_));
+        readCutout(mtl, path_, out_.scene, m);
+        readNormalMap(mtl, path_, out_.scene, m);
         return m;
     }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/normal_map.h"
+
 namespace rt {
 
 namespace {
@@ -95,7 +97,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
             break;
         }
         seen = seen || bounce == 0;
-        const SurfacePoint s = surfaceAt(scene_.primitives, ray, hit);
+        const SurfacePoint s = shadedSurfaceAt(scene_, ray, hit, images_);
         const Material& m = scene_.materialOf(hit.prim);
         if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {
             const Real weight =
@@ -158,7 +160,7 @@ Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const 
 PbrParameters PathTracer::pbrParametersAt(const Material& m, const SurfacePoint& s) const {
     PbrParameters p = pbrParametersOf(m, surfaceColor(scene_, m, s, images_));
     if (m.metallicRoughnessTexture) {
-        const Color t = textureColor(scene_, *m.metallicRoughnessTexture, s, images_);
+        const Color t = textureData(scene_, *m.metallicRoughnessTexture, s, images_);
         p.metallic = std::clamp(p.metallic * t.b, 0.0f, 1.0f);
         p.roughness = std::clamp(p.roughness * t.g, 0.0f, 1.0f);
     }

@@ -1,6 +1,7 @@
 #include "render/texture.h"
 
 #include <cmath>
+#include <optional>
 
 namespace rt {
 
@@ -35,6 +36,14 @@ Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& 
     return images->lookup(index, uv[0], uv[1]);
 }
 
+Color textureData(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images) {
+    const Texture& t = scene.textures[index];
+    if (t.kind == Texture::Kind::Checker) return checker(t, s);
+    if (!images) return {1, 1, 1};
+    const std::array<float, 2> uv = images->uvTransform(index)(s.u, s.v);
+    return images->data(index, uv[0], uv[1]);
+}
+
 Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
     const Color c = m.color * s.tint;
     return m.colorTexture ? c * textureColor(scene, *m.colorTexture, s, images) : c;
@@ -42,6 +51,34 @@ Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s,
 
 Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
     return m.emissionTexture ? m.emission * textureColor(scene, *m.emissionTexture, s, images) : m.emission;
+}
+
+namespace {
+
+// The image texture giving the material's alpha, if any; `mask` says how it is read.
+std::optional<std::uint32_t> alphaImage(const Scene& scene, const Material& m, const ImageTextures* images,
+                                        bool& mask) {
+    if (!m.alphaTexture || !images || scene.textures[*m.alphaTexture].kind != Texture::Kind::Image) return {};
+    mask = m.alphaTexture != m.colorTexture;
+    return m.alphaTexture;
+}
+
+}  // namespace
+
+float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const ImageTextures* images) {
+    bool mask = false;
+    const std::optional<std::uint32_t> image = alphaImage(scene, m, images, mask);
+    if (!image) return m.alpha;
+    const std::array<float, 2> uv = images->uvTransform(*image)(u, v);
+    return m.alpha * images->alpha(*image, uv[0], uv[1], mask);
+}
+
+bool cutsOut(const Scene& scene, const Material& m, const ImageTextures* images) {
+    if (!m.alphaCutoff || !(*m.alphaCutoff > 0)) return false;
+    if (m.alpha < *m.alphaCutoff) return true;
+    bool mask = false;
+    const std::optional<std::uint32_t> image = alphaImage(scene, m, images, mask);
+    return image && images->hasAlpha(*image, mask);
 }
 
 }  // namespace rt

@@ -32,6 +32,15 @@ public:
     // Linear RGB of the scene's image texture `index` at (s, t), texture coordinates already
     // transformed (uvTransform), with the texture's wrap modes. Thread-safe.
     virtual Color lookup(std::uint32_t index, float s, float t) const = 0;
+    // The same values as stored, not colour-decoded (normal maps); (0.5, 0.5, 1), the
+    // unperturbed normal, where the image cannot be read. Thread-safe.
+    virtual Color data(std::uint32_t index, float s, float t) const = 0;
+    // The opacity of image texture `index` at (s, t): its alpha channel; an image without one
+    // gives its first channel if `mask` (a greyscale mask, as OBJ's map_d), else 1. Not
+    // colour-decoded. Thread-safe.
+    virtual float alpha(std::uint32_t index, float s, float t, bool mask) const = 0;
+    // Whether the image has what alpha(index, ..., mask) reads; without it alpha is 1 everywhere.
+    virtual bool hasAlpha(std::uint32_t index, bool mask) const = 0;
     const UvTransform& uvTransform(std::uint32_t index) const { return transforms_[index]; }
 
 private:
@@ -40,10 +49,18 @@ private:
 
 // The colour of texture `index` of the scene at the surface point.
 Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);
+// The same for a texture that holds data, not colour (metallic-roughness): values as stored.
+Color textureData(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);
 
 // The material's colour at the surface point (vertex colour and texture applied), and what it
 // emits there (its emission times its emission texture).
 Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
 Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
+// The opacity of the material at texture coordinates (u, v) (Material::alpha, alphaTexture);
+// a checker or no image lookups: alpha alone.
+float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const ImageTextures* images);
+// Whether materialAlpha can be below the material's cut-off anywhere: a cut-out whose texture
+// has no alpha and whose factor is above the cut-off is opaque.
+bool cutsOut(const Scene& scene, const Material& m, const ImageTextures* images);
 
 }  // namespace rt

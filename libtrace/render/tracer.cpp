@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/normal_map.h"
 #include "render/phong.h"
 
 namespace rt {
@@ -49,7 +50,7 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
         hits += seen;
         Color sample = scene_.background;
         if (seen) {  // the AOVs take the point, normal and colour the shading uses
-            const SurfacePoint surface = surfaceAt(scene_.primitives, ray, hit);
+            const SurfacePoint surface = shadedSurfaceAt(scene_, ray, hit, images_);
             if (aovs) addHit(*aovs, surface, hit, i == 0);
             sample = shade(ray, hit, surface, 0, false, rng, counters);
         }
@@ -101,7 +102,7 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
     Hit hit;
     RayCounters& work = depth == 0 ? counters.camera : counters.reflection;
     if (!accel_.intersect(ray, kInfinity, hit, work)) return scene_.background;
-    return shade(ray, hit, surfaceAt(scene_.primitives, ray, hit), depth, inBundle, rng, counters);
+    return shade(ray, hit, shadedSurfaceAt(scene_, ray, hit, images_), depth, inBundle, rng, counters);
 }
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "geometry/tangents.h"
 
 namespace rt {
 
@@ -75,6 +76,9 @@ std::size_t Scene::flatten() {
     primitives.append(looseObjects);
     std::size_t dropped = 0;
     for (const Instance& inst : instances) dropped += addInstance(models[inst.model], inst, primitives);
+    if (std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.normalTexture; }))
+        generateTangents(primitives,
+                         [&](std::uint32_t m) { return m < materials.size() && materials[m].normalTexture; });
     return dropped;
 }
 

@@ -63,6 +63,17 @@ struct Material {
     std::optional<MetallicRoughnessFactors> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
+    // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times
+    // alphaTexture's alpha at the hit, is below alphaCutoff, rays pass through the surface.
+    // An alpha texture that is the colour texture gives its alpha channel (1 without one); any
+    // other is a mask: its alpha channel, or its first channel when it has none.
+    std::optional<float> alphaCutoff{};  // set: the material is a cut-out
+    float alpha = 1;
+    std::optional<std::uint32_t> alphaTexture{};
+    // rt extension: a tangent-space normal map in glTF's convention (render/normal_map.h); its
+    // x and y are multiplied by normalScale (glTF's normalTexture.scale).
+    std::optional<std::uint32_t> normalTexture{};
+    float normalScale = 1;
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.

@@ -48,6 +48,7 @@ private:
     Vec3 readPoint(pugi::xml_node node) const;
     void readMaterial(const XmlElement& e);
     void readMetallicRoughness(const XmlElement& e, Material& m);
+    void readCutout(const XmlElement& e, std::uint32_t index, Material& m);
     void readTexture(const XmlElement& e);
     void resolveTextures();
     void readModel(const XmlElement& e);
@@ -133,9 +134,28 @@ void SceneBuilder::readList(const XmlElement& list) {
     for (const pugi::xml_node& item : list.node().children()) {
         if (tag == "materials")
             readMaterial(XmlElement(file_, item,
-                                    {"name", "r", "g", "b", "ambient", "diffuse", "specular", "shininess", "reflection",
-                                     "spread", "texture", "emission", "emission_texture", "metallic", "roughness",
-                                     "specular_factor", "metallic_roughness_texture"}));
+                                    {"name",
+                                     "r",
+                                     "g",
+                                     "b",
+                                     "ambient",
+                                     "diffuse",
+                                     "specular",
+                                     "shininess",
+                                     "reflection",
+                                     "spread",
+                                     "texture",
+                                     "emission",
+                                     "emission_texture",
+                                     "metallic",
+                                     "roughness",
+                                     "specular_factor",
+                                     "metallic_roughness_texture",
+                                     "alpha",
+                                     "alpha_texture",
+                                     "alpha_cutoff",
+                                     "normal_texture",
+                                     "normal_scale"}));
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
@@ -226,6 +246,10 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
     if (const auto name = e.optionalString("metallic_roughness_texture"))
         textureUses_.push_back({index, &Material::metallicRoughnessTexture, *name, e.node()});
+    readCutout(e, index, m);
+    if (const auto name = e.optionalString("normal_texture"))
+        textureUses_.push_back({index, &Material::normalTexture, *name, e.node()});
+    m.normalScale = float(e.number("normal_scale", m.normalScale));
     scene_.materials.push_back(std::move(m));
 }
 
@@ -235,13 +259,22 @@ void SceneBuilder::readMetallicRoughness(const XmlElement& e, Material& m) {
     if (!e.has("metallic") && !e.has("roughness") && !e.has("specular_factor")) return;
     MetallicRoughnessFactors f{1, 1, 1};
     const auto factor = [&e](const char* name, float& value) {
-        value = float(e.nonNegative(name, value));
+        value = e.nonNegativeFloat(name, value);
         if (value > 1) e.fail(std::string("<material> ") + name + " must be between 0 and 1");
     };
     factor("metallic", f.metallic);
     factor("roughness", f.roughness);
     factor("specular_factor", f.specular);
     m.metallicRoughness = f;
+}
+
+// rt extension: a cut-out material has alpha_cutoff; alpha and alpha_texture give its opacity.
+void SceneBuilder::readCutout(const XmlElement& e, std::uint32_t index, Material& m) {
+    if (e.has("alpha_cutoff")) m.alphaCutoff = e.nonNegativeFloat("alpha_cutoff", 0.5f);
+    m.alpha = e.nonNegativeFloat("alpha", m.alpha);
+    if (m.alpha > 1) e.fail("<material> alpha must be between 0 and 1");
+    if (const auto name = e.optionalString("alpha_texture"))
+        textureUses_.push_back({index, &Material::alphaTexture, *name, e.node()});
 }
 
 // rt extension: an image file (any format OpenImageIO reads) or a procedural checker.

@@ -196,6 +196,12 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         if (m.metallicRoughnessTexture)
             node.append_attribute("metallic_roughness_texture")
                 .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
+        if (m.alphaCutoff) setNumber(node, "alpha_cutoff", *m.alphaCutoff);
+        if (m.alpha != 1) setNumber(node, "alpha", m.alpha);
+        if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
+        if (m.normalTexture)
+            node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalTexture).c_str());
+        if (m.normalScale != 1) setNumber(node, "normal_scale", m.normalScale);
     }
 }
 

@@ -3,6 +3,7 @@
 // rule at a time in small generated files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -218,6 +219,28 @@ TEST(ImportGltf, MaterialExtensionsAreRead) {
     EXPECT_EQ(m.color, Color(0.5f, 0.25f, 1));
     EXPECT_NEAR(m.specular, 0.5f / 9, 1e-6);  // ((2 - 1) / (2 + 1))^2 * 0.5
     EXPECT_THROW(importScene(dir.write("bad.gltf", replaceOnce(json, R"("ior": 2)", R"("ior": "two")"))), InputError);
+}
+
+// MASK cuts out at alphaCutoff of the base colour's alpha; BLEND is MASK at 0.5, with a note;
+// OPAQUE (the default) is no cut-out.
+TEST(ImportGltf, AlphaModesBecomeCutouts) {
+    TempDir dir;
+    GltfFixture f;
+    const auto material = [&](const std::string& mode) {
+        f.extra = R"(, "materials": [{"name": "leaf", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 0.5]})" +
+                  mode + "}]";
+        const std::string json = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
+        return importScene(dir.write("m.gltf", json));
+    };
+    const ImportResult mask = material(R"(, "alphaMode": "MASK", "alphaCutoff": 0.25)");
+    EXPECT_EQ(mask.scene.materials[0].alphaCutoff, std::optional<float>(0.25f));
+    EXPECT_EQ(mask.scene.materials[0].alpha, 0.5f);
+    const ImportResult blend = material(R"(, "alphaMode": "BLEND")");
+    EXPECT_EQ(blend.scene.materials[0].alphaCutoff, std::optional<float>(0.5f));
+    const auto& notes = blend.report.notes;
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
+                            [](const std::string& n) { return n.find("alphaMode BLEND") != std::string::npos; }));
+    EXPECT_FALSE(material("").scene.materials[0].alphaCutoff);
 }
 
 TEST(ImportGltf, ChoosesTheSceneAndRejectsAMissingOne) {

@@ -22,6 +22,16 @@ using test::TempDir;
 
 const char* const kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
+// The square's faces `faces` with the materials of `mtl` (m.mtl in `dir`).
+ImportResult importSquare(const TempDir& dir, const std::string& mtl, const std::string& faces) {
+    dir.write("m.mtl", mtl);
+    return importScene(dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare + faces));
+}
+
+const Material& materialNamed(const ImportResult& r, const std::string& name) {
+    return r.scene.materials[r.scene.findMaterial(name).value()];
+}
+
 // The message of the InputError that importing `text` as an OBJ throws ("" if none).
 std::string objError(const TempDir& dir, const std::string& text) {
     const std::string path = dir.write("m.obj", text);
@@ -82,10 +92,9 @@ TEST(ImportObj, SpecularAndReflectionComeFromKsAndIllum) {
 // One model per run of object, group and material; going back to a pair adds to its model.
 TEST(ImportObj, ModelsFollowObjectsGroupsAndMaterials) {
     TempDir dir;
-    dir.write("m.mtl", "newmtl a\nKd 1 1 1\nnewmtl b\nKd 0 0 0\n");
-    const ImportResult r = importScene(dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare +
-                                                              "g left\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n"
-                                                              "g right\nf 1 2 4\ng left\nusemtl a\nf 2 3 4\n"));
+    const ImportResult r = importSquare(dir, "newmtl a\nKd 1 1 1\nnewmtl b\nKd 0 0 0\n",
+                                        "g left\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n"
+                                        "g right\nf 1 2 4\ng left\nusemtl a\nf 2 3 4\n");
     ASSERT_EQ(r.scene.models.size(), 3u);
     EXPECT_EQ(r.scene.models[0].name, "left");
     EXPECT_EQ(r.scene.models[0].triangleCount(), 2u);  // both "left" faces with material a
@@ -299,7 +308,7 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
     TempDir dir;
     std::string mtl;
     for (const char* name : {"a", "b", "c"})
-        mtl += std::string("newmtl ") + name + "\nKd 1 1 1\nd 0.5\nTr 0.5\nmap_Kd wood.png\nbump b.png\nKe 1 1 1\n";
+        mtl += std::string("newmtl ") + name + "\nKd 1 1 1\nd 0.5\nTr 0.5\nmap_Kd wood.png\nmap_Ks s.png\nKe 1 1 1\n";
     mtl += "newmtl plain\nKd 1 0 0\n";
     dir.write("m.mtl", mtl);
     const ImportResult r = importScene(dir.write("m.obj", std::string("mtllib m.mtl\n") + kSquare +
@@ -311,7 +320,7 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
                              [&](const std::string& n) { return n.find(text) != std::string::npos; });
     };
     EXPECT_EQ(count("`Tr`"), 0) << "d and Tr are not used: no warning about them";
-    EXPECT_EQ(count("3 material(s) with texture maps other than map_Kd"), 1);
+    EXPECT_EQ(count("3 material(s) with texture maps other than map_Kd, map_d and a normal map"), 1);
     EXPECT_EQ(count("3 material(s) partly transparent"), 1);
     EXPECT_EQ(count("material"), 2) << "one note per kind, not per material";
     // Ke is the emission, map_Kd the colour texture, beside the OBJ.
@@ -319,6 +328,36 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
     EXPECT_EQ(a.emission, (Color{1, 1, 1}));
     ASSERT_TRUE(a.colorTexture);
     EXPECT_EQ(r.scene.textures[*a.colorTexture].path, dir.path("wood.png"));
+}
+
+// map_d is the cut-out's mask; without it map_Kd's alpha; without either no cut-out.
+TEST(ImportObj, MapDAndTheAlphaOfMapKdCutOut) {
+    TempDir dir;
+    const ImportResult r = importSquare(dir,
+                                        "newmtl fence\nmap_Kd wood.png\nmap_d fence.png\nnewmtl leaf\n"
+                                        "map_Kd leaf.png\nnewmtl glass\nd 0.5\n",
+                                        "usemtl fence\nf 1 2 3\nusemtl leaf\nf 1 3 4\nusemtl glass\nf 1 2 4\n");
+    const Material &fence = materialNamed(r, "fence"), &leaf = materialNamed(r, "leaf");
+    ASSERT_TRUE(fence.alphaTexture);
+    EXPECT_EQ(r.scene.textures[*fence.alphaTexture].path, dir.path("fence.png"));
+    EXPECT_EQ(fence.alphaCutoff, std::optional<float>(0.5f));
+    EXPECT_EQ(leaf.alphaTexture, leaf.colorTexture);
+    EXPECT_EQ(leaf.alphaCutoff, std::optional<float>(0.5f));
+    EXPECT_FALSE(materialNamed(r, "glass").alphaCutoff) << "a constant d is not a cut-out";
+}
+
+// norm, else map_bump (or bump), is the normal map; -bm its scale.
+TEST(ImportObj, NormAndMapBumpAreNormalMaps) {
+    TempDir dir;
+    const ImportResult r =
+        importSquare(dir, "newmtl a\nmap_bump -bm 0.5 a.png\nnewmtl b\nbump b.png\nnorm n.png\nnewmtl c\nKd 1 1 1\n",
+                     "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\nusemtl c\nf 1 2 4\n");
+    const Material &a = materialNamed(r, "a"), &b = materialNamed(r, "b");
+    ASSERT_TRUE(a.normalTexture && b.normalTexture);
+    EXPECT_EQ(r.scene.textures[*a.normalTexture].path, dir.path("a.png"));
+    EXPECT_EQ(a.normalScale, 0.5f);
+    EXPECT_EQ(r.scene.textures[*b.normalTexture].path, dir.path("n.png"));
+    EXPECT_FALSE(materialNamed(r, "c").normalTexture);
 }
 
 // vn and vt go with their corners; OBJ's v (up the image) becomes rt's (down).

@@ -205,9 +205,9 @@ TEST(XmlWriter, ModelFolderFollowsTheXmlName) {
     EXPECT_EQ(modelFolderFor("scene"), "scene.models");
 }
 
-// Textures, material textures and emission, and RAW per-corner sections survive a save and a
+// Textures, material textures, emission, cut-outs and normal maps, and RAW per-corner sections survive a save and a
 // load; an image's file is written relative to the new scene's folder.
-TEST(XmlWriter, TexturesEmissionAndVertexDataRoundTrip) {
+TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     TempDir dir;
     const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
       <textures>
@@ -215,7 +215,8 @@ TEST(XmlWriter, TexturesEmissionAndVertexDataRoundTrip) {
         <texture name="floor" type="checker" color_a="1 0.5 0" color_b="0 0 0.25" size="0.5"/>
       </textures>
       <materials>
-        <material name="lamp" texture="floor" emission="2 1 0.5" emission_texture="wood"/>
+        <material name="lamp" texture="floor" emission="2 1 0.5" emission_texture="wood"
+                  alpha_cutoff="0.25" alpha="0.75" alpha_texture="wood" normal_texture="wood" normal_scale="0.5"/>
       </materials></scene>)";
     Scene first = loadSceneXml(dir.write("in/scene.xml", xml), readModelFile);
     Model m;
@@ -246,6 +247,11 @@ TEST(XmlWriter, TexturesEmissionAndVertexDataRoundTrip) {
     EXPECT_EQ(lamp.colorTexture, std::optional<std::uint32_t>(1));
     EXPECT_EQ(lamp.emission, (Color{2, 1, 0.5f}));
     EXPECT_EQ(lamp.emissionTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.alphaCutoff, std::optional<float>(0.25f));
+    EXPECT_EQ(lamp.alpha, 0.75f);
+    EXPECT_EQ(lamp.alphaTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.normalTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.normalScale, 0.5f);
     ASSERT_EQ(second.models.size(), 1u);
     EXPECT_EQ(second.models[0].vertexNormals, m.vertexNormals);
     EXPECT_EQ(second.models[0].vertexUvs, m.vertexUvs);

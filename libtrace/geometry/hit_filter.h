@@ -1,0 +1,34 @@
+// A test a candidate hit must pass before an accelerator accepts it: cut-out materials
+// (render/cutout.h) reject hits where their opacity is below the cut-off, so rays of both
+// queries (nearest hit and shadow rays) pass through leaves and fences as if the masked part
+// were not there. It is defined here, outside accel/, so that the accelerators only call it.
+// Scenes without cut-outs set no filter, and the leaf loops then run without it.
+#pragma once
+
+#include "geometry/primitives.h"
+
+namespace rt {
+
+class HitFilter {
+public:
+    virtual ~HitFilter() = default;
+    // Whether `hit` (t, prim, and the primitive's u, v) of `ray` counts. Thread-safe.
+    virtual bool accepts(const Ray& ray, const Hit& hit) const = 0;
+};
+
+// The leaf tests with a filter. The nearest hit: primitive `id`'s hit nearer than nearest.t
+// replaces `nearest` only if the filter accepts it.
+inline void intersectFiltered(const PrimitiveView& prims, std::uint32_t id, const Ray& ray, const HitFilter& filter,
+                              Hit& nearest) {
+    Hit candidate;
+    if (prims.intersect(id, ray, nearest.t, candidate) && filter.accepts(ray, candidate)) nearest = candidate;
+}
+// Any hit (shadow rays): the primitive's nearest hit before tMax, if the filter accepts it. A
+// triangle is hit once; of a closed primitive's two hits the nearer decides.
+inline bool occludesFiltered(const PrimitiveView& prims, std::uint32_t id, const Ray& ray, Real tMax,
+                             const HitFilter& filter) {
+    Hit candidate;
+    return prims.intersect(id, ray, tMax, candidate) && filter.accepts(ray, candidate);
+}
+
+}  // namespace rt

@@ -1,0 +1,24 @@
+// Tangent-space normal maps in glTF's convention (glTF 2.0, 3.9.3 normalTexture): a texel's
+// red, green and blue, each mapped from [0, 1] to [-1, 1], are the normal's components along
+// the tangent (+u), the bitangent (up the image) and the vertex normal; red and green are
+// multiplied by the material's normalScale. The tangents are generated when the scene is
+// flattened (geometry/tangents.h). Only the shading normal moves: the geometric normal still
+// decides ray offsets and sides, and a surface seen from behind gets the mirrored result.
+#pragma once
+
+#include "render/surface.h"
+#include "render/texture.h"
+#include "scene/scene.h"
+
+namespace rt {
+
+// Perturbs s.shadingNormal of `hit` (on scene.primitives) by the material's normal map; no
+// change without one, without tangents (a triangle without texture coordinates, a sphere) or
+// without image lookups.
+void applyNormalMap(const Scene& scene, const Material& m, const Hit& hit, const ImageTextures* images,
+                    SurfacePoint& s);
+
+// The surface at `hit` as shading sees it: surfaceAt with the material's normal map applied.
+SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images);
+
+}  // namespace rt
