@@ -15,6 +15,7 @@
 #include "core/transform.h"
 #include "geometry/primitives.h"
 #include "scene/camera.h"
+#include "scene/transmission.h"
 
 namespace rt {
 
@@ -51,6 +52,7 @@ struct Material {
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
     Color emission{0, 0, 0};
     std::optional<std::uint32_t> emissionTexture{};
+    Transmission transmission{};  // rt extension: glass (scene/transmission.h)
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.
