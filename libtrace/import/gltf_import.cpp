@@ -417,13 +417,18 @@ private:
         return in;
     }
 
-    // KHR_materials_transmission and KHR_materials_volume (the textures are not followed).
+    // KHR_materials_transmission and KHR_materials_volume. The textures are not followed: a
+    // transmissionTexture, which usually holds the real values (a paper lamp shade's fibres), is
+    // taken as mid-grey, half the factor, as the metallicRoughnessTexture is.
     void readTransmission(const tinygltf::Material& gm, MetallicRoughness& in, const std::string& what) const {
         const auto number = [&](const tinygltf::Value& ext, const char* key, float& to) {
             if (ext.Has(key)) to = float(numberValue(ext.Get(key), file_, what + " " + key));
         };
         const auto transmission = gm.extensions.find("KHR_materials_transmission");
-        if (transmission != gm.extensions.end()) number(transmission->second, "transmissionFactor", in.transmission);
+        if (transmission != gm.extensions.end()) {
+            number(transmission->second, "transmissionFactor", in.transmission);
+            if (transmission->second.Has("transmissionTexture")) in.transmission *= 0.5f;
+        }
         const auto volume = gm.extensions.find("KHR_materials_volume");
         if (volume == gm.extensions.end()) return;
         const tinygltf::Value& ext = volume->second;

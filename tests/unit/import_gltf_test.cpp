@@ -230,7 +230,9 @@ TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
         R"( "KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_volume": {"thicknessFactor": 0.5,)"
         R"( "attenuationColor": [0.5, 0.25, 1], "attenuationDistance": 2}}},)"
         R"( {"name": "sheet", "pbrMetallicRoughness": {"metallicFactor": 0},)"
-        R"( "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0.5}}}])";
+        R"( "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0.5}}},)"
+        R"( {"name": "paper", "pbrMetallicRoughness": {"metallicFactor": 0}, "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1,)"
+        R"( "transmissionTexture": {"index": 0}}}}])";
     const std::string one = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
     const Material glass = importScene(dir.write("glass.gltf", one)).scene.materials.at(0);
     EXPECT_EQ(glass.transmission.weight, 1.0f);
@@ -247,6 +249,9 @@ TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
     EXPECT_EQ(sheet.transmission.weight, 0.5f);
     EXPECT_TRUE(sheet.transmission.thin);
     EXPECT_FLOAT_EQ(sheet.diffuse, 0.45f);
+    const std::string three = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 2)");
+    const Material paper = importScene(dir.write("paper.gltf", three)).scene.materials.at(0);
+    EXPECT_EQ(paper.transmission.weight, 0.5f) << "a transmission texture is taken as mid-grey";
     EXPECT_THROW(importScene(dir.write(
                      "bad.gltf", replaceOnce(one, R"("transmissionFactor": 1)", R"("transmissionFactor": "all")"))),
                  InputError);

@@ -106,11 +106,13 @@ TEST(Refraction, AGlassSphereDisplacesACheckerboardWhereSnellsLawPutsIt) {
     Scene s;
     s.camera.origin = {0, 0, -6};
     s.camera.fovDegrees = 30;
-    s.textures.push_back({.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}, .size = 0.5});
+    s.textures.push_back(
+        {.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}, .size = 0.5});
     Material wall = lamp({1, 1, 1});
     wall.emissionTexture = 0;
     s.looseObjects.add<Sphere>({{0, 0, 0}, radius}, test::addMaterial(s, glass(float(ior))));
-    test::addQuad(s, {-20, -20, wallZ}, {20, -20, wallZ}, {20, 20, wallZ}, {-20, 20, wallZ}, test::addMaterial(s, wall));
+    test::addQuad(s, {-20, -20, wallZ}, {20, -20, wallZ}, {20, 20, wallZ}, {-20, 20, wallZ},
+                  test::addMaterial(s, wall));
     s.flatten();
     const NaiveAccelerator accel(s.primitives);
     const int size = 48;
