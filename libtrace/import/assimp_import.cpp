@@ -194,10 +194,24 @@ private:
         am.Get(AI_MATKEY_COLOR_EMISSIVE, ke);
         m.emission = toColor(ke);
         m.colorTexture = diffuseTexture(am);
+        applyOpacity(m, opacity(am), refractionIndex(am));
         aiString name;
         am.Get(AI_MATKEY_NAME, name);
         m.name = name.C_Str();
         return m;
+    }
+
+    // AI_MATKEY_OPACITY (3DS transparency), else 1 - AI_MATKEY_TRANSPARENCYFACTOR; 1 if neither.
+    static float opacity(const aiMaterial& am) {
+        float opacity = 1, transparency = 0;
+        if (am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) return opacity;
+        return am.Get(AI_MATKEY_TRANSPARENCYFACTOR, transparency) == AI_SUCCESS ? 1 - transparency : 1;
+    }
+
+    static float refractionIndex(const aiMaterial& am) {
+        float ior = 1;
+        am.Get(AI_MATKEY_REFRACTI, ior);
+        return ior;
     }
 
     // The first diffuse texture, a file relative to the model's folder (embedded ones, "*0",

@@ -466,14 +466,38 @@ private:
             const tinygltf::Value& ext = specular->second;
             if (ext.Has("specularFactor"))
                 in.specularFactor = float(numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"));
-            if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray()) {
-                const tinygltf::Value& c = ext.Get("specularColorFactor");
-                std::vector<double> v;
-                for (int i = 0; i < int(c.ArrayLen()); ++i) v.push_back(numberValue(c.Get(i), file_, what));
-                in.specularColor = color(v, what + " specularColorFactor");
-            }
+            if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray())
+                in.specularColor = color(numbers(ext.Get("specularColorFactor"), what), what + " specularColorFactor");
         }
+        readTransmission(gm, in, what);
         return in;
+    }
+
+    // KHR_materials_transmission and KHR_materials_volume. The textures are not followed: a
+    // transmissionTexture, which usually holds the real values (a paper lamp shade's fibres), is
+    // taken as mid-grey, half the factor, as the metallicRoughnessTexture is.
+    void readTransmission(const tinygltf::Material& gm, MetallicRoughness& in, const std::string& what) const {
+        const auto number = [&](const tinygltf::Value& ext, const char* key, float& to) {
+            if (ext.Has(key)) to = float(numberValue(ext.Get(key), file_, what + " " + key));
+        };
+        const auto transmission = gm.extensions.find("KHR_materials_transmission");
+        if (transmission != gm.extensions.end()) {
+            number(transmission->second, "transmissionFactor", in.transmission);
+            if (transmission->second.Has("transmissionTexture")) in.transmission *= 0.5f;
+        }
+        const auto volume = gm.extensions.find("KHR_materials_volume");
+        if (volume == gm.extensions.end()) return;
+        const tinygltf::Value& ext = volume->second;
+        number(ext, "thicknessFactor", in.thickness);
+        number(ext, "attenuationDistance", in.attenuationDistance);
+        if (ext.Has("attenuationColor") && ext.Get("attenuationColor").IsArray())
+            in.attenuationColor = color(numbers(ext.Get("attenuationColor"), what), what + " attenuationColor");
+    }
+
+    std::vector<double> numbers(const tinygltf::Value& array, const std::string& what) const {
+        std::vector<double> v;
+        for (int i = 0; i < int(array.ArrayLen()); ++i) v.push_back(numberValue(array.Get(i), file_, what));
+        return v;
     }
 
     Color color(const std::vector<double>& v, const std::string& what) const {

@@ -91,6 +91,15 @@ Material classicPhong(const Color& diffuse, const Color& specular, float shinine
     return m;
 }
 
+void applyOpacity(Material& m, float opacity, float ior) {
+    if (!std::isfinite(opacity) || opacity >= 1) return;
+    opacity = std::max(opacity, 0.0f);
+    const bool solid = std::isfinite(ior) && ior > 1;
+    m.transmission = {.weight = 1 - opacity, .ior = solid ? ior : 1.0f, .thin = !solid};
+    m.ambient *= opacity;
+    m.diffuse *= opacity;
+}
+
 Aabb modelBounds(const Model& model) {
     Aabb box;
     const std::vector<float>& v = model.triangleVertices;

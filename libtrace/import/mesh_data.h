@@ -64,6 +64,12 @@ Color fileColor(float r, float g, float b);
 // shininess clamped to [1, 10000], or rt's default when it is not positive and finite.
 Material classicPhong(const Color& diffuse, const Color& specular, float shininess);
 
+// A classic material's opacity below 1 (MTL's d, Assimp's opacity): 1 - opacity of the light
+// passes, and the surface's own ambient and diffuse light fade by the opacity, as a dissolve
+// blends them. With an index of refraction above 1 the material refracts as a solid, else the
+// light passes straight on (thin). Opacity 1 (or not finite) changes nothing.
+void applyOpacity(Material& m, float opacity, float ior);
+
 // Bounds of a model's triangles and spheres in its own space (empty for an empty model).
 Aabb modelBounds(const Model& model);
 

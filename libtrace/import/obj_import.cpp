@@ -60,7 +60,7 @@ public:
 
 private:
     // tinyobjloader warns once per material that defines both d and Tr (35 lines for one public
-    // OBJ); rt uses neither, and the transparency note (ObjSceneBuilder) says so once.
+    // OBJ), and takes d, as rt's mapping says (docs/conversion.md).
     static std::string withoutUnusedDataWarnings(const std::string& warnings) {
         std::istringstream lines(warnings);
         std::string kept;
@@ -74,33 +74,42 @@ private:
 
 // What a material defines that rt's Phong material drops, counted for the notes.
 struct DroppedMaterialData {
-    std::size_t textured = 0;     // any map_* or disp/refl texture but map_Kd, map_d and the normal map
-    std::size_t transparent = 0;  // d < 1 (or Tr > 0)
+    std::size_t textured = 0;  // any map_* or disp/refl texture but map_Kd, map_d and the normal map
 
     void count(const tinyobj::material_t& m) {
         const std::string* maps[] = {&m.ambient_texname,      &m.specular_texname,   &m.specular_highlight_texname,
                                      &m.displacement_texname, &m.reflection_texname, &m.roughness_texname,
                                      &m.metallic_texname,     &m.sheen_texname,      &m.emissive_texname};
         textured += std::any_of(std::begin(maps), std::end(maps), [](const std::string* t) { return !t->empty(); });
-        transparent += m.dissolve < 1;
     }
 
     void note(std::vector<std::string>& notes) const {
         if (textured)
             notes.push_back(std::to_string(textured) +
                             " material(s) with texture maps other than map_Kd, map_d and a normal map: those ignored");
-        if (transparent)
-            notes.push_back(std::to_string(transparent) + " material(s) partly transparent (d, Tr): rendered opaque");
     }
 };
 
-// Kd, Ks and Ns as classic Phong; illum 3 ("reflection on, ray trace on") mirrors with
-// lum(Ks) as well; Ke is the emission (docs/conversion.md).
+// What light an MTL material lets through: illum 6 and 7 ("refraction on") are glass of index
+// Ni; otherwise a dissolve d below 1 (Tr = 1 - d) lets 1 - d through without bending.
+void applyTransparency(const tinyobj::material_t& mtl, Material& m) {
+    if (mtl.illum == 6 || mtl.illum == 7) {
+        const bool indexGiven = std::isfinite(mtl.ior) && mtl.ior > 0;
+        m.transmission = {.weight = 1, .ior = indexGiven ? float(mtl.ior) : 1.0f};
+        m.reflection = 0;  // the Fresnel term reflects
+        return;
+    }
+    applyOpacity(m, float(mtl.dissolve), 1);
+}
+
+// Kd, Ks and Ns as classic Phong; illum 3, 4 and 5 (ray-traced reflection) mirror with
+// lum(Ks) as well; Ke is the emission; Ni, d, Tr and illum 6-7 transparency (docs/conversion.md).
 Material materialFromMtl(const tinyobj::material_t& mtl) {
     const auto color = [](const tinyobj::real_t(&c)[3]) { return fileColor(c[0], c[1], c[2]); };
     Material m = classicPhong(color(mtl.diffuse), color(mtl.specular), mtl.shininess);
-    if (mtl.illum == 3) m.reflection = m.specular;
+    if (mtl.illum >= 3 && mtl.illum <= 5) m.reflection = m.specular;
     m.emission = color(mtl.emission);
+    applyTransparency(mtl, m);
     return m;
 }
 

@@ -29,6 +29,19 @@ Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
     m.reflection = f0 * (1 - roughness);
     m.spread = alpha;
     m.metallicRoughness = MetallicRoughnessFactors{metallic, roughness, clamp01(pbr.specularFactor)};
+    const float transmission = clamp01(pbr.transmission) * (1 - metallic);
+    if (transmission > 0) {
+        m.ambient *= 1 - transmission;
+        m.diffuse *= 1 - transmission;
+        m.reflection *= 1 - transmission;
+        m.transmission = {.weight = transmission,
+                          .color = base,
+                          .ior = ior,
+                          .thin = !(pbr.thickness > 0),
+                          .attenuationColor = clampColor(pbr.attenuationColor),
+                          .attenuationDistance = pbr.attenuationDistance > 0 ? pbr.attenuationDistance
+                                                                             : Transmission{}.attenuationDistance};
+    }
     return m;
 }
 

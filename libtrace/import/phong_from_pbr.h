@@ -12,7 +12,14 @@
 //   reflection    = F0 * (1 - roughness)          rough surfaces give no sharp mirror image
 //   spread        = alpha (radians)               the glossy lobe of distributed ray tracing
 // The factors themselves are kept too (Material::metallicRoughness) for the path tracer.
+// KHR_materials_transmission and _volume: the dielectric part lets t = transmission * (1 - metallic)
+// through, tinted by baseColor, refracted by ior (straight on when thin-walled, thicknessFactor 0
+// or no volume), absorbed by attenuationColor at attenuationDistance. That light is no longer
+// scattered: ambient, diffuse and reflection are multiplied by (1 - t), and the renderer's
+// Fresnel term reflects the glass's share.
 #pragma once
+
+#include <limits>
 
 #include "core/color.h"
 #include "scene/scene.h"
@@ -26,10 +33,14 @@ struct MetallicRoughness {
     float ior = 1.5f;              // KHR_materials_ior
     float specularFactor = 1;      // KHR_materials_specular
     Color specularColor{1, 1, 1};  // KHR_materials_specular
+    float transmission = 0;        // KHR_materials_transmission
+    float thickness = 0;           // KHR_materials_volume: 0 (or no volume) is thin-walled
+    Color attenuationColor{1, 1, 1};
+    float attenuationDistance = std::numeric_limits<float>::infinity();
 };
 
 // Throws nothing: inputs are clamped to their valid ranges (colours >= 0, metallic and
-// roughness to [0, 1], ior >= 1). Non-finite inputs must be rejected by the caller.
+// roughness and transmission to [0, 1], ior >= 1). Non-finite inputs must be rejected by the caller.
 Material phongFromMetallicRoughness(const MetallicRoughness& pbr);
 
 }  // namespace rt

@@ -53,7 +53,8 @@ SurfacePoint surfaceAt(const Primitives& primitives, const Ray& ray, const Hit& 
     SurfacePoint s;
     s.point = ray.at(hit.t);
     s.geometricNormal = primitives.normal(hit.prim, s.point);
-    if (dot(s.geometricNormal, ray.direction) > 0) s.geometricNormal = -s.geometricNormal;  // two-sided surfaces
+    s.frontFace = dot(s.geometricNormal, ray.direction) <= 0;
+    if (!s.frontFace) s.geometricNormal = -s.geometricNormal;  // two-sided surfaces
     s.shadingNormal = s.geometricNormal;
     s.shadowOrigin = s.point;
     if (primitives.triangleShading().empty()) return s;

@@ -13,11 +13,12 @@ namespace rt {
 
 struct SurfacePoint {
     Vec3 point;
-    Vec3 geometricNormal;  // unit, facing the incoming ray
-    Vec3 shadingNormal;    // unit, on the side geometricNormal faces
-    Vec3 shadowOrigin;     // where shadow rays leave from, before the offset along geometricNormal
-    Color tint{1, 1, 1};   // the vertex colour
-    Real u = 0, v = 0;     // texture coordinates
+    Vec3 geometricNormal;   // unit, facing the incoming ray
+    bool frontFace = true;  // the ray hit the side the primitive's normal faces (winding, outside)
+    Vec3 shadingNormal;     // unit, on the side geometricNormal faces
+    Vec3 shadowOrigin;      // where shadow rays leave from, before the offset along geometricNormal
+    Color tint{1, 1, 1};    // the vertex colour
+    Real u = 0, v = 0;      // texture coordinates
 };
 
 // How far secondary rays start off a surface, scaled to the size of the scene: the error of a

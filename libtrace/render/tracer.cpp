@@ -31,6 +31,7 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
       epsilon_(secondaryRayOffset(scene.primitives)),
       images_(images) {
     for (const Light& light : scene.lights) ambientLight_ += light.color;
+    for (const Material& m : scene.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
 }
 
 Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
@@ -117,31 +118,70 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     for (const Light& light : scene_.lights) {
         const Vec3 toLight = normalize(light.position - s.point);
         if (dot(s.shadingNormal, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
-        const float seen = visibility(s, light, inBundle, rng, counters);
-        if (seen > 0) c += phongLight(m, color, s.shadingNormal, toLight, toViewer, light.color) * seen;
+        const Color seen = visibility(s, light, inBundle, rng, counters);
+        if (seen != Color{}) c += phongLight(m, color, s.shadingNormal, toLight, toViewer, light.color) * seen;
     }
-    // Thesis 2.1, step 6: the reflected intensity is added to the local one.
-    if (m.reflection > 0 && depth < settings_.reflectionDepth)
-        c += reflection(s, ray.direction, m, depth, inBundle, rng, counters) * m.reflection;
+    // Thesis 2.1, step 6: the reflected intensity is added to the local one; Whitted's
+    // transmitted ray too, Fresnel's reflected share of it going to the mirror ray.
+    float mirrorWeight = m.reflection;
+    if (m.transmission.passesLight() && depth < settings_.reflectionDepth) {
+        const RefractionSplit split =
+            splitAt(m.transmission, ray.direction, s.shadingNormal, s.geometricNormal, s.frontFace);
+        mirrorWeight += m.transmission.weight * split.reflected;
+        c += transmitted(s, split, m.transmission, depth, inBundle, rng, counters);
+    }
+    if (mirrorWeight > 0 && depth < settings_.reflectionDepth)
+        c += reflection(s, ray.direction, m, depth, inBundle, rng, counters) * mirrorWeight;
+    // A ray that leaves a volume has crossed it from where it entered (render/refraction.h).
+    if (m.transmission.absorbs() && !s.frontFace) c = c * absorbed(m.transmission, hit.t);
     return c;
 }
 
-float Tracer::visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
+Color Tracer::visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
                          RenderCounters& counters) const {
-    if (!settings_.shadows) return 1;
+    if (!settings_.shadows) return {1, 1, 1};
     const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
     const bool area = settings_.softShadows && light.size > 0;
     const int samples = area && !inBundle ? settings_.distributedSamples : 1;
     const Vec3 axis = area ? normalize(light.position - origin) : Vec3{};  // only area lights need it
-    int visible = 0;
+    Color visible;
     for (int i = 0; i < samples; ++i) {
         const Vec3 target = area ? pointOnDisc(light.position, axis, light.size, rng) : light.position;
         const Vec3 d = target - origin;
         const Real distance = length(d);
         ++counters.shadow.rays;
-        if (!accel_.occluded({origin, d / distance}, distance, counters.shadow)) ++visible;
+        visible += transmittance({origin, d / distance}, distance, counters);
     }
-    return samples == 1 ? float(visible) : float(visible) / float(samples);
+    if (samples == 1) return visible;
+    const auto n = float(samples);
+    return {visible.r / n, visible.g / n, visible.b / n};
+}
+
+// Through glass the light is tinted at each crossing (shadowFilter) and absorbed inside, along
+// the straight line: Whitted's model has no caustics. Opaque scenes take the any-hit query alone.
+Color Tracer::transmittance(const Ray& ray, Real distance, RenderCounters& counters) const {
+    constexpr Color kClear{1, 1, 1};
+    if (!anyGlass_) return accel_.occluded(ray, distance, counters.shadow) ? Color{} : kClear;
+    // Each crossing starts past the last surface; the cap keeps a ray along a pathological
+    // stack of coincident glass surfaces finite (and takes the light as blocked there).
+    constexpr int kMaxCrossings = 64;
+    Color through = kClear;
+    Ray r = ray;
+    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
+        Hit hit;
+        if (!accel_.intersect(r, distance, hit, counters.shadow)) return through;
+        const Transmission& t = scene_.materialOf(hit.prim).transmission;
+        if (!t.passesLight()) return {};
+        const Vec3 p = r.at(hit.t);
+        const Vec3 n = scene_.primitives.normal(hit.prim, p);
+        const Real cosine = dot(n, r.direction);  // > 0: the ray leaves the volume
+        through = through * shadowFilter(t, std::abs(cosine));
+        if (cosine > 0 && t.absorbs()) through = through * absorbed(t, hit.t);
+        if (through == Color{}) return through;
+        distance -= hit.t;
+        r.origin = p + n * (cosine > 0 ? epsilon_ : -epsilon_);
+    }
+    return {};
 }
 
 Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
@@ -168,6 +208,15 @@ Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material&
         sum += trace({origin, d}, depth + 1, true, rng, counters);
     }
     return samples == 1 ? sum : sum * (1.0f / float(samples));
+}
+
+// The transmitted ray leaves from the far side of the surface, one epsilon through it.
+Color Tracer::transmitted(const SurfacePoint& s, const RefractionSplit& split, const Transmission& t, int depth,
+                          bool inBundle, SampleRng& rng, RenderCounters& counters) const {
+    if (split.reflected >= 1) return {};  // total internal reflection
+    ++counters.reflection.rays;
+    const Ray through{s.point - s.geometricNormal * epsilon_, split.direction};
+    return trace(through, depth + 1, inBundle, rng, counters) * t.color * (t.weight * (1 - split.reflected));
 }
 
 }  // namespace rt

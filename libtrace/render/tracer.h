@@ -1,6 +1,6 @@
 // The Whitted ray tracer of thesis 2.1 and 3.3.4 (the thesis's Raytracer and DistributedRT):
 // the colour of one pixel from camera rays, Phong shading with an ambient term, hard or
-// soft shadows, and mirror or glossy reflections.
+// soft shadows, mirror or glossy reflections, and refraction through glass (render/refraction.h).
 //
 // Distributed ray tracing (thesis 2.6.2) sends bundles of -r rays: shadow rays over a
 // light's disc, reflection rays spread around the mirror direction by a 2-D normal
@@ -11,6 +11,7 @@
 #include "accel/accelerator.h"
 #include "render/aov.h"
 #include "render/camera_rays.h"
+#include "render/refraction.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
 #include "render/sampling.h"
@@ -50,11 +51,16 @@ private:
     // The colour at `s`, the surface of `hit` (surfaceAt).
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
-    // Fraction of `light` seen from the surface (1 without shadows).
-    float visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
+    // Fraction of `light` seen from the surface (1 without shadows), tinted by glass in the way.
+    Color visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
                      RenderCounters& counters) const;
     Color reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
                      SampleRng& rng, RenderCounters& counters) const;
+    // What a shadow ray of unit direction lets through over `distance`: black when blocked.
+    Color transmittance(const Ray& ray, Real distance, RenderCounters& counters) const;
+    // The colour the transmitted ray of `split` brings, weighted (render/refraction.h).
+    Color transmitted(const SurfacePoint& s, const RefractionSplit& split, const Transmission& t, int depth,
+                      bool inBundle, SampleRng& rng, RenderCounters& counters) const;
 
     const Scene& scene_;
     const Accelerator& accel_;
@@ -63,6 +69,7 @@ private:
     Color ambientLight_;
     Real epsilon_;
     const ImageTextures* images_;
+    bool anyGlass_ = false;  // a material lets light through: shadow rays must look past hits
 };
 
 }  // namespace rt

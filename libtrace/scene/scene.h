@@ -15,6 +15,7 @@
 #include "core/transform.h"
 #include "geometry/primitives.h"
 #include "scene/camera.h"
+#include "scene/transmission.h"
 
 namespace rt {
 
@@ -74,6 +75,7 @@ struct Material {
     // x and y are multiplied by normalScale (glTF's normalTexture.scale).
     std::optional<std::uint32_t> normalTexture{};
     float normalScale = 1;
+    Transmission transmission{};  // rt extension: glass (scene/transmission.h)
 };
 
 // A point light; `size` is the radius of the area light used by distributed ray tracing.

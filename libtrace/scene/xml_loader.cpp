@@ -28,6 +28,21 @@ constexpr const char* kDefaultMaterial = "default";
 // that a saved scene loads back bit for bit.
 Vec3 place(const Transform& toWorld, const Vec3& p) { return toWorld.isIdentity() ? p : toWorld.point(p); }
 
+// A material's transmission attributes (rt extension); without them it is opaque.
+Transmission readTransmission(const XmlElement& e) {
+    Transmission t;
+    t.weight = float(e.nonNegative("transmission", t.weight));
+    if (t.weight > 1) e.fail("<material> transmission must be between 0 and 1");
+    t.color = e.color("transmission_color", t.color);
+    if (e.has("ior")) t.ior = float(e.positive("ior"));
+    const std::string thin = e.optionalString("thin").value_or("false");
+    if (thin != "true" && thin != "false") e.fail("<material> thin must be true or false");
+    t.thin = thin == "true";
+    t.attenuationColor = e.color("attenuation_color", t.attenuationColor);
+    if (e.has("attenuation_distance")) t.attenuationDistance = float(e.positive("attenuation_distance"));
+    return t;
+}
+
 class SceneBuilder {
 public:
     SceneBuilder(const XmlFile& file, std::string baseDir, const ModelFileReader& readModelFile)
@@ -155,7 +170,13 @@ void SceneBuilder::readList(const XmlElement& list) {
                                      "alpha_texture",
                                      "alpha_cutoff",
                                      "normal_texture",
-                                     "normal_scale"}));
+                                     "normal_scale",
+                                     "transmission",
+                                     "transmission_color",
+                                     "ior",
+                                     "thin",
+                                     "attenuation_color",
+                                     "attenuation_distance"}));
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
@@ -239,6 +260,7 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
     m.emission = e.color("emission", m.emission);
     readMetallicRoughness(e, m);
+    m.transmission = readTransmission(e);
     const auto index = std::uint32_t(scene_.materials.size());
     if (const auto name = e.optionalString("texture"))
         textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});

@@ -48,6 +48,22 @@ std::string numberList(std::initializer_list<float> values) {
     return text;
 }
 
+void setColor(pugi::xml_node node, const char* name, const Color& c) {
+    node.append_attribute(name).set_value(numberList({c.r, c.g, c.b}).c_str());
+}
+
+// The transmission attributes (rt extension), written only for materials that let light through.
+void setTransmission(pugi::xml_node node, const Transmission& t) {
+    if (!t.passesLight()) return;
+    setNumber(node, "transmission", t.weight);
+    if (t.color != Color{1, 1, 1}) setColor(node, "transmission_color", t.color);
+    setNumber(node, "ior", t.ior);
+    if (t.thin) node.append_attribute("thin").set_value("true");
+    if (!t.absorbs()) return;
+    setColor(node, "attenuation_color", t.attenuationColor);
+    setNumber(node, "attenuation_distance", t.attenuationDistance);
+}
+
 // A loose object as its element, one overload per primitive kind (the loader reads them back).
 pugi::xml_node addObject(pugi::xml_node parent, const Triangle& t) {
     pugi::xml_node node = parent.append_child("triangle");
@@ -184,8 +200,7 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         setNumber(node, "reflection", m.reflection);
         setNumber(node, "spread", m.spread);
         if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
-        if (m.emission != Color{})
-            node.append_attribute("emission").set_value(numberList({m.emission.r, m.emission.g, m.emission.b}).c_str());
+        if (m.emission != Color{}) setColor(node, "emission", m.emission);
         if (m.emissionTexture)
             node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emissionTexture).c_str());
         if (const auto& f = m.metallicRoughness) {
@@ -202,6 +217,7 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         if (m.normalTexture)
             node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalTexture).c_str());
         if (m.normalScale != 1) setNumber(node, "normal_scale", m.normalScale);
+        setTransmission(node, m.transmission);
     }
 }
 

@@ -38,6 +38,24 @@ TEST(ImportAssimp, ThreeDsCameraIsUsed) {
     EXPECT_LT(*c.fovDegrees, 180);
 }
 
+// A 3DS material's transparency (83 % opaque) lets the rest through, straight on (no index);
+// the file's opaque materials stay opaque.
+TEST(ImportAssimp, ThreeDsTransparencyLetsLightThrough) {
+    SKIP_WITHOUT_SHARED_MODELS();
+    const ImportResult r = importScene(sharedModels() + "/3ds/cubes_with_alpha/cubes_with_alpha.3DS");
+    int transparent = 0;
+    for (const Material& m : r.scene.materials) {
+        if (m.name != "Transparent") {
+            EXPECT_FALSE(m.transmission.passesLight()) << m.name;
+            continue;
+        }
+        ++transparent;
+        EXPECT_NEAR(m.transmission.weight, 0.17f, 1e-5);
+        EXPECT_TRUE(m.transmission.thin);
+    }
+    EXPECT_EQ(transparent, 1);
+}
+
 // Garbage whose keywords look like OBJ text, under a name without extension.
 TEST(ImportAssimp, ContentGuessesAreOnlyTrustedForBinaryFormats) {
     SKIP_WITHOUT_SHARED_MODELS();

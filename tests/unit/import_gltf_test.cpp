@@ -243,6 +243,44 @@ TEST(ImportGltf, AlphaModesBecomeCutouts) {
     EXPECT_FALSE(material("").scene.materials[0].alphaCutoff);
 }
 
+// KHR_materials_transmission, _ior and _volume make glass tinted by the base colour; without a
+// volume (or of thickness 0) it is thin-walled; the transmitted share no longer scatters.
+TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
+    TempDir dir;
+    GltfFixture f;
+    f.extra =
+        R"(, "materials": [{"name": "glass", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.7, 0.9, 1],)"
+        R"( "metallicFactor": 0, "roughnessFactor": 0}, "extensions": {"KHR_materials_ior": {"ior": 1.33},)"
+        R"( "KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_volume": {"thicknessFactor": 0.5,)"
+        R"( "attenuationColor": [0.5, 0.25, 1], "attenuationDistance": 2}}},)"
+        R"( {"name": "sheet", "pbrMetallicRoughness": {"metallicFactor": 0},)"
+        R"( "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0.5}}},)"
+        R"( {"name": "paper", "pbrMetallicRoughness": {"metallicFactor": 0}, "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1,)"
+        R"( "transmissionTexture": {"index": 0}}}}])";
+    const std::string one = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
+    const Material glass = importScene(dir.write("glass.gltf", one)).scene.materials.at(0);
+    EXPECT_EQ(glass.transmission.weight, 1.0f);
+    EXPECT_EQ(glass.transmission.color, Color(0.5f, 0.7f, 0.9f));
+    EXPECT_EQ(glass.transmission.ior, 1.33f);
+    EXPECT_FALSE(glass.transmission.thin);
+    EXPECT_EQ(glass.transmission.attenuationColor, Color(0.5f, 0.25f, 1));
+    EXPECT_EQ(glass.transmission.attenuationDistance, 2.0f);
+    EXPECT_EQ(glass.diffuse, 0.0f);
+    EXPECT_EQ(glass.ambient, 0.0f);
+    EXPECT_EQ(glass.reflection, 0.0f) << "the renderer's Fresnel term reflects";
+    const std::string two = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 1)");
+    const Material sheet = importScene(dir.write("sheet.gltf", two)).scene.materials.at(0);
+    EXPECT_EQ(sheet.transmission.weight, 0.5f);
+    EXPECT_TRUE(sheet.transmission.thin);
+    EXPECT_FLOAT_EQ(sheet.diffuse, 0.45f);
+    const std::string three = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 2)");
+    const Material paper = importScene(dir.write("paper.gltf", three)).scene.materials.at(0);
+    EXPECT_EQ(paper.transmission.weight, 0.5f) << "a transmission texture is taken as mid-grey";
+    EXPECT_THROW(importScene(dir.write(
+                     "bad.gltf", replaceOnce(one, R"("transmissionFactor": 1)", R"("transmissionFactor": "all")"))),
+                 InputError);
+}
+
 TEST(ImportGltf, ChoosesTheSceneAndRejectsAMissingOne) {
     TempDir dir;
     const std::string path = dir.write("s.gltf", GltfFixture().json());

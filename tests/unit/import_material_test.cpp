@@ -72,6 +72,15 @@ TEST(ImportMaterial, IorAndSpecularExtensionsSetTheDielectricReflectance) {
     EXPECT_NEAR(phongFromMetallicRoughness(in).specular, f0 / 2, 1e-6);
 }
 
+// Transmission is the dielectric's: a metal lets nothing through.
+TEST(ImportMaterial, OnlyDielectricsTransmit) {
+    const Material metal = phongFromMetallicRoughness({.metallic = 1, .roughness = 0, .transmission = 1});
+    EXPECT_FALSE(metal.transmission.passesLight());
+    const Material half = phongFromMetallicRoughness({.metallic = 0.5f, .roughness = 0, .transmission = 1});
+    EXPECT_FLOAT_EQ(half.transmission.weight, 0.5f);
+    EXPECT_FLOAT_EQ(half.diffuse, 0.9f * 0.5f * 0.5f);
+}
+
 TEST(ImportMaterial, OutOfRangeInputsAreClamped) {
     MetallicRoughness in;
     in.baseColor = {-1, 2, 0.5f};

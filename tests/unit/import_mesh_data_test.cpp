@@ -1,6 +1,8 @@
 // Triangles kept only with an area in float, and model bounds (import/mesh_data.*).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "import/mesh_data.h"
 
 namespace rt {
@@ -14,6 +16,28 @@ TEST(ImportMeshData, TrianglesWithoutAreaAreDropped) {
     EXPECT_TRUE(appendTriangle(m, {0, 0, 0}, {1e-3f, 0, 0}, {0, 1e-3f, 0}));  // small is fine
     EXPECT_EQ(m.triangleCount(), 2u);
     EXPECT_EQ(m.triangleVertices[3], 1.0f);
+}
+
+// Opacity below 1 lets the rest through and fades the surface's own light; an index above 1
+// makes a refracting solid, else a thin sheet; opacity 1 or not finite changes nothing.
+TEST(ImportMeshData, OpacityBelowOneLetsLightThrough) {
+    Material veil;
+    applyOpacity(veil, 0.25f, 1);
+    EXPECT_FLOAT_EQ(veil.transmission.weight, 0.75f);
+    EXPECT_TRUE(veil.transmission.thin);
+    EXPECT_EQ(veil.transmission.ior, 1.0f);
+    EXPECT_FLOAT_EQ(veil.diffuse, Material{}.diffuse * 0.25f);
+    EXPECT_FLOAT_EQ(veil.ambient, Material{}.ambient * 0.25f);
+    Material solid;
+    applyOpacity(solid, 0.5f, 1.5f);
+    EXPECT_FALSE(solid.transmission.thin);
+    EXPECT_EQ(solid.transmission.ior, 1.5f);
+    for (const float opacity : {1.0f, 2.0f, std::numeric_limits<float>::quiet_NaN()}) {
+        Material same;
+        applyOpacity(same, opacity, 1.5f);
+        EXPECT_FALSE(same.transmission.passesLight()) << opacity;
+        EXPECT_EQ(same.diffuse, Material{}.diffuse);
+    }
 }
 
 TEST(ImportMeshData, BoundsOfAModel) {

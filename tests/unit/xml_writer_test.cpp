@@ -305,3 +305,54 @@ TEST(XmlWriter, MetallicRoughnessFactorsRoundTrip) {
     });
     EXPECT_NE(error.find("metallic must be between 0 and 1"), std::string::npos) << error;
 }
+
+// Glass (rt extension) survives a save and a load; an opaque material writes none of its
+// attributes, so that thesis scenes are written as before.
+TEST(XmlWriter, TransmissionRoundTripsAndOpaqueMaterialsWriteNone) {
+    const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
+      <materials>
+        <material name="glass" transmission="0.9" transmission_color="1 0.5 0.25" ior="1.33"
+                  attenuation_color="0.5 0.75 1" attenuation_distance="2"/>
+        <material name="sheet" transmission="0.5" thin="true"/>
+        <material name="plain"/>
+      </materials></scene>)";
+    const Scene first = loadSceneXmlFromString(xml, "<stdin>", ".");
+    const std::string saved = savedToStdout(first);
+    const Scene back = loadSceneXmlFromString(saved, "<stdin>", ".");
+    ASSERT_EQ(back.materials.size(), 3u);
+    const Transmission& glass = back.materials[0].transmission;
+    EXPECT_EQ(glass.weight, 0.9f);
+    EXPECT_EQ(glass.color, (Color{1, 0.5f, 0.25f}));
+    EXPECT_EQ(glass.ior, 1.33f);
+    EXPECT_FALSE(glass.thin);
+    EXPECT_EQ(glass.attenuationColor, (Color{0.5f, 0.75f, 1}));
+    EXPECT_EQ(glass.attenuationDistance, 2.0f);
+    EXPECT_TRUE(glass.absorbs());
+    const Transmission& sheet = back.materials[1].transmission;
+    EXPECT_TRUE(sheet.thin);
+    EXPECT_EQ(sheet.ior, 1.5f);  // the default, glass
+    EXPECT_FALSE(sheet.absorbs());
+    EXPECT_FALSE(back.materials[2].transmission.passesLight());
+    Scene opaque;
+    opaque.materials.push_back({.name = "m", .reflection = 0.5f});
+    const std::string plain = savedToStdout(opaque);
+    for (const char* attribute : {"transmission", "ior", "thin", "attenuation"})
+        EXPECT_EQ(plain.find(attribute), std::string::npos) << attribute;
+}
+
+TEST(XmlLoader, BadTransmissionValuesAreErrors) {
+    const auto error = [&](const std::string& attributes) {
+        return inputErrorOf([&] {
+            loadSceneXmlFromString(
+                "<scene><camera><origin z=\"-5\"/><destination/></camera><materials><material "
+                "name=\"m\" " +
+                    attributes + "/></materials></scene>",
+                "s.xml", ".");
+        });
+    };
+    EXPECT_EQ(error("transmission=\"1.5\""), "s.xml:1: <material> transmission must be between 0 and 1");
+    EXPECT_EQ(error("thin=\"yes\""), "s.xml:1: <material> thin must be true or false");
+    EXPECT_EQ(error("ior=\"0\""), "s.xml:1: <material> attribute 'ior' must be positive");
+    EXPECT_EQ(error("attenuation_distance=\"-1\""),
+              "s.xml:1: <material> attribute 'attenuation_distance' must be positive");
+}
