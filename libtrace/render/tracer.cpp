@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/light_sample.h"
 #include "render/phong.h"
 
 namespace rt {
@@ -48,7 +49,10 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
       camera_(scene.camera, settings.width, settings.height),
       epsilon_(sceneEpsilon(scene.primitives)),
       images_(images) {
-    for (const Light& light : scene.lights) ambientLight_ += light.color;
+    // Thesis 2.1.3: i_a is the sum of the lights' intensities. The colour of a light with the
+    // inverse-square falloff is what it gives at distance 1, no irradiance: it adds nothing.
+    for (const Light& light : scene.lights)
+        if (light.falloff == Light::Falloff::None) ambientLight_ += light.color;
 }
 
 Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
@@ -128,10 +132,11 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, Sa
 
     Color c = phongAmbient(color, m, ambientLight_) + emitted(m, s);
     for (const Light& light : scene_.lights) {
-        const Vec3 toLight = normalize(light.position - s.point);
-        if (dot(s.shadingNormal, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
-        const float seen = visibility(s, light, inBundle, rng, counters);
-        if (seen > 0) c += phongLight(m, color, s.shadingNormal, toLight, toViewer, light.color) * seen;
+        const LightIncidence in = lightIncidence(light, s.point);
+        // The light is behind the surface, or the point outside its cone or range: no shadow ray needed.
+        if (dot(s.shadingNormal, in.toLight) <= 0 || in.color == Color{}) continue;
+        const float seen = visibility(s, light, in.toLight, inBundle, rng, counters);
+        if (seen > 0) c += phongLight(m, color, s.shadingNormal, in.toLight, toViewer, in.color) * seen;
     }
     // Thesis 2.1, step 6: the reflected intensity is added to the local one.
     if (m.reflection > 0 && depth < settings_.reflectionDepth)
@@ -150,10 +155,14 @@ Color Tracer::emitted(const Material& m, const SurfacePoint& s) const {
     return m.emissionTexture ? m.emission * textureColor(scene_, *m.emissionTexture, s, images_) : m.emission;
 }
 
-float Tracer::visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
+float Tracer::visibility(const SurfacePoint& s, const Light& light, const Vec3& toLight, bool inBundle, SampleRng& rng,
                          RenderCounters& counters) const {
     if (!settings_.shadows) return 1;
     const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
+    if (light.type == Light::Type::Directional) {  // infinitely far: anything along the way shadows
+        ++counters.shadow.rays;
+        return accel_.occluded({origin, toLight}, kInfinity, counters.shadow) ? 0.0f : 1.0f;
+    }
     const bool area = settings_.softShadows && light.size > 0;
     const int samples = area && !inBundle ? settings_.distributedSamples : 1;
     const Vec3 axis = area ? normalize(light.position - origin) : Vec3{};  // only area lights need it

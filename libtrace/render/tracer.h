@@ -52,8 +52,8 @@ private:
     Color emitted(const Material& m, const SurfacePoint& s) const;
     Color shade(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
-    // Fraction of `light` seen from the surface (1 without shadows).
-    float visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
+    // Fraction of `light` seen from the surface (1 without shadows); toLight: unit, towards it.
+    float visibility(const SurfacePoint& s, const Light& light, const Vec3& toLight, bool inBundle, SampleRng& rng,
                      RenderCounters& counters) const;
     Color reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
                      SampleRng& rng, RenderCounters& counters) const;
