@@ -330,7 +330,7 @@ private:
         if (al.mType == aiLightSource_DIRECTIONAL) light.type = Light::Type::Directional;
         if (al.mType == aiLightSource_SPOT) {
             light.type = Light::Type::Spot;
-            light.outerConeRadians = std::clamp(double(al.mAngleOuterCone), 0.0, kPi / 2);
+            light.outerConeRadians = std::clamp(double(al.mAngleOuterCone), 0.0, double(kPi) / 2);
             light.innerConeRadians = std::clamp(double(al.mAngleInnerCone), 0.0, light.outerConeRadians);
         }
         if (al.mType == aiLightSource_AREA) out_.report.notes.push_back(what + " (area) approximated by a point light");
