@@ -367,7 +367,7 @@ void SceneBuilder::readLightDirection(const XmlElement& e, Light& light) {
     }
     const Vec3 d{e.number("dx", 0), e.number("dy", 0), e.number("dz", -1)};
     if (!(length(d) > 0)) e.fail("the light's direction (dx, dy, dz) is zero");
-    light.direction = normalize(d);
+    light.direction = isUnitLength(d) ? d : normalize(d);  // unit as written: kept, so save and load agree
     light.innerConeDegrees = float(e.nonNegative("inner_cone", 0));
     light.outerConeDegrees = float(e.nonNegative("outer_cone", 45));
     if (!(light.innerConeDegrees <= light.outerConeDegrees && light.outerConeDegrees <= 90))
