@@ -1,5 +1,7 @@
 #include "image/texture_files.h"
 
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagecache.h>
 #include <OpenImageIO/texture.h>
 
 #include <cmath>
@@ -36,6 +38,9 @@ struct TextureFiles::Impl {
     };
     OIIO::TextureSystem* system = nullptr;
     std::vector<Entry> entries;
+    // Readers of the embedded images and their bytes, alive as long as the system, which may reopen them.
+    std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> memoryReaders;
+    std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> embeddedBytes;
 
     // The first three channels at (s, t) as stored (a grey image's one in all three); `c` is
     // left as it is when the image cannot be read.
@@ -56,14 +61,14 @@ struct TextureFiles::Impl {
         return e.alphaChannel >= 0 ? e.alphaChannel : mask ? 0 : -1;
     }
 
-    Entry open(const Texture& t, std::vector<std::string>& warnings) const {
+    Entry open(const Texture& t, std::size_t index, std::vector<std::string>& warnings) {
         Entry e;
         if (t.kind != Texture::Kind::Image) return e;
-        const OIIO::ustring file(t.path);
+        const OIIO::ustring file = t.embedded ? addEmbedded(t, index) : OIIO::ustring(t.path);
         const OIIO::ImageSpec* spec = system->imagespec(file);
         if (!spec) {
-            warnings.push_back("texture '" + t.name + "': cannot read " + t.path + " (" + system->geterror() +
-                               "): white is used");
+            warnings.push_back("texture '" + t.name + "': cannot read " + (t.embedded ? "embedded " + t.file : t.path) +
+                               " (" + system->geterror() + "): white is used");
             return e;
         }
         e.file = file;
@@ -76,6 +81,20 @@ struct TextureFiles::Impl {
         e.options.interpmode = OIIO::TextureOpt::InterpBilinear;
         return e;
     }
+
+    // An embedded image, read from memory through an IOProxy (OpenImageIO's PNG, JPEG, WebP,
+    // TIFF and EXR readers take one) under a name no file has; its extension picks the reader.
+    OIIO::ustring addEmbedded(const Texture& t, std::size_t index) {
+        const OIIO::ustring name("rt-embedded:" + std::to_string(index) + "/" + t.file);
+        embeddedBytes.push_back(t.embedded);
+        memoryReaders.push_back(
+            std::make_unique<OIIO::Filesystem::IOMemReader>(t.embedded->data(), t.embedded->size()));
+        OIIO::ImageSpec config;
+        void* proxy = memoryReaders.back().get();
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        system->imagecache()->add_file(name, nullptr, &config);
+        return name;
+    }
 };
 
 bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
@@ -87,7 +106,8 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
     impl_->system = OIIO::TextureSystem::create(false);
     impl_->system->attribute("max_memory_MB", cacheMegabytes);
     impl_->system->attribute("automip", 1);
-    for (const Texture& t : scene.textures) impl_->entries.push_back(impl_->open(t, warnings));
+    for (std::size_t i = 0; i < scene.textures.size(); ++i)
+        impl_->entries.push_back(impl_->open(scene.textures[i], i, warnings));
 }
 
 TextureFiles::~TextureFiles() { OIIO::TextureSystem::destroy(impl_->system); }

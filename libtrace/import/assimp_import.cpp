@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "import/assimp_contained.h"
 #include "import/camera_3ds.h"
+#include "import/punctual_light.h"
 #include "import/scene_assembly.h"
 #include "import/scene_defaults.h"
 #include "scene/input_file.h"
@@ -95,7 +96,7 @@ public:
         out_.report.meshes = meshesPlaced_.size();
         const Aabb bounds = sceneBounds(out_.scene);
         takeCamera(bounds);
-        takeLights(bounds);
+        takeLights();
     }
 
 private:
@@ -317,9 +318,10 @@ private:
         return cameraFrom3ds(*chunk, fileToWorld_);
     }
 
-    // Point lights as they are, spot and area lights as point lights, directional lights as
-    // point lights 100 scene radii away against their direction, ambient lights dropped.
-    void takeLights(const Aabb& bounds) {
+    // Point, spot and directional lights as they are (import/punctual_light.h), area lights as
+    // point lights, ambient lights dropped. Assimp gives no units: colours are scaled together
+    // to a peak of 1 (docs/conversion.md).
+    void takeLights() {
         out_.report.lightsInFile = ai_.mNumLights;
         for (unsigned i = 0; i < ai_.mNumLights; ++i) {
             const aiLight& al = *ai_.mLights[i];
@@ -329,17 +331,33 @@ private:
                 out_.report.notes.push_back(what + (world ? " is ambient: dropped" : " is placed by no node: dropped"));
                 continue;
             }
-            Light light{world->point(toVec3(al.mPosition)), toColor(al.mColorDiffuse), 0};
-            if (al.mType == aiLightSource_DIRECTIONAL) {
-                light.position = directionalLightPosition(bounds, world->vector(toVec3(al.mDirection)));
-                out_.report.notes.push_back(what + " (directional) approximated by a point light 100 scene radii away");
-            } else if (al.mType != aiLightSource_POINT) {
-                out_.report.notes.push_back(what + " (spot or area) approximated by a point light");
-            }
-            if (!isFinite(light.position)) fail(what + " has a NaN or infinite position or direction");
-            out_.scene.lights.push_back(light);
+            out_.scene.lights.push_back(placeLight(punctual(al, what), *world, options_.scale, file_ + ": " + what));
         }
         scaleLightsToUnitPeak(out_.scene.lights);
+    }
+
+    // aiLight's attenuation is 1 / (constant + linear d + quadratic d^2): a pure quadratic is
+    // the inverse square, anything else is drawn without falloff (a note says so).
+    PunctualLight punctual(const aiLight& al, const std::string& what) {
+        PunctualLight light;
+        light.position = toVec3(al.mPosition);
+        light.direction = toVec3(al.mDirection);
+        light.color = toColor(al.mColorDiffuse);
+        if (al.mType == aiLightSource_DIRECTIONAL) light.type = Light::Type::Directional;
+        if (al.mType == aiLightSource_SPOT) {
+            light.type = Light::Type::Spot;
+            light.outerConeRadians = std::clamp(double(al.mAngleOuterCone), 0.0, double(kPi) / 2);
+            light.innerConeRadians = std::clamp(double(al.mAngleInnerCone), 0.0, light.outerConeRadians);
+        }
+        if (al.mType == aiLightSource_AREA) out_.report.notes.push_back(what + " (area) approximated by a point light");
+        const bool quadratic =
+            al.mAttenuationQuadratic > 0 && al.mAttenuationConstant == 0 && al.mAttenuationLinear == 0;
+        light.inverseSquare = quadratic && light.type != Light::Type::Directional;
+        if (light.inverseSquare) light.color = light.color * (1 / al.mAttenuationQuadratic);
+        if (!light.inverseSquare && light.type != Light::Type::Directional &&
+            (al.mAttenuationLinear != 0 || al.mAttenuationQuadratic != 0))
+            out_.report.notes.push_back(what + " has a falloff other than the inverse square: drawn without falloff");
+        return light;
     }
 
     const aiScene& ai_;

@@ -15,22 +15,19 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "import/gltf_accessor.h"
+#include "import/gltf_images.h"
 #include "import/phong_from_pbr.h"
 #include "import/primitive_topology.h"
+#include "import/punctual_light.h"
 #include "import/scene_assembly.h"
 #include "import/scene_defaults.h"
 
 namespace rt {
 namespace {
 
-// Textures are not used (rt has no texture mapping): skip decoding them.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-    return true;
-}
-
 // File access for tinygltf. Only regular files are read (its own reader sizes a directory
 // as 2^64 - 1 bytes and throws std::bad_alloc), and image files are never opened: each reads
-// as one placeholder byte, which skipImage accepts, as rt has no textures.
+// as one placeholder byte, which keepDataUriImage ignores; OpenImageIO reads them when rendering.
 bool isImagePath(const std::string& path) {
     const std::string ext = lowerCaseExtension(path);
     return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".ktx2" || ext == ".webp" || ext == ".dds";
@@ -107,7 +104,7 @@ template <class Load>
 tinygltf::Model loadGltf(const std::string& name, bool binary, const FileAccess& access, ImportReport& report,
                          Load load) {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skipImage, nullptr);
+    loader.SetImageLoader(keepDataUriImage, nullptr);
     loader.SetFsCallbacks({isRegularFile, samePath, readRegularFile, refuseWrite, const_cast<FileAccess*>(&access)});
     tinygltf::Model gltf;
     std::string error, warning;
@@ -206,7 +203,7 @@ public:
         out_.report.meshes = meshesPlaced_.size();
         const Aabb bounds = sceneBounds(out_.scene);
         takeCamera(bounds);
-        takeLights(bounds);
+        takeLights();
         noteTextures();
     }
 
@@ -401,8 +398,8 @@ private:
             std::max(0.0, numberValue(ext->second.Get("emissiveStrength"), file_, what + " emissiveStrength")));
     }
 
-    // The scene texture for a material's texture reference: its image must be a file beside
-    // the model (embedded images are not written yet: counted in a note), read by TEXCOORD_0.
+    // The scene texture for a material's texture reference: an image file beside the model or
+    // one the file embeds (gltf_images.h), read by TEXCOORD_0.
     template <class Info>
     std::optional<std::uint32_t> textureFor(const Info& info, const std::string& what) {
         if (info.index < 0) return std::nullopt;
@@ -411,11 +408,17 @@ private:
         const tinygltf::Texture& gt = gltf_.textures[std::size_t(info.index)];
         if (gt.source < 0 || std::size_t(gt.source) >= gltf_.images.size()) return std::nullopt;
         const tinygltf::Image& image = gltf_.images[std::size_t(gt.source)];
-        if (image.uri.empty() || image.uri.rfind("data:", 0) == 0 || info.texCoord != 0) {
+        const ImageBytes& embedded = embeddedBytes(gt.source);
+        if ((image.uri.empty() && !embedded) || info.texCoord != 0) {
             ++unusedTextures_;
             return std::nullopt;
         }
-        Texture t = textureBeside(file_, image.uri);
+        Texture t = embedded ? Texture{} : textureBeside(file_, image.uri);
+        if (embedded) {
+            t.file = embeddedImageFile(image, gt.source, *embedded);
+            t.name = std::filesystem::path(t.file).stem().string();
+            t.embedded = embedded;
+        }
         if (!image.name.empty()) t.name = image.name;
         if (gt.sampler >= 0 && std::size_t(gt.sampler) < gltf_.samplers.size()) {
             t.wrapS = wrapOf(gltf_.samplers[std::size_t(gt.sampler)].wrapS);
@@ -423,6 +426,13 @@ private:
         }
         readTextureTransform(info.extensions, t, what);
         return addTexture(out_.scene, std::move(t));
+    }
+
+    // Each embedded image's bytes once, however many textures use it.
+    const ImageBytes& embeddedBytes(int image) {
+        auto [it, added] = embeddedImages_.try_emplace(image);
+        if (added) it->second = embeddedImage(gltf_, image, file_);
+        return it->second;
     }
 
     static Texture::Wrap wrapOf(int glWrap) {
@@ -563,29 +573,24 @@ private:
         return camera;
     }
 
-    // KHR_lights_punctual: point lights where the node puts them; spot lights as point
-    // lights (cone dropped); directional lights as point lights 100 scene radii away against
-    // their direction. Colour times intensity, scaled by scaleLightsToUnitPeak.
-    void takeLights(const Aabb& bounds) {
+    // KHR_lights_punctual, exactly (import/punctual_light.h): colour times intensity in rt's
+    // units, the node's position and -Z axis, range and cone.
+    void takeLights() {
         out_.report.lightsInFile = gltf_.lights.size();
         for (const Placed& p : lights_) {
             const tinygltf::Light& gl = gltf_.lights[std::size_t(p.index)];
             const std::string what = "light " + std::to_string(p.index) + " (" + gl.type + ")";
-            Light light;
-            light.position = p.world.point(Vec3());
-            if (gl.type == "directional") {
-                light.position = directionalLightPosition(bounds, p.world.vector(Vec3(0, 0, -1)));
-                out_.report.notes.push_back(what + " approximated by a point light 100 scene radii away");
-            } else if (gl.type == "spot") {
-                out_.report.notes.push_back(what + " approximated by a point light (cone ignored)");
-            } else if (gl.type != "point") {
-                fail(what + " has an unknown type");
-            }
-            const Color c = gl.color.empty() ? Color(1, 1, 1) : color(gl.color, what + " color");
-            light.color = c * float(lightIntensity(gl, p.index));
-            out_.scene.lights.push_back(light);
+            const std::optional<Light::Type> type = parseNamed(kLightTypeNames, gl.type);
+            if (!type) fail(what + " has an unknown type");
+            PunctualLight light;
+            light.type = *type;
+            const double intensity = lightIntensity(gl, p.index) * kRtPerPhotometricUnit;
+            light.color = (gl.color.empty() ? Color(1, 1, 1) : color(gl.color, what + " color")) * float(intensity);
+            light.range = std::max(0.0, finiteNumber(gl.range, file_, what + " range"));
+            light.innerConeRadians = finiteNumber(gl.spot.innerConeAngle, file_, what + " innerConeAngle");
+            light.outerConeRadians = finiteNumber(gl.spot.outerConeAngle, file_, what + " outerConeAngle");
+            out_.scene.lights.push_back(placeLight(light, p.world, options_.scale, file_ + ": " + what));
         }
-        scaleLightsToUnitPeak(out_.scene.lights);
     }
 
     double lightIntensity(const tinygltf::Light& light, int index) const {
@@ -597,8 +602,8 @@ private:
     void noteTextures() {
         if (unusedTextures_)
             out_.report.notes.push_back(std::to_string(unusedTextures_) +
-                                        " texture reference(s) to embedded images or other texture coordinates than "
-                                        "TEXCOORD_0 are not used (the factor is kept)");
+                                        " texture reference(s) to other texture coordinates than TEXCOORD_0 or to "
+                                        "images without data are not used (the factor is kept)");
     }
 
     const tinygltf::Model& gltf_;
@@ -611,6 +616,7 @@ private:
     std::vector<Placed> cameras_;
     std::vector<Placed> lights_;
     std::size_t unusedTextures_ = 0;
+    std::map<int, ImageBytes> embeddedImages_;
 };
 
 }  // namespace

@@ -28,11 +28,6 @@ BoundingSphere boundingSphere(const Aabb& bounds) {
     return {bounds.center(), std::max(length(bounds.diagonal()) / 2, Real(1e-6))};
 }
 
-Vec3 directionalLightPosition(const Aabb& bounds, const Vec3& direction) {
-    const BoundingSphere sphere = boundingSphere(bounds);
-    return sphere.centre - normalize(direction) * (100 * sphere.radius);
-}
-
 double horizontalFov(double verticalFovRadians, double aspect) {
     return 2 * std::atan(std::tan(verticalFovRadians / 2) * aspect);
 }

@@ -21,10 +21,6 @@ struct BoundingSphere {
 };
 BoundingSphere boundingSphere(const Aabb& bounds);
 
-// Where a point light stands in for a directional light shining along `direction`: 100
-// bounding-sphere radii from the centre, against the direction (rt has no directional lights).
-Vec3 directionalLightPosition(const Aabb& bounds, const Vec3& direction);
-
 // rt's fov is horizontal; files usually give the vertical one.
 double horizontalFov(double verticalFovRadians, double aspect);
 
@@ -34,9 +30,8 @@ double horizontalFov(double verticalFovRadians, double aspect);
 Camera viewCamera(const Vec3& eye, const Vec3& forward, const Vec3& up, double horizontalFovRadians,
                   const Aabb& bounds);
 
-// rt lights have no distance falloff (thesis 2.1.3), so photometric intensities cannot be
-// kept, only their ratios: when any light exceeds 1 in a channel, all lights are scaled
-// together so that the brightest channel is 1.
+// For files whose light colours have no units (Assimp's): only their ratios are kept; when
+// any light exceeds 1 in a channel, all lights are scaled together so that the brightest channel is 1.
 void scaleLightsToUnitPeak(std::vector<Light>& lights);
 
 // If the importer chose no camera (report.cameraUsed empty, or --camera auto), a camera with a

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/light_sample.h"
+
 namespace rt {
 
 namespace {
@@ -73,11 +75,11 @@ std::optional<LightSample> LightDistribution::sample(const Vec3& from, Real u, R
     s.source = entries_[entry].source;
     s.index = entries_[entry].index;
     switch (s.source) {
-        case LightSample::Source::Point: {
-            const Vec3 d = scene_.lights[s.index].position - from;
-            s.distance = length(d);
-            if (!(s.distance > 0)) return std::nullopt;
-            s.direction = d / s.distance;
+        case LightSample::Source::Point: {  // point, spot or directional: render/light_sample.h
+            const LightIncidence in = lightIncidence(scene_.lights[s.index], from);
+            if (!(in.distance > 0) || in.color == Color{}) return std::nullopt;
+            s.direction = in.toLight;
+            s.distance = in.distance;
             s.pdf = chosen;
             return s;
         }

@@ -1,4 +1,5 @@
-// What the path tracer's next-event estimation samples: the scene's point lights, its emissive
+// What the path tracer's next-event estimation samples: the scene's lights (point, spot and
+// directional, each a delta light), its emissive
 // triangles as area lights (emitting from their front, the side their winding faces), and a non-black background as a
 // constant environment, each picked in proportion to an estimate of the power it sends into the scene (pbrt-v4's power
 // light sampler). Emissive spheres, cylinders and cones are not sampled: they light the scene through the paths that
@@ -17,7 +18,7 @@
 namespace rt {
 
 struct LightSample {
-    enum class Source { Point, Triangle, Environment };
+    enum class Source { Point, Triangle, Environment };  // Point: any Scene::lights entry
     Source source = Source::Point;
     std::uint32_t index = 0;  // Point: in Scene::lights; Triangle: in Scene::primitives
     Real b1 = 0, b2 = 0;      // Triangle: the point's barycentric weights of p1 and p2

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/light_sample.h"
 #include "render/normal_map.h"
 
 namespace rt {
@@ -174,8 +175,8 @@ Color PathTracer::emission(const Material& m, const SurfacePoint& s, const Ray& 
 
 Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) const {
     switch (light.source) {
-        case LightSample::Source::Point:  // unattenuated, as the thesis's lights (docs/path-tracing.md)
-            return scene_.lights[light.index].color;
+        case LightSample::Source::Point:  // with the light's falloff and cone, as the Whitted tracer lights
+            return lightIncidence(scene_.lights[light.index], from).color;
         case LightSample::Source::Triangle: {
             const Ray toLight{from, light.direction};
             const Hit there{light.distance, light.index, light.b1, light.b2};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/light_sample.h"
 #include "render/normal_map.h"
 #include "render/phong.h"
 
@@ -30,7 +31,10 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
       camera_(scene.camera, settings.width, settings.height),
       epsilon_(secondaryRayOffset(scene.primitives)),
       images_(images) {
-    for (const Light& light : scene.lights) ambientLight_ += light.color;
+    // Thesis 2.1.3: i_a is the sum of the lights' intensities. The colour of a light with the
+    // inverse-square falloff is what it gives at distance 1, no irradiance: it adds nothing.
+    for (const Light& light : scene.lights)
+        if (light.falloff == Light::Falloff::None) ambientLight_ += light.color;
     for (const Material& m : scene.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
 }
 
@@ -116,10 +120,11 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     // mirrors), but lights nothing else.
     Color c = phongAmbient(color, m, ambientLight_) + surfaceEmission(scene_, m, s, images_);
     for (const Light& light : scene_.lights) {
-        const Vec3 toLight = normalize(light.position - s.point);
-        if (dot(s.shadingNormal, toLight) <= 0) continue;  // the light is behind the surface: no shadow ray needed
-        const Color seen = visibility(s, light, inBundle, rng, counters);
-        if (seen != Color{}) c += phongLight(m, color, s.shadingNormal, toLight, toViewer, light.color) * seen;
+        const LightIncidence in = lightIncidence(light, s.point);
+        // The light is behind the surface, or the point outside its cone or range: no shadow ray needed.
+        if (dot(s.shadingNormal, in.toLight) <= 0 || in.color == Color{}) continue;
+        const Color seen = visibility(s, light, in.toLight, inBundle, rng, counters);
+        if (seen != Color{}) c += phongLight(m, color, s.shadingNormal, in.toLight, toViewer, in.color) * seen;
     }
     // Thesis 2.1, step 6: the reflected intensity is added to the local one; Whitted's
     // transmitted ray too, Fresnel's reflected share of it going to the mirror ray.
@@ -137,10 +142,14 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     return c;
 }
 
-Color Tracer::visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
+Color Tracer::visibility(const SurfacePoint& s, const Light& light, const Vec3& toLight, bool inBundle, SampleRng& rng,
                          RenderCounters& counters) const {
     if (!settings_.shadows) return {1, 1, 1};
     const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
+    if (light.type == Light::Type::Directional) {  // infinitely far: anything along the way shadows
+        ++counters.shadow.rays;
+        return transmittance({origin, toLight}, kInfinity, counters);
+    }
     const bool area = settings_.softShadows && light.size > 0;
     const int samples = area && !inBundle ? settings_.distributedSamples : 1;
     const Vec3 axis = area ? normalize(light.position - origin) : Vec3{};  // only area lights need it

@@ -51,8 +51,9 @@ private:
     // The colour at `s`, the surface of `hit` (surfaceAt).
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                 RenderCounters& counters) const;
-    // Fraction of `light` seen from the surface (1 without shadows), tinted by glass in the way.
-    Color visibility(const SurfacePoint& s, const Light& light, bool inBundle, SampleRng& rng,
+    // Fraction of `light` seen from the surface (1 without shadows), tinted by glass in the way;
+    // toLight: unit, towards it.
+    Color visibility(const SurfacePoint& s, const Light& light, const Vec3& toLight, bool inBundle, SampleRng& rng,
                      RenderCounters& counters) const;
     Color reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
                      SampleRng& rng, RenderCounters& counters) const;

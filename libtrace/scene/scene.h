@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "core/transform.h"
 #include "geometry/primitives.h"
 #include "scene/camera.h"
+#include "scene/light.h"
 #include "scene/transmission.h"
 
 namespace rt {
@@ -30,6 +32,10 @@ struct Texture {
     Kind kind = Kind::Image;
     std::string file{};  // Image: as the scene gives it
     std::string path{};  // Image: the file to read (`file` resolved against the scene's folder)
+    // Image: the encoded picture (PNG, JPEG, ...) when the scene holds it itself (embedded in a
+    // .glb or as a data: URI, or an inline <texture>): read from memory; `file` is then only the
+    // name it is saved under, its extension telling the format; `path` is empty.
+    std::shared_ptr<const std::vector<std::uint8_t>> embedded{};
     Wrap wrapS = Wrap::Repeat, wrapT = Wrap::Repeat;
     std::array<float, 2> offset{0, 0}, scale{1, 1};
     float rotation = 0;  // radians
@@ -76,13 +82,6 @@ struct Material {
     std::optional<std::uint32_t> normalTexture{};
     float normalScale = 1;
     Transmission transmission{};  // rt extension: glass (scene/transmission.h)
-};
-
-// A point light; `size` is the radius of the area light used by distributed ray tracing.
-struct Light {
-    Vec3 position;
-    Color color{1, 1, 1};
-    Real size = 0;
 };
 
 // A model loaded once and instanced many times (thesis 3.4.3). Geometry is kept in

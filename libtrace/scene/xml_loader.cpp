@@ -68,7 +68,9 @@ private:
     void resolveTextures();
     void readModel(const XmlElement& e);
     Model readModelData(const XmlElement& e, const std::string& name) const;
+    std::vector<std::uint8_t> inlineData(const XmlElement& e, const std::string& what) const;
     void readLight(const XmlElement& e);
+    static void readLightDirection(const XmlElement& e, Light& light);
     void readObjects(pugi::xml_node parent, const Transform& toWorld, int depth);
     static bool isTransform(std::string_view tag);
     Transform readTransform(pugi::xml_node node) const;
@@ -180,11 +182,13 @@ void SceneBuilder::readList(const XmlElement& list) {
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
-                                    "color_a", "color_b", "size"}));
+                                    "color_a", "color_b", "size", "encoding"}));
         else if (tag == "models")
             readModel(XmlElement(file_, item, {"name", "file", "type", "encoding"}));
         else
-            readLight(XmlElement(file_, item, {"x", "y", "z", "r", "g", "b", "size"}));
+            readLight(XmlElement(file_, item,
+                                 {"x", "y", "z", "r", "g", "b", "size", "type", "dx", "dy", "dz", "falloff", "range",
+                                  "inner_cone", "outer_cone"}));
     }
 }
 
@@ -301,7 +305,9 @@ void SceneBuilder::readCutout(const XmlElement& e, std::uint32_t index, Material
 
 // rt extension: an image file (any format OpenImageIO reads) or a procedural checker.
 void SceneBuilder::readTexture(const XmlElement& e) {
-    e.requireNoChildren();
+    const bool inlineImage = e.has("encoding");
+    if (inlineImage && e.string("encoding") != "base64") e.fail("a <texture>'s encoding must be base64");
+    if (!inlineImage) e.requireNoChildren();
     Texture t;
     t.name = e.string("name");
     define(textures_, "texture", t.name, std::uint32_t(scene_.textures.size()), e);
@@ -312,6 +318,11 @@ void SceneBuilder::readTexture(const XmlElement& e) {
         t.file = e.string("file");
         std::filesystem::path path(t.file);
         t.path = (path.is_relative() ? std::filesystem::path(baseDir_) / path : path).string();
+    }
+    if (inlineImage) {  // rt extension: the picture's bytes inside the element, `file` only names it
+        if (t.kind != Texture::Kind::Image) e.fail("only image textures have inline data");
+        t.embedded = std::make_shared<const std::vector<std::uint8_t>>(inlineData(e, "texture '" + t.name + "'"));
+        t.path.clear();
     }
     const auto wrap = [&](const char* attribute, Texture::Wrap fallback) {
         const std::optional<std::string> w = e.optionalString(attribute);
@@ -382,24 +393,59 @@ Model SceneBuilder::readModelData(const XmlElement& e, const std::string& name) 
     }
     if (e.optionalString("encoding") != "base64") e.fail("<model> needs a file or encoding=\"base64\" data");
     if (format && *format != Model::Format::Raw) e.fail("inline model data must be RAW");
+    const std::vector<std::uint8_t> bytes = inlineData(e, "model '" + name + "'");
+    return placed([&] { return readRawBytes(bytes, "inline RAW data"); });
+}
+
+// Thesis 3.4.2: a point light without falloff. rt extension: type, direction, falloff,
+// range and the spot's cone, as docs/scene-format.md describes them.
+// The base64 text inside an element (an inline model or image); `what` names it in errors.
+std::vector<std::uint8_t> SceneBuilder::inlineData(const XmlElement& e, const std::string& what) const {
     std::string text;
     for (const pugi::xml_node& child : e.node().children()) {
-        if (child.type() == pugi::node_element) file_.failAt(child, "unexpected element in inline <model>");
+        if (child.type() == pugi::node_element) file_.failAt(child, "unexpected element in inline " + e.tag());
         text += child.value();
     }
     std::size_t badAt = 0;
-    const std::optional<std::vector<std::uint8_t>> bytes = decodeBase64(text, badAt);
-    if (!bytes) e.fail("model '" + name + "': bad base64 at character " + std::to_string(badAt));
-    return placed([&] { return readRawBytes(*bytes, "inline RAW data"); });
+    std::optional<std::vector<std::uint8_t>> bytes = decodeBase64(text, badAt);
+    if (!bytes) e.fail(what + ": bad base64 at character " + std::to_string(badAt));
+    return std::move(*bytes);
 }
 
 void SceneBuilder::readLight(const XmlElement& e) {
     e.requireNoChildren();
     Light light;
-    light.position = e.xyz(0);
+    light.type = e.named("type", kLightTypeNames, Light::Type::Point);
     light.color = e.rgb(1);
+    const bool directional = light.type == Light::Type::Directional;
+    for (const char* a : {"x", "y", "z", "size", "falloff", "range"})
+        if (directional && e.has(a)) e.fail("a directional light has no '" + std::string(a) + "'");
+    light.position = e.xyz(0);
     light.size = e.nonNegative("size", 0);
+    light.falloff = e.named("falloff", kLightFalloffNames, Light::Falloff::None);
+    if (e.has("range") && light.falloff != Light::Falloff::InverseSquare)
+        e.fail("'range' needs falloff=\"inverse_square\"");
+    light.range = e.has("range") ? e.positive("range") : 0;
+    readLightDirection(e, light);
     scene_.lights.push_back(light);
+}
+
+void SceneBuilder::readLightDirection(const XmlElement& e, Light& light) {
+    const bool spot = light.type == Light::Type::Spot;
+    for (const char* a : {"inner_cone", "outer_cone"})
+        if (!spot && e.has(a)) e.fail("'" + std::string(a) + "' is for spot lights");
+    if (light.type == Light::Type::Point) {
+        for (const char* a : {"dx", "dy", "dz"})
+            if (e.has(a)) e.fail("a point light has no direction ('" + std::string(a) + "')");
+        return;
+    }
+    const Vec3 d{e.number("dx", 0), e.number("dy", 0), e.number("dz", -1)};
+    if (!(length(d) > 0)) e.fail("the light's direction (dx, dy, dz) is zero");
+    light.direction = isUnitLength(d) ? d : normalize(d);  // unit as written: kept, so save and load agree
+    light.innerConeDegrees = float(e.nonNegative("inner_cone", 0));
+    light.outerConeDegrees = float(e.nonNegative("outer_cone", 45));
+    if (!(light.innerConeDegrees <= light.outerConeDegrees && light.outerConeDegrees <= 90))
+        e.fail("a spot needs 0 <= inner_cone <= outer_cone <= 90 (degrees)");
 }
 
 void SceneBuilder::readObjects(pugi::xml_node parent, const Transform& toWorld, int depth) {

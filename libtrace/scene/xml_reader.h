@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/color.h"
+#include "core/names.h"
 #include "core/vec3.h"
 #include "scene/parameters.h"
 
@@ -72,6 +73,16 @@ public:
     // nonNegative() kept as a float (colours, material factors): beyond float's range is an
     // error here, not +inf in the picture.
     float nonNegativeFloat(const char* attribute, float fallback) const;
+    // One of the names in `table`; an error naming them all for any other.
+    template <class E, std::size_t N>
+    E named(const char* attribute, const NamedValues<E, N>& table, E fallback) const {
+        const std::optional<std::string> text = optionalString(attribute);
+        if (!text) return fallback;
+        if (const std::optional<E> value = parseNamed(table, *text)) return *value;
+        std::string known;
+        for (const std::string& name : namesOf(table)) known += (known.empty() ? "" : ", ") + name;
+        fail("unknown " + std::string(attribute) + " '" + *text + "' (" + known + ")");
+    }
 
     Vec3 xyz(Real fallback) const;                             // attributes x, y, z
     Color rgb(float fallback) const;                           // attributes r, g, b, each >= 0 and a finite float

@@ -1,9 +1,11 @@
 #include "scene/xml_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <pugixml.hpp>
+#include <span>
 #include <sstream>
 
 #include "core/atomic_file.h"
@@ -101,6 +103,39 @@ pugi::xml_node addObject(pugi::xml_node parent, const Cone& c) {
     return node;
 }
 
+// A thesis point light as the thesis wrote it; the rt extension's attributes only where they
+// are not the defaults the loader assumes.
+void addLight(pugi::xml_node node, const Light& light) {
+    if (light.type != Light::Type::Point) node.append_attribute("type").set_value(nameOf(kLightTypeNames, light.type));
+    if (light.type != Light::Type::Directional) setXyz(node, light.position);
+    setRgb(node, light.color);
+    if (light.type != Light::Type::Directional) setNumber(node, "size", light.size);
+    if (light.type != Light::Type::Point) {
+        setNumber(node, "dx", light.direction.x);
+        setNumber(node, "dy", light.direction.y);
+        setNumber(node, "dz", light.direction.z);
+    }
+    if (light.falloff != Light::Falloff::None)
+        node.append_attribute("falloff").set_value(nameOf(kLightFalloffNames, light.falloff));
+    if (light.range > 0) setNumber(node, "range", light.range);
+    if (light.type != Light::Type::Spot) return;
+    setNumber(node, "inner_cone", light.innerConeDegrees);
+    setNumber(node, "outer_cone", light.outerConeDegrees);
+}
+
+// Data inside the element, base64 in lines of 76 characters (inline models and images).
+void addInlineData(pugi::xml_node node, std::span<const std::uint8_t> bytes) {
+    node.append_attribute("encoding").set_value("base64");
+    node.append_child(pugi::node_pcdata).set_value(("\n" + encodeBase64(bytes, 76) + "\n").c_str());
+}
+
+// An embedded image: the file written beside the scene, or its name and its bytes inline.
+void addEmbeddedImage(pugi::xml_node node, const std::vector<std::uint8_t>& bytes, const std::string& file,
+                      bool inlineData) {
+    node.append_attribute("file").set_value(file.c_str());
+    if (inlineData) addInlineData(node, bytes);
+}
+
 // Names as written: non-empty and unique (case-insensitively when `caseless`, for file
 // names on case-insensitive file systems), so that every reference finds its target.
 std::vector<std::string> uniqueNames(std::vector<std::string> names, const std::string& fallback, bool caseless) {
@@ -120,7 +155,10 @@ std::vector<std::string> cameraNames(const Scene& scene) {
 class SceneXmlWriter {
 public:
     // `folder`: where the XML goes, for texture files relative to it; empty: standard output.
-    SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles, std::string folder);
+    // `modelFiles`, `imageFiles`: each model's and each embedded image's file as the XML names it,
+    // or empty to write its data inline.
+    SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles, std::vector<std::string> imageFiles,
+                   std::string folder);
     void build(pugi::xml_document& doc) const;
 
 private:
@@ -137,6 +175,7 @@ private:
 
     const Scene& scene_;
     std::vector<std::string> modelFiles_;  // relative references, or empty for inline data
+    std::vector<std::string> imageFiles_;  // the same for the textures' embedded images
     std::vector<std::string> materialNames_;
     std::vector<std::string> modelNames_;
     std::vector<std::string> cameraNames_;  // the camera's, then each extra camera's
@@ -151,9 +190,11 @@ std::vector<std::string> namesOf(const std::vector<Named>& items) {
     return names;
 }
 
-SceneXmlWriter::SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles, std::string folder)
+SceneXmlWriter::SceneXmlWriter(const Scene& scene, std::vector<std::string> modelFiles,
+                               std::vector<std::string> imageFiles, std::string folder)
     : scene_(scene),
       modelFiles_(std::move(modelFiles)),
+      imageFiles_(std::move(imageFiles)),
       materialNames_(uniqueNames(namesOf(scene.materials), "material", false)),
       modelNames_(uniqueNames(namesOf(scene.models), "model", false)),
       cameraNames_(cameraNames(scene)),
@@ -234,7 +275,11 @@ void SceneXmlWriter::addTextures(pugi::xml_node parent) const {
             setNumber(node, "size", t.size);
             continue;
         }
-        node.append_attribute("file").set_value(textureFile(t).c_str());
+        if (t.embedded)
+            addEmbeddedImage(node, *t.embedded, imageFiles_[i].empty() ? t.file : imageFiles_[i],
+                             imageFiles_[i].empty());
+        else
+            node.append_attribute("file").set_value(textureFile(t).c_str());
         node.append_attribute("wrap_s").set_value(kWraps[int(t.wrapS)]);
         node.append_attribute("wrap_t").set_value(kWraps[int(t.wrapT)]);
         node.append_attribute("offset").set_value(numberList({t.offset[0], t.offset[1]}).c_str());
@@ -258,12 +303,10 @@ void SceneXmlWriter::addModels(pugi::xml_node parent) const {
         if (!modelFiles_[i].empty()) node.append_attribute("file").set_value(modelFiles_[i].c_str());
         node.append_attribute("type").set_value("raw");
         if (!modelFiles_[i].empty()) continue;
-        node.append_attribute("encoding").set_value("base64");
         std::ostringstream raw;
         writeRaw(raw, scene_.models[i]);
         const std::string bytes = raw.str();
-        const std::string text = encodeBase64({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, 76);
-        node.append_child(pugi::node_pcdata).set_value(("\n" + text + "\n").c_str());
+        addInlineData(node, {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
     }
 }
 
@@ -292,12 +335,7 @@ void SceneXmlWriter::addObjects(pugi::xml_node parent) const {
 }
 
 void SceneXmlWriter::addLights(pugi::xml_node parent) const {
-    for (const Light& light : scene_.lights) {
-        pugi::xml_node node = parent.append_child("light");
-        setXyz(node, light.position);
-        setRgb(node, light.color);
-        setNumber(node, "size", light.size);
-    }
+    for (const Light& light : scene_.lights) addLight(parent.append_child("light"), light);
 }
 
 }  // namespace
@@ -310,32 +348,53 @@ std::string modelFolderFor(const std::string& xmlPath) {
 void saveSceneXml(const Scene& scene, const std::string& path) {
     const std::string xmlFolder =
         path == "-" ? "" : std::filesystem::absolute(path).parent_path().lexically_normal().string();
-    const auto saveXml = [&](std::vector<std::string> modelFiles, std::ostream& out) {
+    const auto saveXml = [&](std::vector<std::string> modelFiles, std::vector<std::string> imageFiles,
+                             std::ostream& out) {
         pugi::xml_document doc;
-        SceneXmlWriter(scene, std::move(modelFiles), xmlFolder).build(doc);
+        SceneXmlWriter(scene, std::move(modelFiles), std::move(imageFiles), xmlFolder).build(doc);
         doc.save(out, "  ");
         out.flush();
         return bool(out);
     };
-    if (path == "-" || scene.models.empty()) {
-        writeFileAtomically(path,
-                            [&](std::ostream& out) { saveXml(std::vector<std::string>(scene.models.size()), out); });
+    const bool embedsImages =
+        std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& t) { return bool(t.embedded); });
+    if (path == "-" || (scene.models.empty() && !embedsImages)) {
+        writeFileAtomically(path, [&](std::ostream& out) {
+            saveXml(std::vector<std::string>(scene.models.size()), std::vector<std::string>(scene.textures.size()),
+                    out);
+        });
         return;
     }
-    // The RAW files go to a new folder and the XML to a temporary file; only when both are
-    // written are they published together, so a failure leaves the previous scene as it was,
-    // a successful save leaves no stale RAW file, and concurrent saves take turns.
+    // The RAW files and the embedded images go to a new folder and the XML to a temporary file;
+    // only when all are written are they published together, so a failure leaves the previous
+    // scene as it was, a successful save leaves no stale file, and concurrent saves take turns.
     const std::filesystem::path folder = modelFolderFor(path);
-    std::vector<std::string> files = namesOf(scene.models);
-    for (std::string& name : files) name = safeName(name);
-    files = uniqueNames(std::move(files), "model", true);
-    std::vector<std::string> modelFiles;
-    for (const std::string& file : files) modelFiles.push_back((folder.filename() / (file + ".raw")).generic_string());
+    NameTable table(true);  // file names: unique ignoring case
+    std::vector<std::string> files, modelFiles, imageFiles(scene.textures.size());
+    for (const Model& m : scene.models) files.push_back(table.claim(safeName(m.name), "model") + ".raw");
+    for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+        if (!scene.textures[i].embedded) continue;
+        const std::filesystem::path file(scene.textures[i].file);
+        const std::string extension = file.extension().string();  // ".png": safeName would turn the dot
+        imageFiles[i] = table.claim(safeName(file.stem().string()), "image") +
+                        (extension.empty() ? "" : "." + safeName(extension.substr(1)));
+    }
+    const auto reference = [&](const std::string& file) { return (folder.filename() / file).generic_string(); };
+    for (const std::string& file : files) modelFiles.push_back(reference(file));
     const auto write = [&](const std::string& tempXml, const std::string& tempFolder) {
-        for (std::size_t i = 0; i < scene.models.size(); ++i)
-            writeRawFile((std::filesystem::path(tempFolder) / (files[i] + ".raw")).string(), scene.models[i]);
+        const std::filesystem::path to(tempFolder);
+        for (std::size_t i = 0; i < scene.models.size(); ++i) writeRawFile((to / files[i]).string(), scene.models[i]);
+        std::vector<std::string> images(scene.textures.size());
+        for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+            if (imageFiles[i].empty()) continue;
+            const std::vector<std::uint8_t>& bytes = *scene.textures[i].embedded;
+            writeFileAtomically((to / imageFiles[i]).string(), [&](std::ostream& out) {
+                out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+            });
+            images[i] = reference(imageFiles[i]);
+        }
         std::ofstream out(tempXml, std::ios::binary | std::ios::trunc);
-        return out && saveXml(modelFiles, out);
+        return out && saveXml(modelFiles, images, out);
     };
     commitFileAndFolderAtomically(path, folder.string(), write);
 }

@@ -48,7 +48,8 @@ while read -r rel triangles <&3; do
     cp "$WORK/stdout" "$out/summary.json"
     [ -s "$out/scene.xml" ] || fail "$rel: no scene.xml"
     models=$(json_field models "$out/summary.json")
-    [ "$(ls "$out/scene" | wc -l)" = "$models" ] || fail "$rel: $(ls "$out/scene" | wc -l) RAW files for $models models"
+    raws=$(find "$out/scene" -name '*.raw' | wc -l)  # embedded images are written beside them
+    [ "$raws" = "$models" ] || fail "$rel: $raws RAW files for $models models"
     kept=$(json_field modelTriangles "$out/summary.json")
     [ "$(raw_triangles "$out/scene")" = "$kept" ] || fail "$rel: RAW triangles differ from the summary"
     dropped=$(json_field degenerate "$out/summary.json")

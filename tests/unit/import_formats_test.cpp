@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -376,6 +377,49 @@ TEST(ImportFormats, DegenerateTrianglesAreTheSameInEveryImporter) {
         EXPECT_EQ(test::modelTriangles(r.scene), 3u);
         EXPECT_EQ(r.report.droppedDegenerate, 2u);
     }
+}
+
+// Collada lights through Assimp's aiLight: a spot with the pure quadratic attenuation keeps
+// its falloff, cone and the node's -Z; a directional light its direction; a point light with a
+// linear term is drawn without falloff, with a note.
+TEST(ImportFormats, ColladaLightsKeepTheirKind) {
+    TempDir dir;
+    std::string dae = test::replaceOnce(kColladaTwoPlacements, "  <library_visual_scenes>", R"(  <library_lights>
+    <light id="spot" name="spot"><technique_common><spot><color>1 1 1</color>
+      <constant_attenuation>0</constant_attenuation><linear_attenuation>0</linear_attenuation>
+      <quadratic_attenuation>1</quadratic_attenuation><falloff_angle>30</falloff_angle>
+    </spot></technique_common></light>
+    <light id="sun" name="sun"><technique_common><directional><color>0.5 0.5 0.5</color></directional>
+    </technique_common></light>
+    <light id="bulb" name="bulb"><technique_common><point><color>0.25 0.25 0.25</color>
+      <linear_attenuation>1</linear_attenuation></point></technique_common></light>
+  </library_lights>
+  <library_visual_scenes>)");
+    dae =
+        test::replaceOnce(dae, "    </visual_scene>", R"(      <node id="lamp" name="lamp"><translate>0 5 0</translate>
+        <rotate>1 0 0 -90</rotate><instance_light url="#spot"/></node>
+      <node id="sky" name="sky"><instance_light url="#sun"/></node>
+      <node id="desk" name="desk"><translate>1 1 1</translate><instance_light url="#bulb"/></node>
+    </visual_scene>)");
+    const ImportResult r = importScene(dir.write("lights.dae", dae));
+    ASSERT_EQ(r.scene.lights.size(), 3u);
+    std::map<Light::Type, Light> byType;
+    for (const Light& l : r.scene.lights) byType[l.type] = l;
+    const Light &spot = byType[Light::Type::Spot], &sun = byType[Light::Type::Directional],
+                &bulb = byType[Light::Type::Point];
+    expectNear(spot.position, {0, 5, 0}, 1e-6);
+    expectNear(spot.direction, {0, -1, 0}, 1e-6);
+    EXPECT_EQ(spot.falloff, Light::Falloff::InverseSquare);
+    EXPECT_GT(spot.outerConeDegrees, 0);
+    EXPECT_LE(spot.innerConeDegrees, spot.outerConeDegrees);
+    EXPECT_FLOAT_EQ(spot.color.r, 1);
+    expectNear(sun.direction, {0, 0, -1}, 1e-6);
+    EXPECT_FLOAT_EQ(sun.color.r, 0.5f);
+    expectNear(bulb.position, {1, 1, 1}, 1e-6);
+    EXPECT_EQ(bulb.falloff, Light::Falloff::None);
+    std::size_t notes = 0;
+    for (const std::string& n : r.report.notes) notes += n.find("other than the inverse square") != std::string::npos;
+    EXPECT_EQ(notes, 1u);
 }
 
 }  // namespace

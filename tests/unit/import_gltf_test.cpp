@@ -110,8 +110,8 @@ TEST(ImportGltf, EveryPerspectiveCameraIsKeptTheChosenFirst) {
     EXPECT_EQ(side.scene.extraCameras[0].name, "front");
 }
 
-// issue-261.gltf: camera and point light under matrix transforms; the light's intensity 1000
-// becomes colour 1 (rt lights have no falloff, only ratios are kept).
+// issue-261.gltf: camera and point light under matrix transforms; the light's 1000 cd
+// become 1000 / 683 W/sr with the inverse-square falloff.
 TEST(ImportGltf, PointLightAndCameraOfIssue261) {
     SKIP_WITHOUT_SHARED_MODELS();
     const ImportResult r = importScene(sharedModels() + "/gltf/PointLightCamera-issue261/issue-261.gltf");
@@ -122,23 +122,93 @@ TEST(ImportGltf, PointLightAndCameraOfIssue261) {
     // yfov 0.9273 (tan of half = 0.5) and aspect 4/3: tan of half the horizontal fov = 2/3.
     EXPECT_NEAR(std::tan(*c.fovDegrees * kPi / 360), 2.0 / 3.0, 1e-5);
     ASSERT_EQ(r.scene.lights.size(), 1u);
-    expectNear(r.scene.lights[0].position, {2.3640632834071384, 2.465226204472449, 2.309515908392224}, kLoose);
-    EXPECT_EQ(r.scene.lights[0].color, Color(1, 1, 1));
+    const Light& light = r.scene.lights[0];
+    expectNear(light.position, {2.3640632834071384, 2.465226204472449, 2.309515908392224}, kLoose);
+    EXPECT_EQ(light.type, Light::Type::Point);
+    EXPECT_EQ(light.falloff, Light::Falloff::InverseSquare);
+    EXPECT_NEAR(light.color.g, 1000 / 683.0, 1e-4);
     EXPECT_FALSE(r.report.lightGenerated);
     EXPECT_EQ(r.report.cameraUsed, "default");
 }
 
-// Spot and directional lights become point lights, each approximation noted.
-TEST(ImportGltf, SpotAndDirectionalLightsAreApproximated) {
+// Unity's export: one directional light and three spots with ranges and cones, kept as they are.
+TEST(ImportGltf, SpotAndDirectionalLightsAreKept) {
     SKIP_WITHOUT_SHARED_MODELS();
     const ImportResult r = importScene(sharedModels() + "/gltf/AnimateAllTheThings/24_animation_pointer.gltf");
-    EXPECT_EQ(r.scene.lights.size(), 4u);
-    std::size_t approximations = 0;
-    for (const std::string& n : r.report.notes) approximations += n.find("approximated") != std::string::npos;
-    EXPECT_EQ(approximations, 4u);
-    float peak = 0;
-    for (const Light& l : r.scene.lights) peak = std::max({peak, l.color.r, l.color.g, l.color.b});
-    EXPECT_FLOAT_EQ(peak, 1.0f);
+    ASSERT_EQ(r.scene.lights.size(), 4u);
+    for (const std::string& n : r.report.notes) EXPECT_EQ(n.find("approximated"), std::string::npos) << n;
+    const Light& sun = r.scene.lights[0];
+    EXPECT_EQ(sun.type, Light::Type::Directional);
+    expectNear(sun.direction, {0, 0, 1}, kLoose);  // -Z turned half around y
+    EXPECT_NEAR(sun.color.r, 3.14159274 / 683, 1e-7);
+    const Light& spot = r.scene.lights[1];
+    EXPECT_EQ(spot.type, Light::Type::Spot);
+    EXPECT_EQ(spot.range, Real(10));
+    EXPECT_NEAR(spot.innerConeDegrees, 0.106483668 * 180 / kPi, 1e-4);
+    EXPECT_NEAR(spot.outerConeDegrees, 0.133104578 * 180 / kPi, 1e-4);
+    EXPECT_EQ(r.scene.lights[3].color.g, 0);  // red
+}
+
+// A spot under a rotated, scaled node shines along the node's -Z from the node's origin;
+// --scale 2 doubles the range and quadruples the intensity (the same light at twice the distance).
+TEST(ImportGltf, PunctualLightsFollowTheirNodes) {
+    TempDir dir;
+    GltfFixture f;
+    const double h = std::sqrt(0.5);  // a quarter turn about x: -Z becomes +Y
+    f.nodes = R"([{"mesh": 0, "children": [1, 2]},
+        {"translation": [1, 2, 3], "rotation": [)" +
+              std::to_string(h) + ", 0, 0, " + std::to_string(h) + R"(], "scale": [5, 5, 5],
+         "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        {"extensions": {"KHR_lights_punctual": {"light": 1}}}])";
+    f.extra = R"(, "extensionsUsed": ["KHR_lights_punctual"], "extensions": {"KHR_lights_punctual": {"lights": [
+        {"type": "spot", "color": [1, 0.5, 0], "intensity": 683, "range": 4,
+         "spot": {"innerConeAngle": 0.25, "outerConeAngle": 0.5}},
+        {"type": "directional", "intensity": 2}]}})";
+    const std::string path = dir.write("l.gltf", f.json());
+    const ImportResult r = importScene(path);
+    ASSERT_EQ(r.scene.lights.size(), 2u);
+    const Light& spot = r.scene.lights[0];
+    EXPECT_EQ(spot.type, Light::Type::Spot);
+    expectNear(spot.position, {1, 2, 3}, kLoose);
+    expectNear(spot.direction, {0, 1, 0}, kLoose);
+    EXPECT_NEAR(spot.color.r, 1, 1e-6);
+    EXPECT_NEAR(spot.color.g, 0.5, 1e-6);
+    EXPECT_EQ(spot.falloff, Light::Falloff::InverseSquare);
+    EXPECT_EQ(spot.range, 4);
+    EXPECT_NEAR(spot.innerConeDegrees, 0.25 * 180 / kPi, 1e-4);
+    EXPECT_NEAR(spot.outerConeDegrees, 0.5 * 180 / kPi, 1e-4);
+    const Light& sun = r.scene.lights[1];
+    EXPECT_EQ(sun.type, Light::Type::Directional);
+    expectNear(sun.direction, {0, 0, -1}, kLoose);
+    EXPECT_EQ(sun.falloff, Light::Falloff::None);
+    EXPECT_NEAR(sun.color.r, 2 / 683.0, 1e-7);
+
+    ImportOptions twice;
+    twice.scale = 2;
+    const ImportResult scaled = importScene(path, twice);
+    EXPECT_EQ(scaled.scene.lights[0].range, 8);
+    EXPECT_NEAR(scaled.scene.lights[0].color.r, 4, 1e-5);
+    EXPECT_NEAR(scaled.scene.lights[1].color.r, 2 / 683.0, 1e-7);  // irradiance: no distance to scale
+}
+
+TEST(ImportGltf, SpotConeOutsideTheSpecificationIsAnError) {
+    TempDir dir;
+    GltfFixture f;
+    f.nodes = R"([{"mesh": 0, "extensions": {"KHR_lights_punctual": {"light": 0}}}])";
+    f.extra = R"(, "extensions": {"KHR_lights_punctual": {"lights": [
+        {"type": "spot", "spot": {"innerConeAngle": 0.5, "outerConeAngle": 0.25}}]}})";
+    const std::string path = dir.write("bad.gltf", f.json());
+    EXPECT_THROW(
+        {
+            try {
+                importScene(path);
+            } catch (const InputError& e) {
+                EXPECT_NE(std::string(e.what()).find("light 0 (spot): the spot cone needs"), std::string::npos)
+                    << e.what();
+                throw;
+            }
+        },
+        InputError);
 }
 
 TEST(ImportGltf, PointsAndLinesAreSkippedAndCounted) {
@@ -417,6 +487,104 @@ TEST(ImportGltf, VertexNormalsTextureCoordinatesAndColoursAreKept) {
     std::size_t coloured = 0;
     for (const Model& c : colors.scene.models) coloured += !c.vertexColors.empty();
     EXPECT_GT(coloured, 0u);
+}
+
+// A 2x2 PNG, red and green in a checkerboard (made with zlib, 73 bytes).
+const char* const kCheckerPng =
+    "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEElEQVR42mP4z8DAAMFAEgAd8AP9Cd2apwAAAABJRU5ErkJggg==";
+
+std::vector<std::uint8_t> checkerPng() {
+    std::size_t bad = 0;
+    return *decodeBase64(kCheckerPng, bad);
+}
+
+// A unit quad in z = 0 with texture coordinates, its material's base colour the image `imageJson`.
+std::string texturedQuadJson(const std::string& buffers, const std::string& imageJson, std::size_t bufferBytes) {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+        "textures": [{"source": 0}], "images": [)" +
+           imageJson + R"(], "buffers": [)" + buffers + R"(],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
+                        {"buffer": 0, "byteOffset": 80, "byteLength": 12}, {"buffer": 0, "byteOffset": 92, "byteLength": )" +
+           std::to_string(bufferBytes - 92) + R"(}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+                      {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+}
+
+// The quad's geometry, then `image`.
+std::vector<std::uint8_t> quadBuffer(const std::vector<std::uint8_t>& image) {
+    const float positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};
+    const std::uint16_t indices[] = {0, 1, 2, 0, 2, 3};
+    std::vector<std::uint8_t> bytes;
+    const auto append = [&](const void* p, std::size_t n) {
+        bytes.insert(bytes.end(), static_cast<const std::uint8_t*>(p), static_cast<const std::uint8_t*>(p) + n);
+    };
+    append(positions, sizeof positions);
+    append(uvs, sizeof uvs);
+    append(indices, sizeof indices);
+    append(image.data(), image.size());
+    return bytes;
+}
+
+// A .glb (glTF 2.0 binary: header, JSON chunk, BIN chunk) of the quad with the PNG in a bufferView.
+std::string glbWithEmbeddedPng() {
+    std::vector<std::uint8_t> bin = quadBuffer(checkerPng());
+    std::string json = texturedQuadJson(R"({"byteLength": )" + std::to_string(bin.size()) + "}",
+                                        R"({"bufferView": 3, "mimeType": "image/png", "name": "checker"})", bin.size());
+    while (json.size() % 4) json += ' ';
+    while (bin.size() % 4) bin.push_back(0);
+    std::string glb;
+    const auto u32 = [&](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) glb += char((v >> (8 * i)) & 0xff);
+    };
+    glb += "glTF";
+    u32(2);
+    u32(std::uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    u32(std::uint32_t(json.size()));
+    u32(0x4E4F534A);  // JSON
+    glb += json;
+    u32(std::uint32_t(bin.size()));
+    u32(0x004E4942);  // BIN
+    glb.append(bin.begin(), bin.end());
+    return glb;
+}
+
+// Images in a .glb's binary chunk and in data: URIs are kept as their encoded bytes
+// (Texture::embedded), under a file name with the format's extension.
+TEST(ImportGltf, EmbeddedImagesAreKeptAsTheirBytes) {
+    TempDir dir;
+    const ImportResult glb = importScene(dir.write("quad.glb", glbWithEmbeddedPng()));
+    ASSERT_EQ(glb.scene.textures.size(), 1u);
+    const Texture& t = glb.scene.textures[0];
+    ASSERT_TRUE(t.embedded);
+    EXPECT_EQ(*t.embedded, checkerPng());
+    EXPECT_EQ(t.file, "checker.png");
+    EXPECT_TRUE(t.path.empty());
+    ASSERT_TRUE(glb.scene.materials.at(glb.scene.instances.at(0).material).colorTexture);
+
+    const std::vector<std::uint8_t> buffer = quadBuffer({});
+    const std::string json = texturedQuadJson(
+        R"({"byteLength": 92, "uri": "data:application/octet-stream;base64,)" + test::base64(buffer) + R"("})",
+        std::string(R"({"uri": "data:image/png;base64,)") + kCheckerPng + R"("})", 92 + 73);
+    const ImportResult dataUri = importScene(dir.write("quad.gltf", json));
+    ASSERT_EQ(dataUri.scene.textures.size(), 1u);
+    ASSERT_TRUE(dataUri.scene.textures[0].embedded);
+    EXPECT_EQ(*dataUri.scene.textures[0].embedded, checkerPng());
+    EXPECT_EQ(dataUri.scene.textures[0].file, "image0.png");
+}
+
+// A bufferView that reaches past its buffer is an error, not a read outside it.
+TEST(ImportGltf, EmbeddedImageOutsideItsBufferIsAnError) {
+    TempDir dir;
+    std::string glb = glbWithEmbeddedPng();
+    const std::string from = R"("byteOffset": 92, "byteLength": 73)";
+    const std::size_t at = glb.find(from);
+    ASSERT_NE(at, std::string::npos);
+    glb.replace(at, from.size(), R"("byteOffset": 92, "byteLength": 99)");
+    EXPECT_THROW(importScene(dir.write("bad.glb", glb)), InputError);
 }
 
 }  // namespace

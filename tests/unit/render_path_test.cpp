@@ -299,3 +299,27 @@ TEST(PathTracer, MetallicRoughnessTextureScalesTheFactors) {
     EXPECT_EQ(viaTexture.pixels(), viaFactors.pixels());
     EXPECT_NE(viaTexture.pixels(), renderNaive(a, settings).pixels()) << "without the lookups the texture is white";
 }
+
+// The light types light the path tracer as they light the Whitted tracer: a directional light of
+// irradiance E at angle theta and an inverse-square point light of intensity I at distance d give
+// a Lambertian plane albedo / pi * E cos(theta) and albedo / pi * I / d^2 (direct light only: the
+// plane sees nothing else, and the sky is black).
+TEST(PathTracer, DirectionalAndInverseSquareLightsMatchTheirFormulas) {
+    const auto planeUnder = [](Light light) {
+        Scene s;
+        s.background = {0, 0, 0};
+        s.camera.origin = {0, 5, -0.01};
+        s.camera.destination = {0, 0, 0};
+        s.camera.fovDegrees = 1;  // the centre pixel sees the point (0, 0, 0)
+        test::addQuad(s, {-100, 0, -100}, {-100, 0, 100}, {100, 0, 100}, {100, 0, -100},
+                      test::addMaterial(s, pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0)));
+        s.lights.push_back(light);
+        s.flatten();
+        return renderNaive(s, pathPicture(3, 4)).at(1, 1).g;
+    };
+    Light sun{.color = {2, 2, 2}, .type = Light::Type::Directional};
+    sun.direction = normalize(Vec3{1, -1, 0});  // 45 degrees off the normal
+    EXPECT_NEAR(planeUnder(sun), 0.5 / kPi * 2 * std::sqrt(0.5), 1e-3);
+    const Light bulb{.position = {0, 2, 0}, .color = {8, 8, 8}, .falloff = Light::Falloff::InverseSquare};
+    EXPECT_NEAR(planeUnder(bulb), 0.5 / kPi * 8 / 4, 1e-3);
+}

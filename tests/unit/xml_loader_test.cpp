@@ -290,6 +290,30 @@ TEST(XmlLoader, BackgroundAndLights) {
     EXPECT_EQ(load("").background, Color(0, 0, 0));  // thesis: black when not given
 }
 
+// rt extension: directional and spot lights, the inverse-square falloff and its range.
+TEST(XmlLoader, LightTypesFalloffAndCone) {
+    const Scene scene = load(R"(<lights><light type="directional" dx="0" dy="-2" dz="0" r="0.5"/>
+        <light type="spot" x="1" dy="-1" dz="0" falloff="inverse_square" range="7" inner_cone="5" outer_cone="20"/>
+        <light type="spot" falloff="inverse_square"/><light/></lights>)");
+    ASSERT_EQ(scene.lights.size(), 4u);
+    const Light &sun = scene.lights[0], &spot = scene.lights[1], &plain = scene.lights[2], &thesis = scene.lights[3];
+    EXPECT_EQ(sun.type, Light::Type::Directional);
+    EXPECT_EQ(sun.direction, Vec3(0, -1, 0));
+    EXPECT_EQ(sun.falloff, Light::Falloff::None);
+    EXPECT_EQ(spot.type, Light::Type::Spot);
+    EXPECT_EQ(spot.position, Vec3(1, 0, 0));
+    EXPECT_EQ(spot.falloff, Light::Falloff::InverseSquare);
+    EXPECT_EQ(spot.range, 7);
+    EXPECT_EQ(spot.innerConeDegrees, 5);
+    EXPECT_EQ(spot.outerConeDegrees, 20);
+    EXPECT_EQ(plain.direction, Vec3(0, 0, -1));  // KHR_lights_punctual's defaults: -Z, cone 0 to 45 degrees
+    EXPECT_EQ(plain.innerConeDegrees, 0);
+    EXPECT_EQ(plain.outerConeDegrees, 45);
+    EXPECT_EQ(plain.range, 0);
+    EXPECT_EQ(thesis.type, Light::Type::Point);  // the thesis's light: no falloff
+    EXPECT_EQ(thesis.falloff, Light::Falloff::None);
+}
+
 TEST(XmlLoader, ModelInstancesShareOneModel) {
     TempDir dir;
     writeRawFile(dir.path("tri.raw"), rawModel({0, 0, 0, 1, 0, 0, 0, 1, 0}));
@@ -443,6 +467,22 @@ const BadScene kBadScenes[] = {
      "s.xml:4: transforms nested deeper than 256"},
     {"DOCTYPE naming a file", "<!DOCTYPE scene [ <!ENTITY x SYSTEM \"/etc/passwd\"> ]>\n<scene>&x;</scene>",
      "s.xml:1: DOCTYPE is not allowed: scenes have no DTD and no entities"},
+    {"unknown light type", sceneWith("<lights>\n<light type=\"area\"/></lights>"),
+     "s.xml:4: unknown type 'area' (point, directional, spot)"},
+    {"directional light with a position", sceneWith("<lights>\n<light type=\"directional\" y=\"1\"/></lights>"),
+     "s.xml:4: a directional light has no 'y'"},
+    {"range without falloff", sceneWith("<lights>\n<light range=\"3\"/></lights>"),
+     "s.xml:4: 'range' needs falloff=\"inverse_square\""},
+    {"unknown falloff", sceneWith("<lights>\n<light falloff=\"linear\"/></lights>"),
+     "s.xml:4: unknown falloff 'linear' (none, inverse_square)"},
+    {"point light with a direction", sceneWith("<lights>\n<light dz=\"1\"/></lights>"),
+     "s.xml:4: a point light has no direction ('dz')"},
+    {"cone of a point light", sceneWith("<lights>\n<light outer_cone=\"10\"/></lights>"),
+     "s.xml:4: 'outer_cone' is for spot lights"},
+    {"zero direction", sceneWith("<lights>\n<light type=\"spot\" dz=\"0\"/></lights>"),
+     "s.xml:4: the light's direction (dx, dy, dz) is zero"},
+    {"inner cone wider than outer", sceneWith("<lights>\n<light type=\"spot\" inner_cone=\"50\"/></lights>"),
+     "s.xml:4: a spot needs 0 <= inner_cone <= outer_cone <= 90 (degrees)"},
     {"wrong root", "<?xml version=\"1.0\"?>\n<scenery/>", "s.xml:2: the root element must be <scene>"},
     {"empty file", "", "s.xml:1: malformed XML: No document element found"},
 };

@@ -1,7 +1,9 @@
 #include "scene/xml_writer.h"
 
 #include <cstring>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include "import/model_file.h"
@@ -39,7 +41,10 @@ const std::string kScene = R"(<scene>
     <model name="balls"/>
     <translate x="5"><model name="balls" material="blue"/></translate>
   </objects>
-  <lights><light x="-1" y="0.1" z="1e-3" r="0.8" g="0.7" b="0.6" size="0.1"/><light/></lights>
+  <lights><light x="-1" y="0.1" z="1e-3" r="0.8" g="0.7" b="0.6" size="0.1"/><light/>
+    <light type="spot" x="1" y="2" z="3" dx="0.1" dy="-1" falloff="inverse_square" range="10" inner_cone="10"
+      outer_cone="30.5" size="0.2"/>
+    <light type="directional" dx="1" dy="-1" r="0.5"/><light falloff="inverse_square" r="3"/></lights>
 </scene>
 )";
 
@@ -97,6 +102,12 @@ void expectSameScene(const Scene& a, const Scene& b) {
         EXPECT_EQ(a.lights[i].position, b.lights[i].position);
         EXPECT_EQ(a.lights[i].color, b.lights[i].color);
         EXPECT_EQ(a.lights[i].size, b.lights[i].size);
+        EXPECT_EQ(a.lights[i].type, b.lights[i].type);
+        EXPECT_LT(length(a.lights[i].direction - b.lights[i].direction), 1e-6);  // unit, renormalised
+        EXPECT_EQ(a.lights[i].falloff, b.lights[i].falloff);
+        EXPECT_EQ(a.lights[i].range, b.lights[i].range);
+        EXPECT_EQ(a.lights[i].innerConeDegrees, b.lights[i].innerConeDegrees);
+        EXPECT_EQ(a.lights[i].outerConeDegrees, b.lights[i].outerConeDegrees);
     }
     expectSamePrimitives(a.looseObjects, b.looseObjects);
     expectSamePrimitives(a.primitives, b.primitives);
@@ -256,6 +267,38 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     EXPECT_EQ(second.models[0].vertexNormals, m.vertexNormals);
     EXPECT_EQ(second.models[0].vertexUvs, m.vertexUvs);
     EXPECT_TRUE(second.models[0].vertexColors.empty());
+}
+
+// An image the scene holds itself (embedded in a .glb) is written as a file into the models'
+// folder and named from the XML; on standard output it goes inline, as models do, and reads
+// back as the same bytes.
+TEST(XmlWriter, EmbeddedImagesBecomeFilesOrInlineData) {
+    TempDir dir;
+    Scene first;
+    const std::vector<std::uint8_t> png{0x89, 'P', 'N', 'G', 1, 2, 3, 0, 255};
+    for (const char* name : {"Duck.png", "duck.png"}) {  // the same name, ignoring case
+        Texture t;
+        t.name = "t";
+        t.file = name;
+        t.embedded = std::make_shared<const std::vector<std::uint8_t>>(png);
+        first.textures.push_back(t);
+    }
+    saveSceneXml(first, dir.path("out/scene.xml"));
+    const Scene second = loadSceneXml(dir.path("out/scene.xml"), readModelFile);
+    ASSERT_EQ(second.textures.size(), 2u);
+    EXPECT_EQ(second.textures[0].file, "scene/Duck.png");
+    EXPECT_EQ(second.textures[1].file, "scene/duck_2.png");
+    for (const Texture& t : second.textures) {
+        EXPECT_FALSE(t.embedded);
+        std::ifstream in(t.path, std::ios::binary);
+        EXPECT_EQ(std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {}), png) << t.path;
+    }
+    const Scene piped = loadSceneXml(dir.write("piped.xml", savedToStdout(first)), readModelFile);
+    ASSERT_EQ(piped.textures.size(), 2u);
+    ASSERT_TRUE(piped.textures[1].embedded);
+    EXPECT_EQ(*piped.textures[1].embedded, png);
+    EXPECT_EQ(piped.textures[1].file, "duck.png");
+    EXPECT_TRUE(piped.textures[1].path.empty());
 }
 
 TEST(XmlLoader, UnknownTexturesAndTypesAreErrors) {
