@@ -1,5 +1,6 @@
 #include "render/render_settings.h"
 
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -25,6 +26,14 @@ void validate(const RenderSettings& s) {
         throw InputError("samples per pixel must be 1-" + std::to_string(kMaxSamples));
     if (s.distributedSamples < 1 || s.distributedSamples > kMaxSamples)
         throw InputError("distributed ray tracing samples must be 1-" + std::to_string(kMaxSamples));
+    if (s.adaptiveGrid != 0 &&
+        (s.adaptiveGrid < 2 || s.adaptiveGrid > kMaxAdaptiveGrid || (s.adaptiveGrid & (s.adaptiveGrid - 1)) != 0))
+        throw InputError("the adaptive grid must be a power of two from 2 to " + std::to_string(kMaxAdaptiveGrid) +
+                         ", got " + std::to_string(s.adaptiveGrid));
+    if (!(s.adaptiveThreshold >= 0) || !std::isfinite(s.adaptiveThreshold))
+        throw InputError("the adaptive threshold must be a finite number of at least 0");
+    if (s.adaptiveGrid && s.aovs)
+        throw InputError("--adaptive interpolates colour only: AOVs (--aov) need every pixel traced");
     if (s.threads < 0) throw InputError("the thread count must not be negative");
     if (s.region && !s.region->inside(s.width, s.height)) {
         const PixelWindow& r = *s.region;

@@ -11,7 +11,8 @@ namespace rt {
 // The limits validate() enforces; the tools' options check the same numbers.
 inline constexpr int kMaxImageSide = 65536;  // width and height: larger than any real image
 inline constexpr int kMaxReflectionDepth = 10;
-inline constexpr int kMaxSamples = 1 << 20;  // -S and -r
+inline constexpr int kMaxSamples = 1 << 20;   // -S and -r
+inline constexpr int kMaxAdaptiveGrid = 256;  // --adaptive: the coarsest corner spacing
 
 struct RenderSettings {
     int width = 800;                    // -x
@@ -29,6 +30,11 @@ struct RenderSettings {
     int threads = 0;               // --threads; 0 lets OpenMP use every core
     std::uint32_t seed = 0;        // --seed: another seed gives independent noise, as deterministic
     bool aovs = false;             // --aov: fill each pixel's PixelAovs (render/aov.h) too
+    // --adaptive (thesis 2.3, render/adaptive.h): the spacing of the grid of traced corners, a
+    // power of two; 0 traces every pixel. A block whose corners differ by less than
+    // adaptiveThreshold (linear colour and alpha) and see the same object is interpolated.
+    int adaptiveGrid = 0;
+    float adaptiveThreshold = 0.02f;  // --adaptive-threshold
 
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
 };
