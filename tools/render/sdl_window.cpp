@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
+#include <stdexcept>
 #include <vector>
 
 namespace rt::tool::render {
@@ -73,8 +74,8 @@ struct SdlWindow::Impl {
         rgb.reserve(std::size_t(b.width()) * std::size_t(b.height()) * 3);
         for (int y = b.y0; y < b.y1; ++y)
             for (int x = b.x0; x < b.x1; ++x) {
-                const Color& c = published[std::size_t(y - window.y0) * std::size_t(window.width()) +
-                                           std::size_t(x - window.x0)];
+                const Color& c =
+                    published[std::size_t(y - window.y0) * std::size_t(window.width()) + std::size_t(x - window.x0)];
                 rgb.insert(rgb.end(), {c.r, c.g, c.b});
             }
         return rgb;
@@ -93,9 +94,9 @@ struct SdlWindow::Impl {
         SDL_Surface* surface =
             SDL_CreateRGBSurfaceWithFormat(0, window.width(), window.height(), 24, SDL_PIXELFORMAT_RGB24);
         if (!surface) throw std::runtime_error(sdlError("cannot read the window back"));
-        const bool ok = SDL_RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_RGB24, surface->pixels,
-                                             surface->pitch) == 0 &&
-                        SDL_SaveBMP(surface, path) == 0;
+        const bool ok =
+            SDL_RenderReadPixels(renderer, nullptr, SDL_PIXELFORMAT_RGB24, surface->pixels, surface->pitch) == 0 &&
+            SDL_SaveBMP(surface, path) == 0;
         SDL_FreeSurface(surface);
         if (!ok) throw std::runtime_error(sdlError(std::string("cannot write ") + path));
     }
@@ -161,10 +162,10 @@ void SdlWindow::showUntilClosed() {
     impl_->showPending();  // the last blocks
     if (const char* path = std::getenv("RT_TEST_SDL_DUMP")) return impl_->dump(path);
     SDL_Event e;
-    while (SDL_WaitEvent(&e))
+    while (SDL_WaitEvent(&e)) {
         if (closes(e)) return;
-        else if (e.type == SDL_WINDOWEVENT)
-            impl_->showPending();  // exposed again: draw it again
+        if (e.type == SDL_WINDOWEVENT) impl_->showPending();  // exposed again: draw it again
+    }
 }
 
 }  // namespace rt::tool::render
@@ -195,10 +196,8 @@ namespace rt::tool::render {
 int showWhileRendering(SdlWindow& window, const std::function<void(const RenderWatch&)>& work) {
     std::atomic<bool> stop{false}, finished{false};
     std::exception_ptr error;
-    const RenderWatch watch{[&window](const Framebuffer& image, const PixelWindow& block) {
-                                window.publish(image, block);
-                            },
-                            &stop};
+    const RenderWatch watch{
+        [&window](const Framebuffer& image, const PixelWindow& block) { window.publish(image, block); }, &stop};
     std::thread worker([&] {
         try {
             work(watch);
