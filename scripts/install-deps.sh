@@ -14,6 +14,7 @@ packages=(
     openimageio-tools opencolorio-tools
     clang-format-14  # the `format` test: scripts/check-format.sh against .clang-format
     python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
+    libsdl2-dev xvfb  # rt-render -o sdl; tests/cli/render_sdl.sh opens its window in Xvfb
     slurm-wlm munge  # tests/cli/farm_slurm.sh starts a one-node Slurm cluster (as root) for rt-farm
 )
 if [ "${1:-}" = --checks ] || [ "${CI:-}" = true ]; then

@@ -152,6 +152,8 @@ void writePictureJson(JsonWriter& json, const RenderSettings& picture) {
     json.member("softShadows", picture.softShadows);
     json.member("glossyReflections", picture.glossyReflections);
     json.member("distributedSamples", picture.distributedSamples);
+    json.member("adaptiveGrid", picture.adaptiveGrid);  // 0: every pixel traced
+    json.member("adaptiveThreshold", picture.adaptiveThreshold);
     json.endObject();
 }
 

@@ -12,8 +12,9 @@ namespace rt {
 // The limits validate() enforces; the tools' options check the same numbers.
 inline constexpr int kMaxImageSide = 65536;  // width and height: larger than any real image
 inline constexpr int kMaxReflectionDepth = 10;
-inline constexpr int kMaxSamples = 1 << 20;  // -S and -r
-inline constexpr int kMaxBounces = 1000;     // --max-bounces
+inline constexpr int kMaxSamples = 1 << 20;   // -S and -r
+inline constexpr int kMaxBounces = 1000;      // --max-bounces
+inline constexpr int kMaxAdaptiveGrid = 256;  // --adaptive: the coarsest corner spacing
 
 // --integrator: the thesis's Whitted ray tracer (render/tracer.h) or the path tracer
 // (render/path_tracer.h, docs/path-tracing.md).
@@ -40,6 +41,11 @@ struct RenderSettings {
     Integrator integrator = Integrator::Whitted;
     int maxBounces = 8;       // --max-bounces: the path tracer's surface interactions after the camera ray
     float clampRadiance = 0;  // --clamp: the path tracer's indirect samples capped at this value; 0 is off
+    // --adaptive (thesis 2.3, render/adaptive.h): the spacing of the grid of traced corners, a
+    // power of two; 0 traces every pixel. A block whose corners differ by less than
+    // adaptiveThreshold (linear colour and alpha) and see the same object is interpolated.
+    int adaptiveGrid = 0;
+    float adaptiveThreshold = 0.02f;  // --adaptive-threshold
 
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
 };

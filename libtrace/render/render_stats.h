@@ -36,6 +36,7 @@ struct RenderCounters {
     RayCounters shadow;      // towards each light in front of a hit (a bundle for a soft shadow)
     RayCounters reflection;  // mirror and glossy rays, at any depth
     NonFiniteSamples nonFinite;
+    std::uint64_t interpolatedPixels = 0;  // --adaptive: pixels filled in without a camera ray of their own
 
     RayCounters total() const {
         RayCounters t = camera;
@@ -49,6 +50,7 @@ struct RenderCounters {
         shadow += o.shadow;
         reflection += o.reflection;
         nonFinite += o.nonFinite;
+        interpolatedPixels += o.interpolatedPixels;
         return *this;
     }
 };

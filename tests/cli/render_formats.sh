@@ -32,7 +32,7 @@ for name in a.webp a.pfm; do
     fi
 done
 expect_exit 2 "$RT_RENDER" "$scene" -q -o bmp -f "$WORK/a.bmp"
-expect_one_error rt-render "--output: bmp not in {null,png,exr,tga,text,jpeg,tiff,hdr,pfm,webp}"
+expect_one_error rt-render "--output: bmp not in {null,png,exr,tga,text,jpeg,tiff,hdr,pfm,webp,sdl}"
 expect_exit 2 "$RT_RENDER" "$scene" -q --alpha on -f "$WORK/a.jpg"
 expect_one_error rt-render "--alpha on: jpeg output has no alpha channel"
 echo "render_formats: ok"

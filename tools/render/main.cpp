@@ -7,6 +7,7 @@
 #include "picture_options.h"
 #include "progress.h"
 #include "render_command.h"
+#include "sdl_window.h"
 #include "tool.h"
 
 namespace {
@@ -16,10 +17,26 @@ using rt::tool::addNamedOption;
 using rt::tool::numberIn;
 using rt::tool::render::RenderOptions;
 
+// The outputs -o takes: the image formats and the window.
+std::vector<std::string> outputNames() {
+    std::vector<std::string> names = rt::imageFormatNames();
+    names.push_back("sdl");
+    return names;
+}
+
+// The version line and, as the thesis's -v did, the outputs compiled in.
+std::string versionText() {
+    std::string outputs;
+    for (const std::string& name : outputNames())
+        if (name != "sdl" || rt::tool::render::SdlWindow::compiledIn()) outputs += " " + name;
+    return rt::tool::versionLine("rt-render") + "\noutputs:" + outputs;
+}
+
 void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Rendering options";
-    app.add_option("-o,--output", o.outputType, "Output type (default: -f's extension; neither -o nor -f: null)")
-        ->check(CLI::IsMember(rt::imageFormatNames()))
+    app.add_option("-o,--output", o.outputType,
+                   "Output type (default: -f's extension; neither -o nor -f: null); sdl: a window, beside any -f")
+        ->check(CLI::IsMember(outputNames()))
         ->group(group);
     app.add_option("-f,--file", o.outputPaths,
                    "Output file; - for standard output; several -f write each from one render")
@@ -81,6 +98,22 @@ void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
                    "Cap indirect samples at this value, trading bias for fewer fireflies (default 0: off)")
         ->check(CLI::NonNegativeNumber)
         ->group(group);
+}
+
+// Adaptive subsampling (thesis 2.3): only rt-render, whose pictures are all the colour it interpolates.
+void addAdaptiveOptions(CLI::App& app, rt::RenderSettings& s) {
+    const char* quality = "Image quality options";
+    // A flag with a value (--adaptive=4): a separate value would be taken for the scene.
+    app.add_flag("--adaptive{8}", s.adaptiveGrid,
+                 "Adaptive subsampling (--adaptive or --adaptive=GRID, default 8): trace the corners of GRID x GRID "
+                 "pixel cells, interpolate where they agree, split the others")
+        ->check(CLI::IsMember({2, 4, 8, 16, 32, 64, 128, 256}))
+        ->group(quality);
+    app.add_option("--adaptive-threshold", s.adaptiveThreshold,
+                   "Largest difference of linear colour (and alpha) between corners that --adaptive interpolates")
+        ->check(CLI::Range(0.0, 1e30))
+        ->capture_default_str()
+        ->group(quality);
 }
 
 void addCameraOptions(CLI::App& app, RenderOptions& o) {
@@ -158,13 +191,14 @@ void addOtherOptions(CLI::App& app, RenderOptions& o) {
 
 int main(int argc, char** argv) {
     CLI::App app{"Renders a scene by ray tracing (thesis appendix B)."};
-    app.set_version_flag("-v,--version", rt::tool::versionLine("rt-render"));
+    app.set_version_flag("-v,--version", versionText());
     RenderOptions options;
     app.option_defaults()->always_capture_default();  // so that --stats-json records every default
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")
         ->required();
     rt::tool::addPictureOptions(app, options.render);
     addRenderingOptions(app, options);
+    addAdaptiveOptions(app, options.render);
     addCameraOptions(app, options);
     addPathTracingOptions(app, options);
     rt::tool::addAccelOptions(app, options.accel);

@@ -20,6 +20,7 @@
 #include "render/memory_estimate.h"
 #include "render/renderer.h"
 #include "render/tiles.h"
+#include "sdl_window.h"
 #include "stats_report.h"
 #include "version.h"
 
@@ -211,7 +212,8 @@ std::unique_ptr<Accelerator> buildAnnounced(const Scene& scene, const AccelSetti
 // The bar's line ends (its destructor) before anything else is printed. A signal during the
 // render says how far it got (noteWorkInProgress), even with -q: a farm's log then shows it.
 Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-                                  ProgressMode mode, RenderStats& stats, const ImageTextures& images) {
+                                  ProgressMode mode, RenderStats& stats, const ImageTextures& images,
+                                  const RenderWatch& watch) {
     Progress progress(mode);
     const PixelWindow w = settings.window();
     noteWorkInProgress("rt-render", "samples", 0,
@@ -222,7 +224,7 @@ Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, 
             progress.update(done, total);
             noteWorkInProgress("rt-render", "samples", done, total);
         },
-        &images);
+        &images, watch);
     noteWorkInProgress("rt-render", "samples", 0, 0);  // rendered: a signal now interrupts the writing
     return image;
 }
@@ -238,11 +240,12 @@ std::string outputNote(const RenderOptions& o, const ImageOutputSettings& output
 // Renders one picture (a turntable's frame `frame`) once and writes every output of it.
 void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& accel, const TreeReport& tree,
                  const ImageTextures& images, const std::vector<ImageOutputSettings>& outputs, int frame,
-                 ProgressMode progress, RenderStats& stats) {
+                 ProgressMode progress, RenderStats& stats, const RenderWatch& watch) {
     std::vector<ImageOutputSettings> frameOutputs = outputs;
     for (ImageOutputSettings& out : frameOutputs) out.path = framePath(out.path, frame);
     if (!o.preprocessOnly) {
-        const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats, images);
+        const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats, images, watch);
+        if (watch.stop && *watch.stop) return;  // the window was closed: nothing is written
         const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
                                  stats.renderSeconds};
         for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
@@ -261,16 +264,27 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
     }
 }
 
+// -o sdl opens a window beside the files of -f (whose extensions then give their types); at once,
+// before the scene loads, so that a missing display is found first.
+std::optional<SdlWindow> openWindow(RenderOptions& o) {
+    if (o.outputType != "sdl") return std::nullopt;
+    o.outputType.reset();
+    if (o.orbit > 0) throw InputError("-o sdl shows one picture: not with --orbit");
+    if (o.preprocessOnly) return std::nullopt;
+    return std::optional<SdlWindow>(std::in_place, o.render.window(), o.color, "rt-render " + o.scenePath);
+}
+
 }  // namespace
 
 int runRender(RenderOptions o) {
     if (o.region) o.render.region = parseRegion(*o.region);
     if (o.tile) o.render.region = parseTile(o.tiles.value_or(""), *o.tile, o.render.width, o.render.height);
-    validate(o.render);
     const FrameRange frames = parseFrames(o.frames, o.orbit);
+    std::optional<SdlWindow> window = openWindow(o);
     const std::vector<ImageOutputSettings> outputs = outputSettings(o);
     o.render.aovs =
         std::any_of(outputs.begin(), outputs.end(), [](const ImageOutputSettings& s) { return !s.aovs.empty(); });
+    validate(o.render);  // with the AOVs the outputs ask for
     const ProgressMode progress = progressMode(o.progress, o.quiet);
     if (outputsComplete(o, outputs, frames, progress)) return 0;
     prepareOutputs(o, outputs, frames.first);
@@ -295,13 +309,17 @@ int runRender(RenderOptions o) {
     stats.lights = scene.lights.size();
 
     const Camera camera = scene.camera;
-    for (int frame = frames.first; frame <= frames.last; ++frame) {
-        if (o.orbit > 0) {
-            scene.camera = orbited(camera, Real(360) * Real(frame) / Real(o.orbit));
-            announce(progress, "frame " + std::to_string(frame) + " of 0.." + std::to_string(o.orbit - 1));
+    const auto renderFrames = [&](const RenderWatch& watch) {
+        for (int frame = frames.first; frame <= frames.last; ++frame) {
+            if (o.orbit > 0) {
+                scene.camera = orbited(camera, Real(360) * Real(frame) / Real(o.orbit));
+                announce(progress, "frame " + std::to_string(frame) + " of 0.." + std::to_string(o.orbit - 1));
+            }
+            renderFrame(o, scene, *accel, tree, images, outputs, frame, progress, stats, watch);
         }
-        renderFrame(o, scene, *accel, tree, images, outputs, frame, progress, stats);
-    }
+    };
+    if (window) return showWhileRendering(*window, renderFrames);
+    renderFrames({});
     return 0;
 }
 

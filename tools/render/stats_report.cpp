@@ -49,6 +49,20 @@ void writeRunJson(JsonWriter& json, const RunRecord& run) {
         json.null();
 }
 
+// The camera rays of a render that traces every pixel of the window -S times.
+std::uint64_t fullRenderCameraRays(const RenderSettings& settings) {
+    const PixelWindow w = settings.window();
+    return std::uint64_t(w.width()) * std::uint64_t(w.height()) * std::uint64_t(settings.pixelSamples);
+}
+
+// What --adaptive saved: camera rays against a render that traces every pixel.
+std::string adaptiveSummary(const RenderSettings& settings, const RenderCounters& c) {
+    const double full = double(fullRenderCameraRays(settings));
+    return format("adaptive %d: %llu pixels interpolated, %.1f %% of a full render's %.0f camera rays saved\n",
+                  settings.adaptiveGrid, static_cast<unsigned long long>(c.interpolatedPixels),
+                  100.0 * (full - double(c.camera.rays)) / full, full);
+}
+
 }  // namespace
 
 std::string nonFiniteWarning(const RenderStats& s) {
@@ -85,6 +99,8 @@ void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary&
     json.member("raysPerSecond", s.raysPerSecond());
     json.member("peakMemoryBytes", peakMemoryBytes());
     json.member("nonFiniteSamples", nonFinite.count);
+    json.member("interpolatedPixels", s.counters.interpolatedPixels);  // --adaptive
+    json.member("fullRenderCameraRays", fullRenderCameraRays(settings));
     json.key("firstNonFinitePixel");  // [x, y], or null when every sample was finite
     if (nonFinite.count) {
         json.beginArray();
@@ -109,6 +125,7 @@ std::string statsSummary(const RenderSettings& settings, const AccelStats& accel
                    static_cast<unsigned long long>(c.camera.rays), static_cast<unsigned long long>(c.shadow.rays),
                    static_cast<unsigned long long>(c.reflection.rays));
     text += format("%.2f M rays/s, %.2f intersection tests per ray\n", s.raysPerSecond() / 1e6, s.testsPerRay());
+    if (settings.adaptiveGrid) text += adaptiveSummary(settings, s.counters);
     return text;
 }
 
