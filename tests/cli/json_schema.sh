@@ -43,7 +43,7 @@ grep -q '"firstNonFinitePixel": \[' "$WORK/render_overflow.json" || fail "the ov
 # and with --orbit one record per frame, which says its frame.
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" -S 2 --seed 7 --orbit 2 -f "$WORK/o_#.png" -f "$WORK/o_#.exr" \
     --stats-json "$WORK/render_orbit_#.json"
-version=$("$RT_RENDER" --version | awk '{print $2}')
+version=$("$RT_RENDER" --version | awk 'NR == 1 {print $2}')
 for frame in 0 1; do
     python3 - "$WORK/render_orbit_$frame.json" "$frame" "$version" <<'PY' || fail "frame $frame's record: $(cat "$WORK/render_orbit_$frame.json")"
 import json, sys
