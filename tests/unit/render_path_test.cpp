@@ -317,9 +317,14 @@ TEST(PathTracer, DirectionalAndInverseSquareLightsMatchTheirFormulas) {
         s.flatten();
         return renderNaive(s, pathPicture(3, 4)).at(1, 1).g;
     };
-    Light sun{.color = {2, 2, 2}, .type = Light::Type::Directional};
+    Light sun;
+    sun.type = Light::Type::Directional;
+    sun.color = {2, 2, 2};
     sun.direction = normalize(Vec3{1, -1, 0});  // 45 degrees off the normal
     EXPECT_NEAR(planeUnder(sun), 0.5 / kPi * 2 * std::sqrt(0.5), 1e-3);
-    const Light bulb{.position = {0, 2, 0}, .color = {8, 8, 8}, .falloff = Light::Falloff::InverseSquare};
+    Light bulb;
+    bulb.position = {0, 2, 0};
+    bulb.color = {8, 8, 8};
+    bulb.falloff = Light::Falloff::InverseSquare;
     EXPECT_NEAR(planeUnder(bulb), 0.5 / kPi * 8 / 4, 1e-3);
 }
