@@ -148,10 +148,10 @@ TEST(Cutout, CameraRaysSeeThroughMaskedTexels) {
     accel->setHitFilter(filter.get());
     const Vec3 above{0, 0, 10};
     int compared = 0, agree = 0;
-    for (Real u = 0.01; u < 1; u += 0.02)
-        for (Real v = 0.01; v < 1; v += 0.02) {
+    for (Real u = Real(0.01); u < 1; u += Real(0.02))
+        for (Real v = Real(0.01); v < 1; v += Real(0.02)) {
             if (!clearOfEdges(u, v)) continue;
-            const Vec3 target{kQuadX + u, v - 0.5, kQuadZ};
+            const Vec3 target{kQuadX + u, v - Real(0.5), kQuadZ};
             const Ray ray{above, normalize(target - above)};
             Hit hit;
             RayCounters counters;
