@@ -311,7 +311,8 @@ TEST(PathTracer, DirectionalAndInverseSquareLightsMatchTheirFormulas) {
         s.camera.origin = {0, 5, -0.01};
         s.camera.destination = {0, 0, 0};
         s.camera.fovDegrees = 1;  // the centre pixel sees the point (0, 0, 0)
-        test::addQuad(s, {-100, 0, -100}, {-100, 0, 100}, {100, 0, 100}, {100, 0, -100},
+        // small, so that the ray offset (relative to the scene's size) leaves the distance to the bulb as it is
+        test::addQuad(s, {-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3},
                       test::addMaterial(s, pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0)));
         s.lights.push_back(light);
         s.flatten();
