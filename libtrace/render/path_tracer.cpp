@@ -23,23 +23,10 @@ Real powerHeuristic(Real pdf, Real otherPdf) {
 
 float maxComponent(const Color& c) { return std::max({c.r, c.g, c.b}); }
 
-// The shading frame: tangent, bitangent, normal (z of the BSDF's local frame).
-struct Frame {
-    Vec3 axes[3];
-
-    explicit Frame(const Vec3& n) {
-        orthonormalBasis(n, axes[0], axes[1]);
-        axes[2] = n;
-    }
-    Vec3 toLocal(const Vec3& v) const { return {dot(v, axes[0]), dot(v, axes[1]), dot(v, axes[2])}; }
-    Vec3 toWorld(const Vec3& v) const { return axes[0] * v.x + axes[1] * v.y + axes[2] * v.z; }
-};
-
 // The frame of the shading normal, unless the viewer is below it (an interpolated normal can
 // face away from a grazing ray): then the geometric normal's.
-Frame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
-    const Frame shading(s.shadingNormal);
-    return dot(toViewer, s.shadingNormal) > 0 ? shading : Frame(s.geometricNormal);
+ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
+    return ShadingFrame(dot(toViewer, s.shadingNormal) > 0 ? s.shadingNormal : s.geometricNormal);
 }
 
 }  // namespace
@@ -108,10 +95,10 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         if (bounce == settings_.maxBounces) break;
 
         const Vec3 toViewer = -ray.direction;
-        const Frame frame = shadingFrame(s, toViewer);
+        const ShadingFrame frame = shadingFrame(s, toViewer);
         const Vec3 wo = frame.toLocal(toViewer);
         const PbrBsdf bsdf(pbrParametersAt(m, s));
-        result += clampIndirect(throughput * directLight(s, bsdf, frame.axes, wo, sampler, counters), bounce + 1);
+        result += clampIndirect(throughput * directLight(s, bsdf, frame, wo, sampler, counters), bounce + 1);
 
         const Real lobe = sampler.next1D();
         const auto [u1, u2] = sampler.next2D();
@@ -133,7 +120,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
     return result;
 }
 
-Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const Vec3 (&axes)[3], const Vec3& wo,
+Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
                               SobolSampler& sampler, RenderCounters& counters) const {
     const Real pick = sampler.next1D();
     const auto [u1, u2] = sampler.next2D();
@@ -141,7 +128,7 @@ Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const 
     const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
     const std::optional<LightSample> light = lights_.sample(origin, pick, u1, u2);
     if (!light || dot(light->direction, s.geometricNormal) <= 0) return {};
-    const Vec3 wi{dot(light->direction, axes[0]), dot(light->direction, axes[1]), dot(light->direction, axes[2])};
+    const Vec3 wi = frame.toLocal(light->direction);
     const Color f = bsdf.evaluate(wo, wi);
     if (f == Color{}) return {};
     const Color arriving = lightRadiance(*light, origin);

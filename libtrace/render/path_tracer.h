@@ -27,6 +27,18 @@ namespace rt {
 // roughness from the mirror's spread or the Phong exponent, no specular layer when k_s = 0.
 PbrParameters pbrParametersOf(const Material& m, const Color& color);
 
+// The BSDF's local frame at a surface point: tangent, bitangent, normal (its z).
+struct ShadingFrame {
+    Vec3 axes[3];
+
+    explicit ShadingFrame(const Vec3& n) {
+        orthonormalBasis(n, axes[0], axes[1]);
+        axes[2] = n;
+    }
+    Vec3 toLocal(const Vec3& v) const { return {dot(v, axes[0]), dot(v, axes[1]), dot(v, axes[2])}; }
+    Vec3 toWorld(const Vec3& v) const { return axes[0] * v.x + axes[1] * v.y + axes[2] * v.z; }
+};
+
 class PathTracer {
 public:
     // As Tracer: the scene flattened, `accel` built over it; all three outlive the tracer.
@@ -42,7 +54,7 @@ public:
 
 private:
     // Light from one next-event sample at s, weighted against the BSDF's density.
-    Color directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const Vec3 (&frame)[3], const Vec3& wo,
+    Color directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
                       SobolSampler& sampler, RenderCounters& counters) const;
     // The BRDF's parameters at s: the material's, its metallic-roughness texture applied.
     PbrParameters pbrParametersAt(const Material& m, const SurfacePoint& s) const;

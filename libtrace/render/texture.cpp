@@ -28,20 +28,28 @@ std::array<float, 2> UvTransform::operator()(Real u, Real v) const {
 
 ImageTextures::ImageTextures(const Scene& scene) : transforms_(scene.textures.begin(), scene.textures.end()) {}
 
-Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images) {
+namespace {
+
+// Texture `index` at the surface point: a checker evaluated here, an image through `read`
+// (ImageTextures::lookup or ::data) at the transformed coordinates; white without lookups.
+template <class Read>
+Color textureAt(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images,
+                Read read) {
     const Texture& t = scene.textures[index];
     if (t.kind == Texture::Kind::Checker) return checker(t, s);
     if (!images) return {1, 1, 1};
     const std::array<float, 2> uv = images->uvTransform(index)(s.u, s.v);
-    return images->lookup(index, uv[0], uv[1]);
+    return (images->*read)(index, uv[0], uv[1]);
+}
+
+}  // namespace
+
+Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images) {
+    return textureAt(scene, index, s, images, &ImageTextures::lookup);
 }
 
 Color textureData(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images) {
-    const Texture& t = scene.textures[index];
-    if (t.kind == Texture::Kind::Checker) return checker(t, s);
-    if (!images) return {1, 1, 1};
-    const std::array<float, 2> uv = images->uvTransform(index)(s.u, s.v);
-    return images->data(index, uv[0], uv[1]);
+    return textureAt(scene, index, s, images, &ImageTextures::data);
 }
 
 Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
