@@ -4,7 +4,9 @@
 #include <OpenImageIO/imagecache.h>
 #include <OpenImageIO/texture.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace rt {
 
@@ -20,6 +22,21 @@ OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
             break;
     }
     return OIIO::TextureOpt::WrapPeriodic;
+}
+
+// The most bytes an untiled image (PNG, JPEG, a scanline TIFF or EXR) may decode to. OpenImageIO
+// reads such a file whole, outside the cache's limit, and a 2 KB PNG can declare 30000 x 30000
+// pixels: 2.7 GB, whose std::bad_alloc in a render thread ended the process. Tiled files are
+// read a tile at a time within the cache, whatever their size.
+constexpr double kMaxUntiledTextureBytes = double(std::uint64_t(1) << 30);
+
+// `file`'s own layout: the cache's spec of an untiled file calls the whole image one tile.
+bool tooLargeToDecode(OIIO::ImageCache& cache, OIIO::ustring file) {
+    OIIO::ImageSpec spec;
+    if (!cache.get_imagespec(file, spec, 0, 0, true)) return false;
+    const double bytes =
+        double(spec.width) * spec.height * std::max(spec.depth, 1) * spec.nchannels * spec.format.size();
+    return spec.tile_width == 0 && bytes > kMaxUntiledTextureBytes;
 }
 
 // The sRGB transfer function, inverted (IEC 61966-2-1).
@@ -69,6 +86,12 @@ struct TextureFiles::Impl {
         if (!spec) {
             warnings.push_back("texture '" + t.name + "': cannot read " + (t.embedded ? "embedded " + t.file : t.path) +
                                " (" + system->geterror() + "): white is used");
+            return e;
+        }
+        if (tooLargeToDecode(*system->imagecache(), file)) {
+            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + " is " +
+                               std::to_string(spec->width) + " x " + std::to_string(spec->height) +
+                               " pixels, more than the 1 GiB an untiled image may take: white is used");
             return e;
         }
         e.file = file;
