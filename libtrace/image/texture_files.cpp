@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <string>
 
 namespace rt {
 
@@ -30,13 +32,20 @@ OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
 // read a tile at a time within the cache, whatever their size.
 constexpr double kMaxUntiledTextureBytes = double(std::uint64_t(1) << 30);
 
-// `file`'s own layout: the cache's spec of an untiled file calls the whole image one tile.
-bool tooLargeToDecode(OIIO::ImageCache& cache, OIIO::ustring file) {
+// Why `file` must not be looked up, if it must not: an image of no pixels (a TGA header saying
+// 4 x 0 opens, and OpenImageIO's bilinear lookup then divides by zero: SIGFPE), or an untiled one
+// beyond kMaxUntiledTextureBytes. From the file's own spec: the cache's calls a whole untiled
+// image one tile.
+std::optional<std::string> refusal(OIIO::ImageCache& cache, OIIO::ustring file) {
     OIIO::ImageSpec spec;
-    if (!cache.get_imagespec(file, spec, 0, 0, true)) return false;
-    const double bytes =
-        double(spec.width) * spec.height * std::max(spec.depth, 1) * spec.nchannels * spec.format.size();
-    return spec.tile_width == 0 && bytes > kMaxUntiledTextureBytes;
+    if (!cache.get_imagespec(file, spec, 0, 0, true)) return std::nullopt;
+    const std::string size = std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels";
+    if (spec.width < 1 || spec.height < 1 || spec.depth < 1 || spec.nchannels < 1)
+        return "is " + size + " of " + std::to_string(spec.nchannels) + " channels: no pixels";
+    const double bytes = double(spec.width) * spec.height * spec.depth * spec.nchannels * spec.format.size();
+    if (spec.tile_width == 0 && bytes > kMaxUntiledTextureBytes)
+        return "is " + size + ", more than the 1 GiB an untiled image may take";
+    return std::nullopt;
 }
 
 // The sRGB transfer function, inverted (IEC 61966-2-1).
@@ -88,10 +97,9 @@ struct TextureFiles::Impl {
                                " (" + system->geterror() + "): white is used");
             return e;
         }
-        if (tooLargeToDecode(*system->imagecache(), file)) {
-            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + " is " +
-                               std::to_string(spec->width) + " x " + std::to_string(spec->height) +
-                               " pixels, more than the 1 GiB an untiled image may take: white is used");
+        if (const std::optional<std::string> why = refusal(*system->imagecache(), file)) {
+            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + " " +
+                               *why + ": white is used");
             return e;
         }
         e.file = file;
