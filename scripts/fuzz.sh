@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target with ASan and UBSan: scripts/fuzz.sh TARGET [MINUTES].
-# TARGET: xml_scene, raw_model, camera_3ds, obj_import or gltf_import (fuzz/*_fuzz.cpp).
+# TARGET: xml_scene, raw_model, camera_3ds, obj_import, gltf_import, image_texture, render_options
+# or assimp_reply (fuzz/*_fuzz.cpp).
 # New inputs go to build/fuzz/corpus/TARGET; the run also starts from the checked-in seeds of
 # fuzz/corpus/TARGET and the matching shared test models. A finding is written as
 # build/fuzz/findings/TARGET/crash-* (or leak-, timeout-, oom-): fix it and add the input to
@@ -22,6 +23,9 @@ case $target in
     # The small broken files only, for OBJ and glTF: the shared models of up to 4 MB take seconds
     # each under ASan (OBJ ran at 18 inputs a second from them).
     gltf_import) seeds=("$shared/bad/gltf-tinygltf-fuzz" "$shared/bad/glb-validator" "$shared/bad/gltf-json-validator") ;;
+    # The others start from fuzz/corpus/TARGET alone: an image texture's first byte picks its
+    # extension, and the option lists and assbin replies have no shared files.
+    *) seeds=() ;;
 esac
 existing=()
 for dir in "${seeds[@]}"; do [ -d "$dir" ] && existing+=("$dir"); done

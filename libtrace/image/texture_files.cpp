@@ -4,7 +4,11 @@
 #include <OpenImageIO/imagecache.h>
 #include <OpenImageIO/texture.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
 
 namespace rt {
 
@@ -20,6 +24,28 @@ OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
             break;
     }
     return OIIO::TextureOpt::WrapPeriodic;
+}
+
+// The most bytes an untiled image (PNG, JPEG, a scanline TIFF or EXR) may decode to. OpenImageIO
+// reads such a file whole, outside the cache's limit, and a 2 KB PNG can declare 30000 x 30000
+// pixels: 2.7 GB, whose std::bad_alloc in a render thread ended the process. Tiled files are
+// read a tile at a time within the cache, whatever their size.
+constexpr double kMaxUntiledTextureBytes = double(std::uint64_t(1) << 30);
+
+// Why `file` must not be looked up, if it must not: an image of no pixels (a TGA header saying
+// 4 x 0 opens, and OpenImageIO's bilinear lookup then divides by zero: SIGFPE), or an untiled one
+// beyond kMaxUntiledTextureBytes. From the file's own spec: the cache's calls a whole untiled
+// image one tile.
+std::optional<std::string> refusal(OIIO::ImageCache& cache, OIIO::ustring file) {
+    OIIO::ImageSpec spec;
+    if (!cache.get_imagespec(file, spec, 0, 0, true)) return std::nullopt;
+    const std::string size = std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels";
+    if (spec.width < 1 || spec.height < 1 || spec.depth < 1 || spec.nchannels < 1)
+        return "is " + size + " of " + std::to_string(spec.nchannels) + " channels: no pixels";
+    const double bytes = double(spec.width) * spec.height * spec.depth * spec.nchannels * spec.format.size();
+    if (spec.tile_width == 0 && bytes > kMaxUntiledTextureBytes)
+        return "is " + size + ", more than the 1 GiB an untiled image may take";
+    return std::nullopt;
 }
 
 // The sRGB transfer function, inverted (IEC 61966-2-1).
@@ -69,6 +95,11 @@ struct TextureFiles::Impl {
         if (!spec) {
             warnings.push_back("texture '" + t.name + "': cannot read " + (t.embedded ? "embedded " + t.file : t.path) +
                                " (" + system->geterror() + "): white is used");
+            return e;
+        }
+        if (const std::optional<std::string> why = refusal(*system->imagecache(), file)) {
+            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + " " +
+                               *why + ": white is used");
             return e;
         }
         e.file = file;

@@ -38,7 +38,11 @@ const aiScene* readContained(Assimp::Importer& importer, const std::string& path
             return std::string(static_cast<const char*>(blob->data), blob->size);
         },
         limitsFor(inputBytes));
-    const aiScene* scene = importer.ReadFileFromMemory(dump.data(), dump.size(), 0, "assbin");
+    return readReply(importer, path, dump);
+}
+
+const aiScene* readReply(Assimp::Importer& importer, const std::string& path, const std::string& reply) {
+    const aiScene* scene = importer.ReadFileFromMemory(reply.data(), reply.size(), 0, "assbin");
     if (!scene || !scene->mRootNode)
         throw std::runtime_error(
             path + ": the scene Assimp's process sent back does not read back: " + importer.GetErrorString());

@@ -21,4 +21,9 @@ namespace rt {
 const aiScene* readContained(Assimp::Importer& importer, const std::string& path, std::uint64_t inputBytes,
                              const std::function<const aiScene*(Assimp::Importer&)>& read);
 
+// The tool's side of the reply: the child's assbin bytes read into `importer` by Assimp's assbin
+// reader. Throws std::runtime_error naming `path` when they do not read back (the child's fault,
+// not the input's). Apart from readContained for the fuzz target fuzz/assimp_reply_fuzz.cpp.
+const aiScene* readReply(Assimp::Importer& importer, const std::string& path, const std::string& reply);
+
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include "import/assimp_import.h"
 
 #include <assimp/BaseImporter.h>
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/config.h>
 #include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
@@ -20,6 +21,7 @@
 #include "import/scene_assembly.h"
 #include "import/scene_defaults.h"
 #include "scene/input_file.h"
+#include "scene/sandbox.h"
 
 namespace rt {
 namespace {
@@ -371,6 +373,15 @@ private:
     Transform fileToWorld_;      // from a 3DS file's own coordinates
 };
 
+// The files a reader opens beside the model (an MD5 mesh's animation, a Collada include) obey
+// --sandbox as the model does: one outside it cannot be opened.
+class SandboxedFiles : public Assimp::DefaultIOSystem {
+public:
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        return sandboxRefusal(file, file) ? nullptr : DefaultIOSystem::Open(file, mode);
+    }
+};
+
 }  // namespace
 
 ImportResult importAssimp(const std::string& path, const ImportOptions& options) {
@@ -380,6 +391,7 @@ ImportResult importAssimp(const std::string& path, const ImportOptions& options)
     result.report.format = formatName(importer, path);
     const aiScene* ai = readContained(importer, path, inputFileSize(path), [&](Assimp::Importer& reader) {
         removeGltfImporters(reader);
+        reader.SetIOHandler(new SandboxedFiles);  // the Importer deletes it
         // --up-axis describes the file, so it takes the place of a Collada file's own <up_axis>.
         if (options.upAxis) reader.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
         const aiScene* scene = reader.ReadFile(path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);

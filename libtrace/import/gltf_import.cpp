@@ -21,6 +21,8 @@
 #include "import/punctual_light.h"
 #include "import/scene_assembly.h"
 #include "import/scene_defaults.h"
+#include "scene/input_file.h"
+#include "scene/sandbox.h"
 
 namespace rt {
 namespace {
@@ -41,8 +43,9 @@ bool isRegularFile(const std::string& path, void*) {
 std::string samePath(const std::string& path, void*) { return path; }
 
 // The files a glTF may have read (its buffers): those in the model's folder or below, unless
-// ImportOptions::filesOutsideModelFolder. A buffer URI "../../../etc/passwd" or "/etc/passwd"
-// would otherwise copy any file the user can read into the scene and onto standard output.
+// ImportOptions::filesOutsideModelFolder, and always inside --sandbox (scene/sandbox.h). A buffer
+// URI "../../../etc/passwd" or "/etc/passwd" would otherwise copy any file the user can read
+// into the scene and onto standard output.
 struct FileAccess {
     std::filesystem::path folder;  // canonical
     bool anywhere = false;
@@ -63,6 +66,10 @@ struct FileAccess {
 bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* access) {
     out->assign(1, 0);
     if (isImagePath(path)) return true;
+    if (const std::optional<std::string> why = sandboxRefusal(path, "buffer " + path)) {
+        *err += *why + "\n";
+        return false;
+    }
     if (!static_cast<const FileAccess*>(access)->allows(path)) {
         *err += "outside the model's folder (rt-convert --allow-outside-files reads it)\n";
         return false;
@@ -73,6 +80,10 @@ bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const st
         return false;
     }
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > maxInputBytes()) {  // read whole before tinygltf compares it with byteLength
+        *err += path + " is larger than the input limit (--max-input)\n";
+        return false;
+    }
     std::ifstream in(path, std::ios::binary);
     if (ec || !in) {
         *err += "cannot read " + path + "\n";

@@ -15,6 +15,7 @@
 #include "import/scene_defaults.h"
 #include "scene/input_file.h"
 #include "scene/raw_model.h"
+#include "scene/sandbox.h"
 
 namespace rt {
 namespace {
@@ -108,6 +109,7 @@ bool looksLikeGltf(std::string_view bytes) {
 ImportResult importScene(const std::string& path, const ImportOptions& options) {
     if (path == "-") return importGltfFromStandardInput(readStandardInput(), options);
     checkOptions(options);
+    requireInsideSandbox(path, "the model", path);
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a model file");
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "scene/sandbox.h"
+
 namespace rt {
 
 bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Point3f& c) {
@@ -70,6 +72,7 @@ Texture textureBeside(const std::string& modelPath, const std::string& file) {
     t.name = std::filesystem::path(file).stem().string();
     t.path = (std::filesystem::path(modelPath).parent_path() / file).string();
     t.file = t.path;
+    requireInsideSandbox(t.path, "texture " + file, modelPath);
     return t;
 }
 

@@ -20,6 +20,7 @@
 #include "import/obj_syntax.h"
 #include "import/polygon.h"
 #include "import/scene_assembly.h"
+#include "scene/sandbox.h"
 
 namespace rt {
 namespace {
@@ -31,11 +32,13 @@ class MtlReader : public tinyobj::MaterialReader {
 public:
     static constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t(64) << 20;
 
-    explicit MtlReader(std::filesystem::path folder) : folder_(std::move(folder)) {}
+    explicit MtlReader(std::string objPath)
+        : objPath_(std::move(objPath)), folder_(std::filesystem::path(objPath_).parent_path()) {}
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* byName, std::string* warn, std::string* err) override {
         const std::filesystem::path path = folder_ / name;
+        requireInsideSandbox(path.string(), "material file " + name, objPath_);
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxMtlBytes) {
             *warn += "material file \"" + name + "\" not found, not a file, or larger than 64 MiB\n";
@@ -69,6 +72,7 @@ private:
         return kept;
     }
 
+    std::string objPath_;
     std::filesystem::path folder_;
 };
 
@@ -178,7 +182,7 @@ public:
         };
         callbacks.object_cb = [](void* self, const char* name) { static_cast<ObjSceneBuilder*>(self)->object(name); };
         std::istream in(&file_);
-        MtlReader mtlReader(std::filesystem::path(path_).parent_path());
+        MtlReader mtlReader(path_);
         std::string warn, err;
         tinyobj::LoadObjWithCallback(in, callbacks, this, &mtlReader, &warn, &err);
         if (file_.tooLong()) fail("line longer than 1 MiB");

@@ -13,6 +13,7 @@
 #include "scene/input_file.h"
 #include "scene/model_file.h"
 #include "scene/raw_model.h"
+#include "scene/sandbox.h"
 #include "scene/xml_reader.h"
 
 namespace rt {
@@ -318,6 +319,8 @@ void SceneBuilder::readTexture(const XmlElement& e) {
         t.file = e.string("file");
         std::filesystem::path path(t.file);
         t.path = (path.is_relative() ? std::filesystem::path(baseDir_) / path : path).string();
+        if (const std::optional<std::string> why = sandboxRefusal(t.path, t.file))
+            e.fail("texture '" + t.name + "': " + *why);
     }
     if (inlineImage) {  // rt extension: the picture's bytes inside the element, `file` only names it
         if (t.kind != Texture::Kind::Image) e.fail("only image textures have inline data");
@@ -386,6 +389,8 @@ Model SceneBuilder::readModelData(const XmlElement& e, const std::string& name) 
             e.fail("<model> needs type=\"raw\" or type=\"3ds\" (the file name does not tell)");
         std::filesystem::path path(*file);
         if (path.is_relative()) path = std::filesystem::path(baseDir_) / path;
+        if (const std::optional<std::string> why = sandboxRefusal(path.string(), *file))
+            e.fail("model '" + name + "': " + *why);
         Model model = placed([&] { return readModelFile_(path.string(), *format); });
         model.file = *file;
         model.format = *format;
@@ -608,6 +613,7 @@ Scene loadScene(std::string xml, const std::string& name, const std::string& bas
 
 Scene loadSceneXml(const std::string& path, const ModelFileReader& readModelFile, const SceneParameters& parameters) {
     if (path == "-") return loadScene(readStandardInput(), "<stdin>", ".", readModelFile, parameters);
+    requireInsideSandbox(path, "the scene", path);
     const std::string folder = std::filesystem::path(path).parent_path().string();
     return loadScene(readInputFile(path), path, folder.empty() ? "." : folder, readModelFile, parameters);
 }

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "core/error.h"
 #include "scene/input_file.h"
+#include "scene/sandbox.h"
 #include "tool.h"
 
 namespace rt::tool {
@@ -57,6 +59,22 @@ CLI::Option* addMaxInputOption(CLI::App& app) {
             "Largest input file or standard input in MiB [default: " + std::to_string(kDefaultMaxInputBytes >> 20) +
                 "]")
         ->check(numberIn<std::uint64_t>(1, std::uint64_t(1) << 30));
+}
+
+CLI::Option* addSandboxOption(CLI::App& app) {
+    return app
+        .add_option_function<std::string>(
+            "--sandbox",
+            [](const std::string& folder) {
+                try {
+                    setSandbox(folder);
+                } catch (const InputError& e) {
+                    throw CLI::ValidationError(e.what());
+                }
+            },
+            "Read only files inside this folder (after .. and symbolic links): the scene, its models, textures "
+            "and buffers; for scenes you did not write")
+        ->check(CLI::ExistingDirectory);
 }
 
 }  // namespace rt::tool

@@ -73,4 +73,7 @@ CLI::Option* addThreadsOption(CLI::App& app, int& threads);
 // --max-input MIB: the largest scene, model file or standard input read (scene/input_file.h).
 CLI::Option* addMaxInputOption(CLI::App& app);
 
+// --sandbox DIR: every file the scene names must lie inside DIR (scene/sandbox.h).
+CLI::Option* addSandboxOption(CLI::App& app);
+
 }  // namespace rt::tool

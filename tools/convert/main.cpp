@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
     app.add_flag("--allow-outside-files", o.import.filesOutsideModelFolder,
                  "Read glTF buffers outside the model's folder (../, absolute paths): only for files you trust");
     rt::tool::addMaxInputOption(app);
+    rt::tool::addSandboxOption(app);
     app.add_flag("--json", o.json, "Print the summary as JSON on standard output");
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no summary or notes on standard error (errors still are)");
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-convert", argc, argv)) return *exitCode;

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
     app.add_flag("-q,--quiet", o.quiet, "Quiet: no warnings or notes on standard error (errors still are)");
     rt::tool::addThreadsOption(app, o.picture.threads);
     rt::tool::addMaxInputOption(app);
+    rt::tool::addSandboxOption(app);
 
     app.add_flag("--rays", o.rays, "Render the picture (options as rt-render's) and report the work per ray");
     rt::tool::addPictureOptions(app, o.picture);

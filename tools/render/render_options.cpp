@@ -1,0 +1,194 @@
+#include "render_options.h"
+
+#include "accel_options.h"
+#include "command_line.h"
+#include "picture_options.h"
+#include "progress.h"
+
+namespace rt::tool::render {
+namespace {
+
+using rt::AccelKind;
+using rt::tool::addNamedOption;
+using rt::tool::numberIn;
+
+void addRenderingOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Rendering options";
+    app.add_option("-o,--output", o.outputType,
+                   "Output type (default: -f's extension; neither -o nor -f: null); sdl: a window, beside any -f")
+        ->check(CLI::IsMember(outputNames()))
+        ->group(group);
+    app.add_option("-f,--file", o.outputPaths,
+                   "Output file; - for standard output; several -f write each from one render")
+        ->allow_extra_args(false)
+        ->group(group);
+    AccelKind& kind = o.accel.kind;  // the KD tree; the thesis's program used the naive list unless -B or -K
+    auto* bsp = app.add_flag_callback(
+                       "-B,--bsp", [&kind] { kind = AccelKind::Bsp; }, "Use the BSP tree")
+                    ->group(group);
+    auto* kd = app.add_flag_callback(
+                      "-K,--kd", [&kind] { kind = AccelKind::Kd; }, "Use the KD tree")
+                   ->group(group);
+    bsp->excludes(kd);
+    addNamedOption(app, "--accel", kind, rt::kAccelKindNames, "Ray-scene intersection: the naive list or a tree")
+        ->excludes(bsp)
+        ->excludes(kd)
+        ->group(group);
+    auto* region =
+        app.add_option("--region", o.region, "Render only pixels x0,y0 to x1,y1 (x1, y1 exclusive) of the image")
+            ->group(group);
+    auto* tiles =
+        app.add_option("--tiles", o.tiles, "A farm's grid of tiles, CxR (columns x rows), for --tile")->group(group);
+    auto* tile = app.add_option("--tile", o.tile, "Render only tile I of the N of --tiles (I/N, from 0, row by row)")
+                     ->needs(tiles)
+                     ->excludes(region)
+                     ->group(group);
+    tiles->needs(tile);
+    app.add_flag("--skip-existing", o.skipExisting,
+                 "Exit 0 at once if -f already holds this render, complete (read back: size, window, pixels)")
+        ->group(group);
+    rt::tool::addMaxInputOption(app)->group(group);
+    rt::tool::addSandboxOption(app)->group(group);
+    app.add_option("--max-memory", o.maxMemoryGb,
+                   "Refuse to start a render estimated to need more memory than this, in GB [default: 3/4 of the "
+                   "machine's]")
+        ->check(rt::tool::numberIn(0.01, 1e6))
+        ->group(group);
+    rt::tool::addThreadsOption(app, o.render.threads)->group(group);
+    app.add_option("--seed", o.render.seed,
+                   "Random seed of the samples: another seed, independent noise (default 0, always the same)")
+        ->capture_default_str()
+        ->group(group);
+    app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
+    app.add_option("--set", o.parameters,
+                   "NAME=VALUE: fills $NAME, ${NAME} and ${NAME:-default} in the XML scene's attributes; repeatable")
+        ->allow_extra_args(false)
+        ->group(group);
+}
+
+void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Path tracing options (docs/path-tracing.md)";
+    addNamedOption(app, "--integrator", o.render.integrator, rt::kIntegratorNames,
+                   "whitted: the thesis's ray tracer; path: path tracing, -S paths per pixel")
+        ->group(group);
+    app.add_option("--max-bounces", o.render.maxBounces, "Surface bounces a path may take after the camera ray")
+        ->check(numberIn(0, rt::kMaxBounces))
+        ->capture_default_str()
+        ->group(group);
+    app.add_option("--clamp", o.render.clampRadiance,
+                   "Cap indirect samples at this value, trading bias for fewer fireflies (default 0: off)")
+        ->check(CLI::NonNegativeNumber)
+        ->group(group);
+}
+
+// Adaptive subsampling (thesis 2.3): only rt-render, whose pictures are all the colour it interpolates.
+void addAdaptiveOptions(CLI::App& app, rt::RenderSettings& s) {
+    const char* quality = "Image quality options";
+    // A flag with a value (--adaptive=4): a separate value would be taken for the scene.
+    app.add_flag("--adaptive{8}", s.adaptiveGrid,
+                 "Adaptive subsampling (--adaptive or --adaptive=GRID, default 8): trace the corners of GRID x GRID "
+                 "pixel cells, interpolate where they agree, split the others")
+        ->check(CLI::IsMember({2, 4, 8, 16, 32, 64, 128, 256}))
+        ->group(quality);
+    app.add_option("--adaptive-threshold", s.adaptiveThreshold,
+                   "Largest difference of linear colour (and alpha) between corners that --adaptive interpolates")
+        ->check(CLI::Range(0.0, 1e30))
+        ->capture_default_str()
+        ->group(quality);
+}
+
+void addCameraOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Camera options (applied in this order)";
+    app.add_option("--camera", o.camera, "The scene's camera to render: its name or number (0 is the first)")
+        ->group(group);
+    app.add_option("--look-from", o.lookFrom, "Camera origin X,Y,Z (the lens stays)")->group(group);
+    app.add_option("--look-at", o.lookAt, "Camera destination X,Y,Z")->group(group);
+    app.add_option("--up", o.up, "Camera up vector X,Y,Z")->group(group);
+    app.add_option("--fov", o.fov, "Horizontal field of view in degrees (replaces f and zoom)")
+        ->check(CLI::Range(0.0, 180.0))
+        ->group(group);
+    app.add_flag("--frame", o.frame, "Move the camera along its view to fit the scene's bounding sphere")->group(group);
+    app.add_option("--orbit", o.orbit, "Render N frames around the look-at point to -f out_####.png")
+        ->check(numberIn(1, 1000000))
+        ->group(group);
+    app.add_option("--frames", o.frames, "Render only frames A..B of --orbit (both included)")->group(group);
+}
+
+void addImageOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Colour and file options";
+    app.add_option("--color-config", o.color.configPath, "OpenColorIO config (default: $OCIO, then rt's own)")
+        ->group(group);
+    app.add_option("--colorspace", o.color.colorspace, "Colour space of the rendered values (default: scene_linear)")
+        ->group(group);
+    app.add_option("--display", o.color.display, "OCIO display for PNG, TGA and text (default: the config's)")
+        ->group(group);
+    app.add_option("--view", o.color.view, "OCIO view (default: the display's default, Standard)")->group(group);
+    app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
+    addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")->group(group);
+    app.add_option_function<std::string>(
+           "--alpha", [&o](const std::string& name) { o.alpha = rt::parseNamed(rt::kOnOffNames, name); },
+           "Alpha channel (coverage): on or off (default: on where the format has alpha; EXR and float TIFF "
+           "premultiplied, the others straight)")
+        ->check(CLI::IsMember(rt::namesOf(rt::kOnOffNames)))
+        ->group(group);
+    app.add_option("--aov", o.aovs,
+                   "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, or all")
+        ->group(group);
+    app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")
+        ->check(CLI::IsMember(rt::kPngBits))
+        ->capture_default_str()
+        ->group(group);
+    app.add_option("--tiff-bits", o.tiffBits, "TIFF bits per channel: 8 or 16 (display-referred), 32 (float, linear)")
+        ->check(CLI::IsMember(rt::kTiffBits))
+        ->capture_default_str()
+        ->group(group);
+    app.add_option("--jpeg-quality", o.jpegQuality, "JPEG quality, 1-100")
+        ->check(numberIn(1, 100))
+        ->capture_default_str()
+        ->group(group);
+    app.add_option("--exr-compression", o.exrCompression, "EXR compression")
+        ->check(CLI::IsMember(std::vector<std::string>(rt::kExrCompressions.begin(), rt::kExrCompressions.end())))
+        ->capture_default_str()
+        ->group(group);
+}
+
+void addOtherOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Other options";
+    app.add_flag("-q,--quiet", o.quiet, "Quiet: no progress or summary on standard error")->group(group);
+    addNamedOption(app, "--progress", o.progress, rt::tool::render::kProgressModeNames,
+                   "Progress on standard error: bar, lines (for logs: every 10 % or 10 s), none, or auto "
+                   "(the bar on a terminal, else lines)")
+        ->group(group);
+    app.add_flag("-b,--batch-stats", o.statsLine,
+                 "Print 'preprocessing render objects lights nodes tests-per-ray' on standard output")
+        ->group(group);
+    app.add_flag("-p,--preprocess-only", o.preprocessOnly, "Build the tree and render nothing (implies -o null)")
+        ->group(group);
+    app.add_option("--stats-json", o.statsJson, "Write every statistic as JSON to FILE (- for standard output)")
+        ->group(group);
+}
+
+}  // namespace
+
+// The outputs -o takes: the image formats and the window.
+std::vector<std::string> outputNames() {
+    std::vector<std::string> names = rt::imageFormatNames();
+    names.push_back("sdl");
+    return names;
+}
+
+void addRenderOptions(CLI::App& app, RenderOptions& options) {
+    app.option_defaults()->always_capture_default();  // so that --stats-json records every default
+    app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")
+        ->required();
+    rt::tool::addPictureOptions(app, options.render);
+    addRenderingOptions(app, options);
+    addAdaptiveOptions(app, options.render);
+    addCameraOptions(app, options);
+    addPathTracingOptions(app, options);
+    rt::tool::addAccelOptions(app, options.accel);
+    addImageOptions(app, options);
+    addOtherOptions(app, options);
+}
+
+}  // namespace rt::tool::render

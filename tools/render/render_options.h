@@ -1,0 +1,20 @@
+// rt-render's command line: every option CLI11 parses into RenderOptions, declared here so that
+// the tool and the option-parsing fuzz target (fuzz/render_options_fuzz.cpp) parse the same way.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "render_command.h"
+
+namespace rt::tool::render {
+
+// The outputs -o takes: the image formats and the window.
+std::vector<std::string> outputNames();
+
+// Declares the scene argument and every option of rt-render on `app`, each storing into `options`.
+void addRenderOptions(CLI::App& app, RenderOptions& options);
+
+}  // namespace rt::tool::render
