@@ -174,7 +174,7 @@ tables() {
 # frame: ships renders in 0.05 s, and a process of rt-render spends 0.3 s more on starting
 # OpenImageIO and loading, which would hide the compilers' difference (thesis 4.5 measured 2 s).
 compiler_flags=("-O3" "-O2" "-O3 -march=native")  # -O3 first: CMake's Release, the project's own build
-float_flags=("-O3")  # float is the thesis's question (4.4, 4.5) at the default flags; each build is ~75 s on two cores
+float_flags=("-O3")  # float is the thesis's question (4.4, 4.5) at the default flags; a build not in ccache is ~100 s on two cores
 
 # compiler_build CXX FLAGS REAL: configures and builds bench_render; prints its path.
 compiler_build() {
