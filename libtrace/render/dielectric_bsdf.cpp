@@ -21,7 +21,9 @@ Vec3 reflect(const Vec3& wo, const Vec3& h) { return h * (2 * dot(wo, h)) - wo; 
 DielectricBsdf::DielectricBsdf(const Transmission& t, float roughness, bool entering)
     : tint_(t.color),
       f0_(normalReflectance(t.ior)),
-      eta_(t.thin ? 1 : entering ? Real(t.ior) : 1 / Real(t.ior)),
+      eta_(t.thin     ? 1
+           : entering ? Real(t.ior)
+                      : 1 / Real(t.ior)),
       alpha_(Real(roughness) * Real(roughness)),
       thin_(t.thin),
       // index 1 bends nothing: the surface lets the light straight through, as pbrt does

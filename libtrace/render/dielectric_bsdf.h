@@ -42,9 +42,9 @@ private:
     Real visibleNormalPdf(const Vec3& wo, const Vec3& h) const;
     std::optional<BsdfSample> sampleSmooth(const Vec3& wo, Real u1) const;
 
-    Color tint_;     // Transmission::color: the transmitted light's colour
-    float f0_;       // Schlick's reflectance at normal incidence, from the ior
-    Real eta_;       // n_other / n_this: the index ratio wi sees crossing (1 when thin)
+    Color tint_;  // Transmission::color: the transmitted light's colour
+    float f0_;    // Schlick's reflectance at normal incidence, from the ior
+    Real eta_;    // n_other / n_this: the index ratio wi sees crossing (1 when thin)
     Real alpha_;
     bool thin_;
     bool smooth_;

@@ -66,7 +66,7 @@ PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const Rende
       accel_(accel),
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
-      lights_(scene),
+      lights_(scene, images),
       epsilon_(secondaryRayOffset(scene.primitives)),
       images_(images) {}
 
@@ -102,9 +102,9 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         if (!accel_.intersect(ray, kInfinity, hit, bounce == 0 ? counters.camera : counters.reflection)) {
-            if (bounce == 0) return scene_.background;
-            result +=
-                clampIndirect(throughput * scene_.background * float(misWeight(lights_.pdfEnvironment())), bounce);
+            const Color sky = lights_.environment().radiance(ray.direction);
+            if (bounce == 0) return sky;
+            result += clampIndirect(throughput * sky * float(misWeight(lights_.pdfEnvironment(ray.direction))), bounce);
             break;
         }
         seen = seen || bounce == 0;
@@ -199,7 +199,7 @@ Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) cons
                                    images_);
         }
         case LightSample::Source::Environment:
-            return scene_.background;
+            return lights_.environment().radiance(light.direction);
     }
     return {};
 }
