@@ -77,8 +77,8 @@ EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* imag
         const double sinTheta = std::sin(double(kPi * t));
         for (int x = 0; x < width_; ++x) {
             const auto i = std::size_t(x);
-            const double value = std::max({brightness((Real(x) + Real(0.5)) / Real(width_), t), above[i],
-                                           above[i + 1], below[i], below[i + 1]});
+            const double value = std::max(
+                {brightness((Real(x) + Real(0.5)) / Real(width_), t), above[i], above[i + 1], below[i], below[i + 1]});
             total_ += cells_[std::size_t(y) * std::size_t(width_) + i] = value * sinTheta;
         }
         above = below;

@@ -92,11 +92,10 @@ TEST(EnvironmentLight, ImportanceSamplingAgreesWithUniformSamplingWithLessVarian
         const EnvironmentSample important = light.sample(u1, u2);
         const Real z = 1 - 2 * u1, r = std::sqrt(std::max(Real(0), 1 - z * z));
         const Vec3 uniform{r * std::cos(2 * kPi * u2), z, r * std::sin(2 * kPi * u2)};
-        const double estimates[2] = {
-            important.pdf > 0 ? light.radiance(important.direction).g * std::max(Real(0), important.direction.y) /
-                                    important.pdf
-                              : 0,
-            light.radiance(uniform).g * std::max(Real(0), uniform.y) * 4 * kPi};
+        const double estimates[2] = {important.pdf > 0 ? light.radiance(important.direction).g *
+                                                             std::max(Real(0), important.direction.y) / important.pdf
+                                                       : 0,
+                                     light.radiance(uniform).g * std::max(Real(0), uniform.y) * 4 * kPi};
         for (int k = 0; k < 2; ++k) sum[k] += estimates[k], sumSq[k] += estimates[k] * estimates[k];
     }
     double mean[2], variance[2];
@@ -105,8 +104,8 @@ TEST(EnvironmentLight, ImportanceSamplingAgreesWithUniformSamplingWithLessVarian
         variance[k] = sumSq[k] / kSamples - mean[k] * mean[k];
     }
     const double error = std::sqrt((variance[0] + variance[1]) / kSamples);
-    std::printf("irradiance: %.3f (variance %.3g) by the image's distribution, %.3f (variance %.3g) uniform\n",
-                mean[0], variance[0], mean[1], variance[1]);
+    std::printf("irradiance: %.3f (variance %.3g) by the image's distribution, %.3f (variance %.3g) uniform\n", mean[0],
+                variance[0], mean[1], variance[1]);
     EXPECT_NEAR(mean[0], mean[1], 4 * error);
     const double sunRadius = 5.0 / 180 * kPi;
     const double exact = (1000 - 0.1) * sun.y * kPi * std::pow(std::sin(sunRadius), 2) + 0.1 * kPi;
