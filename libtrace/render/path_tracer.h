@@ -2,7 +2,8 @@
 // chapter 5 proposes its ray tracer as the base for one). Unidirectional path tracing with
 // next-event estimation, combined with the BSDF's own samples by multiple importance sampling
 // with the power heuristic (Veach 1997, ch. 9); Russian roulette after three bounces; the glTF
-// metallic-roughness BRDF (render/pbr_bsdf.h); per-pixel Owen-scrambled Sobol samples
+// metallic-roughness BRDF (render/pbr_bsdf.h) and glass (render/dielectric_bsdf.h) with Beer-Lambert
+// absorption; the sky a colour or an image (render/environment_light.h); per-pixel Owen-scrambled Sobol samples
 // (render/sobol_sampler.h), so the image has the same bits for any thread count or region split.
 // docs/path-tracing.md describes the model, the rule for thesis materials and the validation.
 #pragma once
