@@ -12,16 +12,10 @@ namespace {
 // Below this the power estimate of an emitter counts as none.
 constexpr double kNoPower = 1e-12;
 
-Vec3 uniformSphere(Real u1, Real u2) {
-    const Real z = 1 - 2 * u1;
-    const Real r = std::sqrt(std::max(Real(0), 1 - z * z));
-    const Real phi = 2 * kPi * u2;
-    return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
 }  // namespace
 
-LightDistribution::LightDistribution(const Scene& scene) : scene_(scene) {
+LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* images)
+    : scene_(scene), environment_(scene, images) {
     // The scene's bounding sphere: the thesis's unattenuated point lights and the environment
     // send their light over it.
     const Aabb box = scene.primitives.bounds();
@@ -42,9 +36,9 @@ LightDistribution::LightDistribution(const Scene& scene) : scene_(scene) {
         entries_.push_back({LightSample::Source::Triangle, std::uint32_t(i)});
         power.push_back(kPi * radiance * double(triangles[i].area()));  // Lambertian, front side
     }
-    const double background = luminance(scene.background);
+    const double background = environment_.averageLuminance();
     if (background > kNoPower) {
-        // a constant environment of radiance L gives irradiance pi L over the bounding sphere
+        // an environment of mean radiance L gives irradiance pi L over the bounding sphere
         entries_.push_back({LightSample::Source::Environment, 0});
         power.push_back(sphereArea * kPi * background);
     }
@@ -98,10 +92,13 @@ std::optional<LightSample> LightDistribution::sample(const Vec3& from, Real u, R
             s.pdf = chosen * s.distance * s.distance / (cosine * tri.area());
             return s;
         }
-        case LightSample::Source::Environment:
-            s.direction = uniformSphere(u1, u2);
-            s.pdf = chosen / (4 * kPi);
+        case LightSample::Source::Environment: {
+            const EnvironmentSample sky = environment_.sample(u1, u2);
+            if (!(sky.pdf > 0)) return std::nullopt;
+            s.direction = sky.direction;
+            s.pdf = chosen * sky.pdf;
             return s;
+        }
     }
     return std::nullopt;
 }

@@ -1,9 +1,9 @@
 // What the path tracer's next-event estimation samples: the scene's lights (point, spot and
 // directional, each a delta light), its emissive
-// triangles as area lights (emitting from their front, the side their winding faces), and a non-black background as a
-// constant environment, each picked in proportion to an estimate of the power it sends into the scene (pbrt-v4's power
-// light sampler). Emissive spheres, cylinders and cones are not sampled: they light the scene through the paths that
-// hit them (docs/path-tracing.md).
+// triangles as area lights (emitting from their front, the side their winding faces), and the environment (a
+// non-black background, or an image: render/environment_light.h), each picked in proportion to an estimate of the power
+// it sends into the scene (pbrt-v4's power light sampler). Emissive spheres, cylinders and cones are not sampled: they
+// light the scene through the paths that hit them (docs/path-tracing.md).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +13,7 @@
 
 #include "core/color.h"
 #include "core/vec3.h"
+#include "render/environment_light.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -31,8 +32,9 @@ struct LightSample {
 class LightDistribution {
 public:
     // The emitters of a flattened scene: materials with a non-black emission make their
-    // triangles area lights (the emission texture is not part of the estimate).
-    explicit LightDistribution(const Scene& scene);
+    // triangles area lights (the emission texture is not part of the estimate). `images` looks up
+    // an environment image.
+    explicit LightDistribution(const Scene& scene, const ImageTextures* images = nullptr);
 
     bool empty() const { return cdf_.empty(); }
     // One light for the point `from`: u picks it, (u1, u2) the point on it.
@@ -41,7 +43,10 @@ public:
     // along unit `direction` from the shading point on primitive `prim` (0: not an area light),
     // and the background's direction, for multiple importance sampling.
     Real pdfTriangle(std::uint32_t prim, const Vec3& direction, Real distance) const;
-    Real pdfEnvironment() const { return environmentProbability_ / (4 * kPi); }
+    Real pdfEnvironment(const Vec3& direction) const {
+        return environmentProbability_ > 0 ? environmentProbability_ * environment_.pdf(direction) : 0;
+    }
+    const EnvironmentLight& environment() const { return environment_; }
 
 private:
     struct Entry {
@@ -51,6 +56,7 @@ private:
     Real probability(std::size_t entry) const;
 
     const Scene& scene_;
+    EnvironmentLight environment_;
     std::vector<Entry> entries_;
     std::vector<double> cdf_;  // running sums of power, normalised to end at 1
     std::unordered_map<std::uint32_t, std::size_t> triangleEntry_;

@@ -5,6 +5,7 @@
 
 #include "render/light_sample.h"
 #include "render/normal_map.h"
+#include "render/refraction.h"
 
 namespace rt {
 
@@ -31,6 +32,24 @@ ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
 
 }  // namespace
 
+SurfaceBsdf::SurfaceBsdf(const Material& m, const PbrParameters& p, bool frontFace, Real& lobe)
+    : bsdf_(choose(m, p, frontFace, lobe)) {}
+
+std::variant<PbrBsdf, DielectricBsdf> SurfaceBsdf::choose(const Material& m, const PbrParameters& p, bool frontFace,
+                                                          Real& lobe) {
+    const float glass = m.transmission.weight;
+    if (!(glass > 0)) return PbrBsdf(p);
+    if (lobe < glass) {
+        lobe /= glass;
+        return DielectricBsdf(m.transmission, p.roughness, frontFace);
+    }
+    lobe = (lobe - glass) / (1 - glass);
+    // the opaque part's own metallic share: m of the whole is m / (1 - glass) of what is left
+    PbrParameters opaque = p;
+    opaque.metallic = std::min(1.0f, p.metallic / (1 - glass));
+    return PbrBsdf(opaque);
+}
+
 PbrParameters pbrParametersOf(const Material& m, const Color& color) {
     if (m.metallicRoughness)
         return {color, m.metallicRoughness->metallic, m.metallicRoughness->roughness, m.metallicRoughness->specular};
@@ -47,7 +66,7 @@ PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const Rende
       accel_(accel),
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
-      lights_(scene),
+      lights_(scene, images),
       epsilon_(secondaryRayOffset(scene.primitives)),
       images_(images) {}
 
@@ -74,41 +93,52 @@ Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage,
 Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCounters& counters, bool& seen) const {
     Color result, throughput{1, 1, 1};
     Ray ray = cameraRay;
-    Real bsdfPdf = 0;  // the density of the direction `ray` was sampled with, for MIS at the emitter it hits
+    // How `ray` was sampled, for MIS at the emitter it hits: the BSDF's density, and whether a
+    // light sample could have found the same direction (not through glass, not a delta lobe).
+    Real bsdfPdf = 0;
+    bool lightSampled = false;
+    const auto misWeight = [&](Real lightPdf) { return lightSampled ? powerHeuristic(bsdfPdf, lightPdf) : Real(1); };
     seen = false;
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         if (!accel_.intersect(ray, kInfinity, hit, bounce == 0 ? counters.camera : counters.reflection)) {
-            if (bounce == 0) return scene_.background;
-            const Real weight = powerHeuristic(bsdfPdf, lights_.pdfEnvironment());
-            result += clampIndirect(throughput * scene_.background * float(weight), bounce);
+            const Color sky = lights_.environment().radiance(ray.direction);
+            if (bounce == 0) return sky;
+            result += clampIndirect(throughput * sky * float(misWeight(lights_.pdfEnvironment(ray.direction))), bounce);
             break;
         }
         seen = seen || bounce == 0;
         const SurfacePoint s = shadedSurfaceAt(scene_, ray, hit, images_);
         const Material& m = scene_.materialOf(hit.prim);
+        // Beer-Lambert along the stretch just travelled inside (render/refraction.h)
+        if (!s.frontFace && m.transmission.absorbs()) throughput = throughput * absorbed(m.transmission, hit.t);
         if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {
-            const Real weight =
-                bounce == 0 ? 1 : powerHeuristic(bsdfPdf, lights_.pdfTriangle(hit.prim, ray.direction, hit.t));
+            const Real weight = misWeight(lights_.pdfTriangle(hit.prim, ray.direction, hit.t));
             result += clampIndirect(throughput * emitted * float(weight), bounce);
         }
         if (bounce == settings_.maxBounces) break;
 
+        // the numbers in a fixed order, so that every material draws the same dimensions
+        const Real pick = sampler.next1D();
+        const auto [l1, l2] = sampler.next2D();
+        Real lobe = sampler.next1D();
+        const auto [u1, u2] = sampler.next2D();
         const Vec3 toViewer = -ray.direction;
         const ShadingFrame frame = shadingFrame(s, toViewer);
         const Vec3 wo = frame.toLocal(toViewer);
-        const PbrBsdf bsdf(pbrParametersAt(m, s));
-        result += clampIndirect(throughput * directLight(s, bsdf, frame, wo, sampler, counters), bounce + 1);
+        const SurfaceBsdf bsdf(m, pbrParametersAt(m, s), s.frontFace, lobe);
+        if (!bsdf.smooth())
+            result += clampIndirect(throughput * directLight(s, bsdf, frame, wo, {pick, l1, l2}, counters), bounce + 1);
 
-        const Real lobe = sampler.next1D();
-        const auto [u1, u2] = sampler.next2D();
         const std::optional<BsdfSample> next = bsdf.sample(wo, lobe, u1, u2);
         if (!next) break;
         const Vec3 wi = frame.toWorld(next->wi);
-        if (dot(wi, s.geometricNormal) <= 0) break;  // below the true surface: absorbed
+        const bool through = next->wi.z < 0;
+        if ((dot(wi, s.geometricNormal) > 0) == through) break;  // on the wrong side of the true surface
         throughput = throughput * next->weight;
         bsdfPdf = next->pdf;
-        ray = {s.point + s.geometricNormal * epsilon_, wi};
+        lightSampled = !next->specular && !through;
+        ray = {s.point + s.geometricNormal * (through ? -epsilon_ : epsilon_), wi};
         ++counters.reflection.rays;
 
         if (bounce + 1 >= kRouletteBounces) {
@@ -120,13 +150,11 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
     return result;
 }
 
-Color PathTracer::directLight(const SurfacePoint& s, const PbrBsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
-                              SobolSampler& sampler, RenderCounters& counters) const {
-    const Real pick = sampler.next1D();
-    const auto [u1, u2] = sampler.next2D();
+Color PathTracer::directLight(const SurfacePoint& s, const SurfaceBsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
+                              const LightNumbers& u, RenderCounters& counters) const {
     if (lights_.empty()) return {};
     const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
-    const std::optional<LightSample> light = lights_.sample(origin, pick, u1, u2);
+    const std::optional<LightSample> light = lights_.sample(origin, u.pick, u.u1, u.u2);
     if (!light || dot(light->direction, s.geometricNormal) <= 0) return {};
     const Vec3 wi = frame.toLocal(light->direction);
     const Color f = bsdf.evaluate(wo, wi);
@@ -171,7 +199,7 @@ Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) cons
                                    images_);
         }
         case LightSample::Source::Environment:
-            return scene_.background;
+            return lights_.environment().radiance(light.direction);
     }
     return {};
 }

@@ -20,25 +20,6 @@ Real schlickWeight(Real cosine) {
     return (m * m) * (m * m) * m;
 }
 
-Real smithG1(const Vec3& w, Real alpha) { return 1 / (1 + smithLambda(w, alpha)); }
-
-// Heitz 2018, section 3: stretch the view direction to the hemisphere configuration, sample
-// a point on the projected disc (denser on the visible half), lift it to the hemisphere and
-// unstretch the normal.
-Vec3 sampleVisibleNormal(const Vec3& wo, Real alpha, Real u1, Real u2) {
-    const Vec3 v = normalize(Vec3{alpha * wo.x, alpha * wo.y, wo.z});
-    const Real lengthSq = v.x * v.x + v.y * v.y;
-    const Vec3 t1 = lengthSq > 0 ? Vec3{-v.y, v.x, 0} / std::sqrt(lengthSq) : Vec3{1, 0, 0};
-    const Vec3 t2 = cross(v, t1);
-    const Real r = std::sqrt(u1);
-    const Real phi = 2 * kPi * u2;
-    const Real p1 = r * std::cos(phi);
-    const Real s = Real(0.5) * (1 + v.z);
-    const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
-    const Vec3 n = t1 * p1 + t2 * p2 + v * std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
-    return normalize(Vec3{alpha * n.x, alpha * n.y, std::max(Real(0), n.z)});
-}
-
 Vec3 sampleCosine(Real u1, Real u2) {
     const Real r = std::sqrt(u1);
     const Real phi = 2 * kPi * u2;
@@ -119,6 +100,25 @@ Real smithLambda(const Vec3& w, Real alpha) {
     return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
 }
 
+Real smithG1(const Vec3& w, Real alpha) { return 1 / (1 + smithLambda(w, alpha)); }
+
+// Heitz 2018, section 3: stretch the view direction to the hemisphere configuration, sample
+// a point on the projected disc (denser on the visible half), lift it to the hemisphere and
+// unstretch the normal.
+Vec3 sampleVisibleNormal(const Vec3& wo, Real alpha, Real u1, Real u2) {
+    const Vec3 v = normalize(Vec3{alpha * wo.x, alpha * wo.y, wo.z});
+    const Real lengthSq = v.x * v.x + v.y * v.y;
+    const Vec3 t1 = lengthSq > 0 ? Vec3{-v.y, v.x, 0} / std::sqrt(lengthSq) : Vec3{1, 0, 0};
+    const Vec3 t2 = cross(v, t1);
+    const Real r = std::sqrt(u1);
+    const Real phi = 2 * kPi * u2;
+    const Real p1 = r * std::cos(phi);
+    const Real s = Real(0.5) * (1 + v.z);
+    const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
+    const Vec3 n = t1 * p1 + t2 * p2 + v * std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
+    return normalize(Vec3{alpha * n.x, alpha * n.y, std::max(Real(0), n.z)});
+}
+
 PbrBsdf::PbrBsdf(const PbrParameters& p) : p_(p), alpha_(std::max(Real(p.roughness) * Real(p.roughness), kMinAlpha)) {
     const GgxAlbedoTable& table = GgxAlbedoTable::get();
     averageAlbedo_ = table.average(Real(p.roughness));
@@ -163,35 +163,37 @@ Real PbrBsdf::glossyProbability(const Vec3& wo) const {
     const Real dielectricF = p_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
     const Real metalF = luminance(p_.baseColor) + (1 - luminance(p_.baseColor)) * s;
     const Real m = p_.metallic;
-    const Real glossy = (1 - m) * dielectricF + m * metalF * GgxAlbedoTable::get().albedo(wo.z, p_.roughness);
+    const Real albedo = m > 0 ? GgxAlbedoTable::get().albedo(wo.z, p_.roughness) : 0;  // metals only
+    const Real glossy = (1 - m) * dielectricF + m * metalF * albedo;
     // the cosine-sampled share: the base, and the metal's multiple scattering
-    const Real diffuse =
-        (1 - m) * (1 - dielectricF) * luminance(p_.baseColor) +
-        m * luminance(multipleScatteringFresnel_) * (1 - GgxAlbedoTable::get().albedo(wo.z, p_.roughness));
+    const Real diffuse = (1 - m) * (1 - dielectricF) * luminance(p_.baseColor) +
+                         m * luminance(multipleScatteringFresnel_) * (1 - albedo);
     return glossy + diffuse > 0 ? glossy / (glossy + diffuse) : Real(0.5);
 }
 
-Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi) const { return pdf(wo, wi, glossyProbability(wo)); }
+
+Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi, Real glossyShare) const {
     if (wo.z <= 0 || wi.z <= 0) return 0;
     const Vec3 h = normalize(wo + wi);
     // visible normals: D_wo(h) = G1(wo) (wo.h) D(h) / wo.z, and d(wi)/d(h) = 1 / (4 wo.h)
     const Real glossy = smithG1(wo, alpha_) * ggxD(h, alpha_) / (4 * wo.z);
     const Real diffuse = wi.z / kPi;
-    const Real p = glossyProbability(wo);
-    return p * glossy + (1 - p) * diffuse;
+    return glossyShare * glossy + (1 - glossyShare) * diffuse;
 }
 
 std::optional<BsdfSample> PbrBsdf::sample(const Vec3& wo, Real u1, Real u2, Real u3) const {
     if (wo.z <= 0) return std::nullopt;
+    const Real glossyShare = glossyProbability(wo);  // once: it costs a table lookup
     Vec3 wi;
-    if (u1 < glossyProbability(wo)) {
+    if (u1 < glossyShare) {
         const Vec3 h = sampleVisibleNormal(wo, alpha_, u2, u3);
         wi = h * (2 * dot(wo, h)) - wo;
     } else {
         wi = sampleCosine(u2, u3);
     }
     if (wi.z <= 0) return std::nullopt;
-    const Real density = pdf(wo, wi);
+    const Real density = pdf(wo, wi, glossyShare);
     if (!(density > 0)) return std::nullopt;
     return BsdfSample{wi, evaluate(wo, wi) * float(1 / density), density};
 }

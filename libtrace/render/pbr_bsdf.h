@@ -30,14 +30,20 @@ struct PbrParameters {
     float specular = 1;  // KHR_materials_specular's specularFactor: 0 leaves a pure Lambertian base
 };
 
-// The GGX distribution of normals and Smith's masking, for tests and the BRDF.
+// The GGX distribution of normals and Smith's masking, for tests and the BSDFs (this one and
+// render/dielectric_bsdf.h). Directions in the local frame, z up; both depend on |z| only.
 Real ggxD(const Vec3& h, Real alpha);
 Real smithLambda(const Vec3& w, Real alpha);
+Real smithG1(const Vec3& w, Real alpha);
+// A microfacet normal seen from wo (wo.z > 0), sampled with density G1(wo) max(0, wo.h) D(h) / wo.z
+// (Heitz 2018); (u1, u2) in [0, 1)^2.
+Vec3 sampleVisibleNormal(const Vec3& wo, Real alpha, Real u1, Real u2);
 
 struct BsdfSample {
     Vec3 wi;
-    Color weight;  // f cos / pdf
+    Color weight;  // f cos / pdf (for a specular direction: its share of the light)
     Real pdf = 0;
+    bool specular = false;  // a delta direction: no light sample could have found it
 };
 
 class PbrBsdf {
@@ -52,6 +58,7 @@ public:
 
 private:
     Real glossyProbability(const Vec3& wo) const;
+    Real pdf(const Vec3& wo, const Vec3& wi, Real glossyShare) const;
     Color multipleScattering(const Vec3& wo, const Vec3& wi) const;
 
     PbrParameters p_;

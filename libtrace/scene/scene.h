@@ -119,6 +119,8 @@ struct Scene {
     std::vector<Instance> instances;
     Primitives looseObjects;  // spheres, triangles and quads placed directly, in world space
     std::vector<Light> lights;
+    // rt extension: the texture the path tracer's sky is (render/environment_light.h); none: the background colour
+    std::optional<std::uint32_t> environment{};
 
     Primitives primitives;              // everything, in world space: looseObjects, then each instance
     std::size_t droppedDegenerate = 0;  // by the loader and by flatten()

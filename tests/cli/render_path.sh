@@ -22,6 +22,13 @@ idiff -fail 0 -warn 0 "$WORK/merged.exr" "$WORK/whole.exr" >"$WORK/idiff.txt" ||
 "$RT_RENDER" "$scene" -q -x 48 -y 36 --exr-pixels float --max-bounces 3 --clamp 2 -f "$WORK/whitted2.exr"
 idiff -fail 0 -warn 0 "$WORK/whitted.exr" "$WORK/whitted2.exr" >/dev/null || fail "--max-bounces changed a Whitted render"
 
+# --environment: an image of one colour lights the scene; the camera's misses show it
+oiiotool --pattern constant:color=0.25,0.5,1 16x8 3 -d float -o "$WORK/sky.exr"
+"$RT_RENDER" "$scene" "${opts[@]}" --environment "$WORK/sky.exr" --alpha off -f "$WORK/sky-lit.exr"
+corner=$(oiiotool "$WORK/sky-lit.exr" --cut 1x1+0+0 --printstats | awk '/Avg:/ {print $3, $4, $5; exit}')
+[[ "$corner" == "0.250000 0.500000 1.000000" ]] || fail "the sky's corner is $corner"
+expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --environment "$WORK/none.exr"
+
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator bidirectional
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --max-bounces -1
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --clamp nan

@@ -8,6 +8,7 @@
 #include "render/pbr_bsdf.h"
 #include "render/renderer.h"
 #include "render/sobol_sampler.h"
+#include "render_path_util.h"
 #include "render_test_scenes.h"
 #include "test_util.h"
 
@@ -15,57 +16,20 @@ using namespace rt;
 
 namespace {
 
-Material pbr(Color color, float metallic, float roughness, float specular = 1) {
-    Material m{.name = "pbr", .color = color};
-    m.metallicRoughness = MetallicRoughnessFactors{metallic, roughness, specular};
-    return m;
-}
-
-RenderSettings pathPicture(int size, int samples) {
-    RenderSettings r = test::picture(size, size);
-    r.integrator = Integrator::Path;
-    r.pixelSamples = samples;
-    return r;
-}
-
-struct ImageMean {
-    double mean = 0;
-    double standardError = 0;  // of the mean, from the spread of the pixels
-};
-
-// Mean and standard error of the green channel over the pixels whose camera ray hit.
-ImageMean meanOverHits(const Framebuffer& image) {
-    double sum = 0, sumSq = 0;
-    int n = 0;
-    for (std::size_t i = 0; i < image.pixels().size(); ++i) {
-        if (image.alphas()[i] < 1) continue;
-        const double g = image.pixels()[i].g;
-        sum += g, sumSq += g * g, ++n;
-    }
-    const double mean = sum / n;
-    return {mean, std::sqrt(std::max(0.0, sumSq / n - mean * mean) / n)};
-}
-
-Framebuffer renderNaive(const Scene& s, const RenderSettings& settings) {
-    const NaiveAccelerator accel(s.primitives);
-    RenderStats stats;
-    return render(s, accel, settings, stats);
-}
-
 // A sphere filling most of the picture inside a uniform environment of radiance 1.
 Framebuffer furnace(const Material& m, int bounces) {
     Scene s = test::sphereSeenFromMinusZ(m, 14);
     s.background = {1, 1, 1};
     s.flatten();
-    RenderSettings settings = pathPicture(24, 64);
+    RenderSettings settings = test::pathPicture(24, 64);
     settings.maxBounces = bounces;
-    return renderNaive(s, settings);
+    return test::renderPath(s, settings);
 }
 
 }  // namespace
 
 TEST(PathTracer, WhiteLambertianSphereInAWhiteFurnaceIsUniformlyOne) {
-    const ImageMean m = meanOverHits(furnace(pbr({1, 1, 1}, 0, 1, 0), 200));
+    const test::ImageMean m = test::meanOverHits(furnace(test::pbr({1, 1, 1}, 0, 1, 0), 200));
     EXPECT_NEAR(m.mean, 1.0, 4 * m.standardError + 1e-3) << "energy neither lost nor gained";
 }
 
@@ -82,7 +46,7 @@ TEST(PathTracer, WhiteMetalAndDielectricInAWhiteFurnaceStayNearOne) {
     };
     for (const Case c : {Case{1, 0.2f, 0.98, 1.0}, Case{1, 0.6f, 0.98, 1.01}, Case{1, 1.0f, 0.97, 1.0},
                          Case{0, 0.2f, 0.98, 1.02}, Case{0, 0.6f, 0.97, 1.01}, Case{0, 1.0f, 0.95, 1.0}}) {
-        const ImageMean m = meanOverHits(furnace(pbr({1, 1, 1}, c.metallic, c.roughness), 200));
+        const test::ImageMean m = test::meanOverHits(furnace(test::pbr({1, 1, 1}, c.metallic, c.roughness), 200));
         EXPECT_GT(m.mean, c.low) << "metallic " << c.metallic << ", roughness " << c.roughness;
         EXPECT_LT(m.mean, c.high + 4 * m.standardError) << "metallic " << c.metallic << ", roughness " << c.roughness;
         std::printf("furnace: metallic %g roughness %g: %.4f +- %.4f\n", double(c.metallic), double(c.roughness),
@@ -98,21 +62,21 @@ TEST(PathTracer, DiffusePlaneUnderAUniformSkyShowsAlbedoTimesSky) {
     s.camera.destination = {0, 0, 0};
     s.camera.fovDegrees = 30;
     test::addQuad(s, {-100, 0, -100}, {-100, 0, 100}, {100, 0, 100}, {100, 0, -100},
-                  test::addMaterial(s, pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0)));
+                  test::addMaterial(s, test::pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0)));
     s.flatten();
-    const ImageMean m = meanOverHits(renderNaive(s, pathPicture(16, 64)));
+    const test::ImageMean m = test::meanOverHits(test::renderPath(s, test::pathPicture(16, 64)));
     EXPECT_NEAR(m.mean, 0.5 * 2.0, 4 * m.standardError + 1e-3);
 }
 
 // Direct light from a point light of intensity I along the normal: L = albedo / pi * I, whatever
 // the distance (the thesis's lights are unattenuated, in both integrators).
 TEST(PathTracer, LambertianSphereUnderAPointLightMatchesItsIrradiance) {
-    Scene s = test::sphereSeenFromMinusZ(pbr({0.8f, 0.8f, 0.8f}, 0, 1, 0), 2);
+    Scene s = test::sphereSeenFromMinusZ(test::pbr({0.8f, 0.8f, 0.8f}, 0, 1, 0), 2);
     s.background = {0, 0, 0};
     s.lights.push_back({{0, 0, -4}, {9, 9, 9}, 0});  // on the axis, 3 from the surface
     s.flatten();
-    RenderSettings settings = pathPicture(5, 16);
-    const Framebuffer image = renderNaive(s, settings);
+    RenderSettings settings = test::pathPicture(5, 16);
+    const Framebuffer image = test::renderPath(s, settings);
     const float expected = 0.8f / float(kPi) * 9.0f;
     // the centre pixel sees the point nearest the light: the surface faces it squarely
     EXPECT_NEAR(image.at(2, 2).g, expected, 0.01f * expected);
@@ -147,17 +111,17 @@ TEST(PathTracer, GgxAlbedoByImportanceSamplingAgreesWithUniformSampling) {
 TEST(PathTracer, SameBitsForAnyThreadCountAndRegionSplit) {
     Scene s = test::spheresOnFloor();
     s.flatten();
-    RenderSettings one = pathPicture(40, 4);
+    RenderSettings one = test::pathPicture(40, 4);
     one.width = 48;
     one.threads = 1;
-    const Framebuffer whole = renderNaive(s, one);
+    const Framebuffer whole = test::renderPath(s, one);
     RenderSettings two = one;
     two.threads = 2;
-    const Framebuffer parallel = renderNaive(s, two);
+    const Framebuffer parallel = test::renderPath(s, two);
     EXPECT_EQ(whole.pixels(), parallel.pixels());
     RenderSettings part = two;
     part.region = PixelWindow{10, 7, 33, 29};
-    const Framebuffer region = renderNaive(s, part);
+    const Framebuffer region = test::renderPath(s, part);
     for (int y = 7; y < 29; ++y)
         for (int x = 10; x < 33; ++x) ASSERT_EQ(region.at(x, y), whole.at(x, y)) << x << "," << y;
 }
@@ -165,10 +129,10 @@ TEST(PathTracer, SameBitsForAnyThreadCountAndRegionSplit) {
 TEST(PathTracer, AnotherSeedGivesOtherNoise) {
     Scene s = test::spheresOnFloor();
     s.flatten();
-    RenderSettings a = pathPicture(24, 2);
+    RenderSettings a = test::pathPicture(24, 2);
     RenderSettings b = a;
     b.seed = 7;
-    EXPECT_NE(renderNaive(s, a).pixels(), renderNaive(s, b).pixels());
+    EXPECT_NE(test::renderPath(s, a).pixels(), test::renderPath(s, b).pixels());
 }
 
 TEST(SobolSampler, EachPairIsStratifiedForPowerOfTwoCounts) {
@@ -194,10 +158,10 @@ Scene boxWithLightPanel() {
     s.camera.origin = {0, 1, 3.5};
     s.camera.destination = {0, 1, 0};
     s.camera.fovDegrees = 45;
-    const auto white = test::addMaterial(s, pbr({0.7f, 0.7f, 0.7f}, 0, 1, 0));
-    const auto red = test::addMaterial(s, pbr({0.7f, 0.1f, 0.1f}, 0, 1, 0));
-    const auto green = test::addMaterial(s, pbr({0.1f, 0.7f, 0.1f}, 0, 1, 0));
-    Material lamp = pbr({0, 0, 0}, 0, 1, 0);
+    const auto white = test::addMaterial(s, test::pbr({0.7f, 0.7f, 0.7f}, 0, 1, 0));
+    const auto red = test::addMaterial(s, test::pbr({0.7f, 0.1f, 0.1f}, 0, 1, 0));
+    const auto green = test::addMaterial(s, test::pbr({0.1f, 0.7f, 0.1f}, 0, 1, 0));
+    Material lamp = test::pbr({0, 0, 0}, 0, 1, 0);
     lamp.emission = {15, 15, 15};
     const auto light = test::addMaterial(s, lamp);
     test::addQuad(s, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, white);    // floor
@@ -228,11 +192,11 @@ double rmse(const Framebuffer& a, const Framebuffer& b) {
 TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfTheSamples) {
     const Scene s = boxWithLightPanel();
     const auto renderWith = [&s](int samples) {
-        RenderSettings r = pathPicture(16, samples);
+        RenderSettings r = test::pathPicture(16, samples);
         r.seed = 3;  // noise independent of the reference's
-        return renderNaive(s, r);
+        return test::renderPath(s, r);
     };
-    const Framebuffer reference = renderNaive(s, pathPicture(16, 1024));
+    const Framebuffer reference = test::renderPath(s, test::pathPicture(16, 1024));
     const double e16 = rmse(renderWith(16), reference), e64 = rmse(renderWith(64), reference);
     std::printf("box RMSE: 16 paths %.4f, 64 paths %.4f\n", e16, e64);
     EXPECT_GT(e16, 0);
@@ -241,7 +205,7 @@ TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfTheSamples) {
 
 TEST(PathTracer, TheLightPanelLightsTheBoxFromItsFrontOnly) {
     Scene s = boxWithLightPanel();
-    const Framebuffer lit = renderNaive(s, pathPicture(16, 16));
+    const Framebuffer lit = test::renderPath(s, test::pathPicture(16, 16));
     double floor = 0;
     for (int x = 4; x < 12; ++x) floor += lit.at(x, 14).g;
     EXPECT_GT(floor / 8, 0.05) << "the floor below the panel is lit";
@@ -253,7 +217,7 @@ TEST(PathTracer, TheLightPanelLightsTheBoxFromItsFrontOnly) {
         flipped.add<Triangle>(t, s.primitives.material(i));
     }
     s.primitives = flipped;
-    const Framebuffer dark = renderNaive(s, pathPicture(16, 16));
+    const Framebuffer dark = test::renderPath(s, test::pathPicture(16, 16));
     double darkFloor = 0;
     for (int x = 4; x < 12; ++x) darkFloor += dark.at(x, 14).g;
     EXPECT_LT(darkFloor, 0.2 * floor);
@@ -287,17 +251,18 @@ TEST(PathTracer, MetallicRoughnessTextureScalesTheFactors) {
         s.flatten();
         return s;
     };
-    Material textured = pbr({0.9f, 0.6f, 0.2f}, 1, 1);
+    Material textured = test::pbr({0.9f, 0.6f, 0.2f}, 1, 1);
     textured.metallicRoughnessTexture = 0;
-    const Scene a = sphereWith(textured), b = sphereWith(pbr({0.9f, 0.6f, 0.2f}, 0.5f, 0.25f));
+    const Scene a = sphereWith(textured), b = sphereWith(test::pbr({0.9f, 0.6f, 0.2f}, 0.5f, 0.25f));
     const ConstantTextures texture(a, {0.7f, 0.25f, 0.5f});
-    const RenderSettings settings = pathPicture(12, 4);
+    const RenderSettings settings = test::pathPicture(12, 4);
     const NaiveAccelerator accelA(a.primitives), accelB(b.primitives);
     RenderStats stats;
     const Framebuffer viaTexture = render(a, accelA, settings, stats, {}, &texture);
     const Framebuffer viaFactors = render(b, accelB, settings, stats);
     EXPECT_EQ(viaTexture.pixels(), viaFactors.pixels());
-    EXPECT_NE(viaTexture.pixels(), renderNaive(a, settings).pixels()) << "without the lookups the texture is white";
+    EXPECT_NE(viaTexture.pixels(), test::renderPath(a, settings).pixels())
+        << "without the lookups the texture is white";
 }
 
 // The light types light the path tracer as they light the Whitted tracer: a directional light of
@@ -313,10 +278,10 @@ TEST(PathTracer, DirectionalAndInverseSquareLightsMatchTheirFormulas) {
         s.camera.fovDegrees = 1;  // the centre pixel sees the point (0, 0, 0)
         // small, so that the ray offset (relative to the scene's size) leaves the distance to the bulb as it is
         test::addQuad(s, {-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3},
-                      test::addMaterial(s, pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0)));
+                      test::addMaterial(s, test::pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0)));
         s.lights.push_back(light);
         s.flatten();
-        return renderNaive(s, pathPicture(3, 4)).at(1, 1).g;
+        return test::renderPath(s, test::pathPicture(3, 4)).at(1, 1).g;
     };
     Light sun;
     sun.type = Light::Type::Directional;

@@ -17,6 +17,7 @@
 #include "import/load_scene.h"
 #include "progress.h"
 #include "render/cutout.h"
+#include "render/environment_light.h"
 #include "render/memory_estimate.h"
 #include "render/renderer.h"
 #include "render/tiles.h"
@@ -166,6 +167,7 @@ Scene loadWithCamera(const RenderOptions& o) {
     import.aspect = double(o.render.width) / double(o.render.height);
     import.emittersLight = o.render.integrator == Integrator::Path;
     Scene scene = loadScene(o.scenePath, import);
+    if (o.environment) setEnvironmentImage(scene, *o.environment);
     applyOverrides(scene.camera, cameraOverrides(o), scene.primitives.bounds(), Real(import.aspect));
     return scene;
 }

@@ -51,7 +51,8 @@ struct RenderOptions {
     // For --stats-json: the command line as given, and every option's value (given or default).
     std::vector<std::string> arguments;
     std::vector<std::pair<std::string, std::vector<std::string>>> optionValues;
-    std::optional<double> maxMemoryGb;  // --max-memory GB; default: rt::defaultMemoryLimit()
+    std::optional<double> maxMemoryGb;       // --max-memory GB; default: rt::defaultMemoryLimit()
+    std::optional<std::string> environment;  // --environment FILE: the path tracer's sky image
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.

@@ -75,6 +75,9 @@ void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
         ->check(numberIn(0, rt::kMaxBounces))
         ->capture_default_str()
         ->group(group);
+    app.add_option("--environment", o.environment,
+                   "Equirectangular image (any format OpenImageIO reads) lighting the scene as its sky, +y up")
+        ->group(group);
     app.add_option("--clamp", o.render.clampRadiance,
                    "Cap indirect samples at this value, trading bias for fewer fireflies (default 0: off)")
         ->check(CLI::NonNegativeNumber)
