@@ -22,8 +22,8 @@ public:
     TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes = 256);
     ~TextureFiles() override;
 
-    Color lookup(std::uint32_t index, float s, float t) const override;
-    Color data(std::uint32_t index, float s, float t) const override;
+    Color lookup(std::uint32_t index, const TexCoord& at) const override;
+    Color data(std::uint32_t index, const TexCoord& at) const override;
     float alpha(std::uint32_t index, float s, float t, bool mask) const override;
     bool hasAlpha(std::uint32_t index, bool mask) const override;
 

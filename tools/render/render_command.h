@@ -52,6 +52,7 @@ struct RenderOptions {
     std::vector<std::string> arguments;
     std::vector<std::pair<std::string, std::vector<std::string>>> optionValues;
     std::optional<double> maxMemoryGb;  // --max-memory GB; default: rt::defaultMemoryLimit()
+    float textureCacheMb = 256;         // --texture-cache MB: OpenImageIO's texture cache
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.
