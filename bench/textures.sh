@@ -27,7 +27,7 @@ best_of_3() { for _ in 1 2 3; do seconds "$@"; done | sort -g | head -1; }
 
 printf '%-48s %10s %10s %8s\n' model textured untextured ratio
 for model in glb/Duck/Duck.glb gltf/Suzanne/Suzanne.gltf gltf/LightsPunctualLamp/LightsPunctualLamp.gltf \
-    obj/scrub-pine/scrub-pine.obj glb/NormalTangentMirrorTest/NormalTangentMirrorTest.glb; do
+    obj/scrub-pine/scrubPine.obj glb/NormalTangentMirrorTest/NormalTangentMirrorTest.glb; do
     "$convert" "$shared/models/$model" -o "$work/scene.xml" 2>/dev/null
     sed -E -i 's/ (texture|emission_texture|alpha_texture|normal_texture|metallic_roughness_texture)="[^"]*"//g' \
         "$work/scene.xml"

@@ -38,6 +38,7 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
     for (const Light& light : scene.lights)
         if (light.falloff == Light::Falloff::None) ambientLight_ += light.color;
     for (const Material& m : scene.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
+    for (const Texture& t : scene.textures) filtered_ = filtered_ || (images && t.kind == Texture::Kind::Image);
 }
 
 Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
@@ -58,8 +59,8 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
         Color sample = scene_.background;
         if (seen) {  // the AOVs take the point, normal and colour the shading uses
             const RayDifferential differential =
-                images_ ? camera_.differentialAt(Real(x) + sx, Real(y) + sy, ray, differentialScale_)
-                        : RayDifferential{};
+                filtered_ ? camera_.differentialAt(Real(x) + sx, Real(y) + sy, ray, differentialScale_)
+                          : RayDifferential{};
             const SurfacePoint surface = shadedSurfaceAt(scene_, ray, hit, images_, differential);
             if (aovs) addHit(*aovs, surface, hit, i == 0);
             sample = shade(ray, hit, surface, 0, false, rng, counters, differential.radiusAt(hit.t));
@@ -201,7 +202,7 @@ Color Tracer::transmittance(const Ray& ray, Real distance, RenderCounters& count
 }
 
 RayDifferential Tracer::secondary(const Vec3& d, Real cone, float widen) const {
-    return images_ ? RayDifferential::cone(d, cone, coneSpread_ + Real(widen)) : RayDifferential{};
+    return filtered_ ? RayDifferential::cone(d, cone, coneSpread_ + Real(widen)) : RayDifferential{};
 }
 
 Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,

@@ -87,6 +87,7 @@ private:
     Real coneSpread_;
     const ImageTextures* images_;
     bool anyGlass_ = false;  // a material lets light through: shadow rays must look past hits
+    bool filtered_ = false;  // image textures are read: rays carry differentials
 };
 
 }  // namespace rt

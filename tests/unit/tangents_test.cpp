@@ -21,7 +21,8 @@ Scene normalMappedTriangle(const std::vector<float>& tangent, const Transform& x
     Model tri;
     tri.triangleVertices = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     tri.vertexUvs = {0, 0, 1, 0, 0, 1};
-    for (int c = 0; c < 3 && !tangent.empty(); ++c) tri.vertexTangents.insert(tri.vertexTangents.end(), tangent.begin(), tangent.end());
+    for (int c = 0; c < 3 && !tangent.empty(); ++c)
+        tri.vertexTangents.insert(tri.vertexTangents.end(), tangent.begin(), tangent.end());
     s.models.push_back(tri);
     s.instances.push_back({0, 0, xf});
     s.flatten();
