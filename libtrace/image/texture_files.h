@@ -1,7 +1,8 @@
 // Image textures read through OpenImageIO's TextureSystem: any format it reads, mip-mapped on
-// the fly, cached (memory bounded by the cache size, whatever the files' total size) and
-// thread-safe. 8- and 16-bit images are taken as sRGB-encoded, as glTF's base colour and
-// emissive textures are, and decoded to linear; float images (EXR, HDR) as linear.
+// the fly, cached (memory bounded by the cache size for tiled, MIP-mapped files; untiled ones,
+// PNG and JPEG, are held a whole level at a time: docs/benchmarks.md) and thread-safe. 8- and 16-bit images are taken
+// as sRGB-encoded, as glTF's base colour and emissive textures are, and decoded to linear; float images (EXR, HDR) as
+// linear.
 #pragma once
 
 #include <memory>

@@ -74,8 +74,8 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
         ->check(rt::tool::numberIn(0.01, 1e6))
         ->group(group);
     app.add_option("--texture-cache", o.textureCacheMb,
-                   "Memory for image textures, in MB: OpenImageIO keeps the tiles it reads within it, whatever the "
-                   "textures' total size")
+                   "Memory for image textures, in MB: OpenImageIO keeps the tiles it reads within it (tiled, "
+                   "MIP-mapped pictures; untiled ones are held a level at a time)")
         ->check(rt::tool::numberIn(1.0, 1e6))
         ->capture_default_str()
         ->group(group);
