@@ -10,23 +10,30 @@
 
 namespace rt {
 
+bool uvDerivatives(const Triangle& tri, const CornerUvs& uv, Vec3& dpdu, Vec3& dpdv, Real* uvArea) {
+    const Vec3 e1 = tri.p1 - tri.p0, e2 = tri.p2 - tri.p0;
+    const auto& t = uv.values;
+    const Real du1 = t[2] - t[0], dv1 = t[3] - t[1], du2 = t[4] - t[0], dv2 = t[5] - t[1];
+    const Real det = du1 * dv2 - du2 * dv1;
+    if (!(std::abs(det) > 0)) return false;
+    dpdu = (e1 * dv2 - e2 * dv1) / det;
+    dpdv = (e2 * du1 - e1 * du2) / det;
+    if (uvArea) *uvArea = det;
+    return true;
+}
+
 namespace {
 
-// dP/du and dP/dv of a triangle; `orientation` is the sign of its texture-space area (negative
-// where the texture is mirrored). False for a triangle whose texture coordinates are degenerate.
+// A triangle's texture frame; `mirrored` where its texture-space area is negative (the texture
+// is mirrored). False for a triangle whose texture coordinates are degenerate.
 struct FaceFrame {
     Vec3 dpdu, dpdv;
     bool mirrored = false;
 };
 
 bool faceFrame(const Triangle& tri, const CornerUvs& uv, FaceFrame& f) {
-    const Vec3 e1 = tri.p1 - tri.p0, e2 = tri.p2 - tri.p0;
-    const auto& t = uv.values;
-    const Real du1 = t[2] - t[0], dv1 = t[3] - t[1], du2 = t[4] - t[0], dv2 = t[5] - t[1];
-    const Real det = du1 * dv2 - du2 * dv1;
-    if (!(std::abs(det) > 0)) return false;
-    f.dpdu = (e1 * dv2 - e2 * dv1) / det;
-    f.dpdv = (e2 * du1 - e1 * du2) / det;
+    Real det = 0;
+    if (!uvDerivatives(tri, uv, f.dpdu, f.dpdv, &det)) return false;
     f.mirrored = det < 0;
     return true;
 }
@@ -69,7 +76,7 @@ public:
     TangentBuilder(Primitives& prims, const std::function<bool(std::uint32_t)>& wanted) : prims_(prims) {
         const TriangleShading& shading = prims.triangleShading();
         for (std::uint32_t i = 0; i < std::uint32_t(shading.uvs.size()); ++i)
-            if (shading.uvs.find(i) && wanted(prims.material(i))) triangles_.push_back(i);
+            if (shading.uvs.find(i) && wanted(prims.material(i)) && !fromFile(shading, i)) triangles_.push_back(i);
     }
 
     void run() {
@@ -78,6 +85,12 @@ public:
     }
 
 private:
+    // Whether triangle i has its tangents already (a file's: a handedness of +1 or -1, not the 0 of none).
+    static bool fromFile(const TriangleShading& shading, std::uint32_t i) {
+        const CornerTangents* t = shading.tangents.find(i);
+        return t && t->values[3] != 0;
+    }
+
     Corner corner(std::uint32_t i, int c, bool mirrored) const {
         const Triangle& tri = prims_.all<Triangle>()[i];
         const CornerNormals* normals = prims_.triangleShading().normals.find(i);

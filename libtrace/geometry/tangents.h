@@ -13,8 +13,14 @@
 
 namespace rt {
 
-// Gives every triangle that has texture coordinates and whose material `wanted` names
-// per-corner tangents (Primitives::triangleShading().tangents), in the space of its vertices.
+// dP/du and dP/dv of a triangle with texture coordinates `uv` (constant over it); `uvArea`, if
+// given, receives twice its signed area in texture space (negative: the texture is mirrored).
+// False when the texture coordinates are degenerate (a line or a point).
+bool uvDerivatives(const Triangle& tri, const CornerUvs& uv, Vec3& dpdu, Vec3& dpdv, Real* uvArea = nullptr);
+
+// Gives every triangle that has texture coordinates and whose material `wanted` names, and
+// no tangents from its file (glTF's TANGENT), per-corner tangents (Primitives::triangleShading().tangents), in the
+// space of its vertices.
 void generateTangents(Primitives& prims, const std::function<bool(std::uint32_t material)>& wanted);
 
 }  // namespace rt

@@ -68,14 +68,15 @@ struct TextureFiles::Impl {
     std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> memoryReaders;
     std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> embeddedBytes;
 
-    // The first three channels at (s, t) as stored (a grey image's one in all three); `c` is
-    // left as it is when the image cannot be read.
-    bool sample(const Entry& e, float s, float t, Color& c) const {
+    // The first three channels at `at` as stored (a grey image's one in all three), filtered
+    // over the footprint its derivatives give (mip-mapped, anisotropic: OpenImageIO's default);
+    // `c` is left as it is when the image cannot be read.
+    bool sample(const Entry& e, const TexCoord& at, Color& c) const {
         if (e.file.empty()) return false;
         float rgb[3] = {c.r, c.g, c.b};
         OIIO::TextureOpt options = e.options;  // per call: the system may write to it
-        // No ray differentials yet: the finest level, filtered bilinearly.
-        if (!system->texture(e.file, options, s, t, 0, 0, 0, 0, e.channels, rgb)) return false;
+        if (!system->texture(e.file, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy, e.channels, rgb))
+            return false;
         if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
         c = {rgb[0], rgb[1], rgb[2]};
         return true;
@@ -145,16 +146,16 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
 // with it (OpenImageIO 2.4 keeps it otherwise: LeakSanitizer found it after every render).
 TextureFiles::~TextureFiles() { OIIO::TextureSystem::destroy(impl_->system, /*teardown_imagecache=*/true); }
 
-Color TextureFiles::lookup(std::uint32_t index, float s, float t) const {
+Color TextureFiles::lookup(std::uint32_t index, const TexCoord& at) const {
     const Impl::Entry& e = impl_->entries[index];
     Color c{1, 1, 1};
-    if (!impl_->sample(e, s, t, c) || !e.srgb) return c;
+    if (!impl_->sample(e, at, c) || !e.srgb) return c;
     return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)};
 }
 
-Color TextureFiles::data(std::uint32_t index, float s, float t) const {
+Color TextureFiles::data(std::uint32_t index, const TexCoord& at) const {
     Color c{0.5f, 0.5f, 1};
-    impl_->sample(impl_->entries[index], s, t, c);
+    impl_->sample(impl_->entries[index], at, c);
     return c;
 }
 
@@ -165,6 +166,7 @@ float TextureFiles::alpha(std::uint32_t index, float s, float t, bool mask) cons
     float a = 1;
     OIIO::TextureOpt options = e.options;
     options.firstchannel = channel;
+    // Read during traversal, where rays carry no differentials: the finest level.
     if (!impl_->system->texture(e.file, options, s, t, 0, 0, 0, 0, 1, &a)) return 1;
     return a;
 }

@@ -1,7 +1,8 @@
 // Image textures read through OpenImageIO's TextureSystem: any format it reads, mip-mapped on
-// the fly, cached (memory bounded by the cache size, whatever the files' total size) and
-// thread-safe. 8- and 16-bit images are taken as sRGB-encoded, as glTF's base colour and
-// emissive textures are, and decoded to linear; float images (EXR, HDR) as linear.
+// the fly, cached (memory bounded by the cache size for tiled, MIP-mapped files; untiled ones,
+// PNG and JPEG, are held a whole level at a time: docs/benchmarks.md) and thread-safe. 8- and 16-bit images are taken
+// as sRGB-encoded, as glTF's base colour and emissive textures are, and decoded to linear; float images (EXR, HDR) as
+// linear.
 #pragma once
 
 #include <memory>
@@ -22,8 +23,8 @@ public:
     TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes = 256);
     ~TextureFiles() override;
 
-    Color lookup(std::uint32_t index, float s, float t) const override;
-    Color data(std::uint32_t index, float s, float t) const override;
+    Color lookup(std::uint32_t index, const TexCoord& at) const override;
+    Color data(std::uint32_t index, const TexCoord& at) const override;
     float alpha(std::uint32_t index, float s, float t, bool mask) const override;
     bool hasAlpha(std::uint32_t index, bool mask) const override;
 

@@ -272,9 +272,9 @@ std::vector<float> GltfAccessorReader::attribute(int accessor, int components, c
     const int type = gltf_.accessors[std::size_t(accessor)].type;
     const bool colorWithAlpha = components == 3 && type == TINYGLTF_TYPE_VEC4;
     const std::vector<double> values = readAll(accessor,
-                                               colorWithAlpha    ? TINYGLTF_TYPE_VEC4
-                                               : components == 2 ? TINYGLTF_TYPE_VEC2
-                                                                 : TINYGLTF_TYPE_VEC3,
+                                               colorWithAlpha || components == 4 ? TINYGLTF_TYPE_VEC4
+                                               : components == 2                 ? TINYGLTF_TYPE_VEC2
+                                                                                 : TINYGLTF_TYPE_VEC3,
                                                what);
     const std::size_t stride = colorWithAlpha ? 4 : std::size_t(components);
     std::vector<float> out;

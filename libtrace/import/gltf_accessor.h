@@ -26,7 +26,7 @@ public:
     // Throws if any value is NaN or infinite. `what` names the accessor's use in messages.
     std::vector<Point3f> points(int accessor, const std::string& what) const;
 
-    // A per-vertex attribute (NORMAL, TEXCOORD_0, COLOR_0) of `components` floats per vertex,
+    // A per-vertex attribute (NORMAL, TEXCOORD_0, COLOR_0, TANGENT) of `components` floats per vertex,
     // from a VEC2, VEC3 or VEC4 accessor of floats or normalized integers; a VEC4 colour
     // loses its alpha. Throws if a value is NaN or infinite or the type does not fit.
     std::vector<float> attribute(int accessor, int components, const std::string& what) const;

@@ -309,7 +309,7 @@ private:
         return assembly_.addModel(std::move(model));
     }
 
-    // A primitive's NORMAL, TEXCOORD_0 and COLOR_0. One whose count differs from POSITION's
+    // A primitive's NORMAL, TEXCOORD_0, COLOR_0 and TANGENT. One whose count differs from POSITION's
     // is left out with a note: the geometry is still good.
     VertexData vertexData(const tinygltf::Primitive& prim, std::size_t vertices, const std::string& what) {
         VertexData data;
@@ -326,6 +326,7 @@ private:
         read("NORMAL", 3, data.normals);
         read("TEXCOORD_0", 2, data.uvs);
         read("COLOR_0", 3, data.colors);
+        read("TANGENT", 4, data.tangents);
         return data;
     }
 

@@ -33,6 +33,7 @@ constexpr CornerArray kCornerArrays[] = {
     {&Model::vertexNormals, &Corner::normal, 3, 0},
     {&Model::vertexUvs, &Corner::uv, 2, 0},
     {&Model::vertexColors, &Corner::color, 3, 1},
+    {&Model::vertexTangents, &Corner::tangent, 4, 0},
 };
 
 }  // namespace

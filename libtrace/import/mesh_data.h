@@ -22,22 +22,23 @@ bool appendTriangle(Model& model, const Point3f& a, const Point3f& b, const Poin
 // (each a pointer to that vertex's floats, or null).
 struct Corner {
     Point3f point;
-    const float* normal = nullptr;  // 3 floats
-    const float* uv = nullptr;      // 2 floats, glTF's convention (v down the image)
-    const float* color = nullptr;   // 3 floats, linear RGB
+    const float* normal = nullptr;   // 3 floats
+    const float* uv = nullptr;       // 2 floats, glTF's convention (v down the image)
+    const float* color = nullptr;    // 3 floats, linear RGB
+    const float* tangent = nullptr;  // 4 floats: x y z and the handedness w
 };
 
 // A mesh's per-vertex data as the importers read it: 3, 2 and 3 floats per vertex, each
 // array empty when the mesh does not have it.
 struct VertexData {
-    std::vector<float> normals, uvs, colors;
+    std::vector<float> normals, uvs, colors, tangents;
 
     // The corner at vertex `v` of `points`, with the data there is for it.
     Corner corner(const std::vector<Point3f>& points, std::size_t v) const {
         const auto at = [v](const std::vector<float>& values, std::size_t n) {
             return values.empty() ? nullptr : &values[v * n];
         };
-        return {points[v], at(normals, 3), at(uvs, 2), at(colors, 3)};
+        return {points[v], at(normals, 3), at(uvs, 2), at(colors, 3), at(tangents, 4)};
     }
 };
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/ray.h"
+#include "render/ray_differential.h"
 #include "scene/scene.h"
 
 namespace rt {
@@ -19,6 +20,15 @@ public:
         const Vec3 d = forward_ + right_ * (x - halfWidth_) - up_ * (y - halfHeight_);
         return {origin_, normalize(d)};
     }
+
+    // The differential of `ray`, the ray at(x, y): how the directions of the rays one pixel to
+    // the right and one down differ from it, times `scale` (render/ray_differential.h).
+    RayDifferential differentialAt(Real x, Real y, const Ray& ray, Real scale) const {
+        return {
+            {}, (at(x + 1, y).direction - ray.direction) * scale, {}, (at(x, y + 1).direction - ray.direction) * scale};
+    }
+    // The angle one pixel subtends at the image's centre, in radians: how fast a ray cone widens.
+    Real pixelAngle() const { return 1 / length(forward_); }
 
     int width() const { return width_; }
     int height() const { return height_; }

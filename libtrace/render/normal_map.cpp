@@ -44,8 +44,11 @@ void applyNormalMap(const Scene& scene, const Material& m, const Hit& hit, const
     s.shadingNormal = back ? -normalize(perturbed) : normalize(perturbed);
 }
 
-SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images) {
+SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images,
+                             const RayDifferential& differential) {
     SurfacePoint s = surfaceAt(scene.primitives, ray, hit);
+    if (images && differential != RayDifferential{})
+        setUvDerivatives(scene.primitives, ray.direction, hit, differential, s);
     applyNormalMap(scene, scene.materialOf(hit.prim), hit, images, s);
     return s;
 }

@@ -6,6 +6,7 @@
 // decides ray offsets and sides, and a surface seen from behind gets the mirrored result.
 #pragma once
 
+#include "render/ray_differential.h"
 #include "render/surface.h"
 #include "render/texture.h"
 #include "scene/scene.h"
@@ -18,7 +19,9 @@ namespace rt {
 void applyNormalMap(const Scene& scene, const Material& m, const Hit& hit, const ImageTextures* images,
                     SurfacePoint& s);
 
-// The surface at `hit` as shading sees it: surfaceAt with the material's normal map applied.
-SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images);
+// The surface at `hit` as shading sees it: surfaceAt with the texture coordinates' derivatives
+// for the ray's differential (none: zero, textures read unfiltered) and the material's normal map applied.
+SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images,
+                             const RayDifferential& differential = {});
 
 }  // namespace rt

@@ -19,6 +19,8 @@ struct SurfacePoint {
     Vec3 shadowOrigin;      // where shadow rays leave from, before the offset along geometricNormal
     Color tint{1, 1, 1};    // the vertex colour
     Real u = 0, v = 0;      // texture coordinates
+    // Their change from one pixel to the next (render/ray_differential.h); zero: read unfiltered.
+    float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
 };
 
 // How far secondary rays start off a surface, scaled to the size of the scene: the error of a

@@ -21,9 +21,24 @@ Color checker(const Texture& t, const SurfacePoint& s) {
 UvTransform::UvTransform(const Texture& t)
     : scale_(t.scale), offset_(t.offset), cos_(std::cos(t.rotation)), sin_(std::sin(t.rotation)) {}
 
-std::array<float, 2> UvTransform::operator()(Real u, Real v) const {
-    const float su = float(u) * scale_[0], sv = float(v) * scale_[1];
-    return {cos_ * su + sin_ * sv + offset_[0], -sin_ * su + cos_ * sv + offset_[1]};
+std::array<float, 2> UvTransform::linear(float u, float v) const {
+    const float su = u * scale_[0], sv = v * scale_[1];
+    return {cos_ * su + sin_ * sv, -sin_ * su + cos_ * sv};
+}
+
+TexCoord UvTransform::operator()(Real u, Real v) const {
+    const std::array<float, 2> st = linear(float(u), float(v));
+    return {st[0] + offset_[0], st[1] + offset_[1]};
+}
+
+TexCoord UvTransform::operator()(const SurfacePoint& s) const {
+    TexCoord c = (*this)(s.u, s.v);
+    const std::array<float, 2> dx = linear(s.dudx, s.dvdx), dy = linear(s.dudy, s.dvdy);
+    c.dsdx = dx[0];
+    c.dtdx = dx[1];
+    c.dsdy = dy[0];
+    c.dtdy = dy[1];
+    return c;
 }
 
 ImageTextures::ImageTextures(const Scene& scene) : transforms_(scene.textures.begin(), scene.textures.end()) {}
@@ -38,8 +53,7 @@ Color textureAt(const Scene& scene, std::uint32_t index, const SurfacePoint& s, 
     const Texture& t = scene.textures[index];
     if (t.kind == Texture::Kind::Checker) return checker(t, s);
     if (!images) return {1, 1, 1};
-    const std::array<float, 2> uv = images->uvTransform(index)(s.u, s.v);
-    return (images->*read)(index, uv[0], uv[1]);
+    return (images->*read)(index, images->uvTransform(index)(s));
 }
 
 }  // namespace
@@ -61,6 +75,13 @@ Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint&
     return m.emissionTexture ? m.emission * textureColor(scene, *m.emissionTexture, s, images) : m.emission;
 }
 
+float glossySpread(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
+    if (!m.metallicRoughnessTexture || !m.metallicRoughness || !images) return m.spread;
+    const float roughness =
+        m.metallicRoughness->roughness * textureData(scene, *m.metallicRoughnessTexture, s, images).g;
+    return roughness * roughness;
+}
+
 namespace {
 
 // The image texture giving the material's alpha, if any; `mask` says how it is read.
@@ -77,8 +98,8 @@ float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const
     bool mask = false;
     const std::optional<std::uint32_t> image = alphaImage(scene, m, images, mask);
     if (!image) return m.alpha;
-    const std::array<float, 2> uv = images->uvTransform(*image)(u, v);
-    return m.alpha * images->alpha(*image, uv[0], uv[1], mask);
+    const TexCoord at = images->uvTransform(*image)(u, v);
+    return m.alpha * images->alpha(*image, at.s, at.t, mask);
 }
 
 bool cutsOut(const Scene& scene, const Material& m, const ImageTextures* images) {

@@ -13,14 +13,25 @@
 
 namespace rt {
 
+// Where a texture is read: coordinates (s, t) and their change from one pixel to the next,
+// which sets the filter's footprint (all zero: the finest level, bilinear).
+struct TexCoord {
+    float s = 0, t = 0;
+    float dsdx = 0, dtdx = 0, dsdy = 0, dtdy = 0;
+};
+
 // A texture's coordinate transform, as KHR_texture_transform defines it: scaled, then rotated,
 // then offset. The rotation's cosine and sine are computed once per texture, not per hit.
 class UvTransform {
 public:
     explicit UvTransform(const Texture& t);
-    std::array<float, 2> operator()(Real u, Real v) const;
+    TexCoord operator()(Real u, Real v) const;
+    // The surface point's coordinates with their derivatives, which take the linear part.
+    TexCoord operator()(const SurfacePoint& s) const;
 
 private:
+    std::array<float, 2> linear(float u, float v) const;  // scaled and rotated
+
     std::array<float, 2> scale_, offset_;
     float cos_, sin_;
 };
@@ -29,12 +40,12 @@ class ImageTextures {
 public:
     explicit ImageTextures(const Scene& scene);  // takes the transforms of the scene's textures
     virtual ~ImageTextures() = default;
-    // Linear RGB of the scene's image texture `index` at (s, t), texture coordinates already
-    // transformed (uvTransform), with the texture's wrap modes. Thread-safe.
-    virtual Color lookup(std::uint32_t index, float s, float t) const = 0;
+    // Linear RGB of the scene's image texture `index` at `at`, texture coordinates already
+    // transformed (uvTransform), filtered over its footprint, with the texture's wrap modes. Thread-safe.
+    virtual Color lookup(std::uint32_t index, const TexCoord& at) const = 0;
     // The same values as stored, not colour-decoded (normal maps); (0.5, 0.5, 1), the
     // unperturbed normal, where the image cannot be read. Thread-safe.
-    virtual Color data(std::uint32_t index, float s, float t) const = 0;
+    virtual Color data(std::uint32_t index, const TexCoord& at) const = 0;
     // The opacity of image texture `index` at (s, t): its alpha channel; an image without one
     // gives its first channel if `mask` (a greyscale mask, as OBJ's map_d), else 1. Not
     // colour-decoded. Thread-safe.
@@ -56,6 +67,10 @@ Color textureData(const Scene& scene, std::uint32_t index, const SurfacePoint& s
 // emits there (its emission times its emission texture).
 Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
 Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
+// The sigma of the material's glossy lobe at the surface point, for its reflection and, on glass,
+// its transmission: Material::spread; with a metallic-roughness texture, (roughness times the
+// texture's green)^2, the GGX alpha that spread is made from (import/phong_from_pbr.h).
+float glossySpread(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
 // The opacity of the material at texture coordinates (u, v) (Material::alpha, alphaTexture);
 // a checker or no image lookups: alpha alone.
 float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const ImageTextures* images);

@@ -30,12 +30,15 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
       epsilon_(secondaryRayOffset(scene.primitives)),
+      differentialScale_(std::max(Real(0.125), 1 / std::sqrt(Real(settings.pixelSamples)))),
+      coneSpread_(camera_.pixelAngle() * differentialScale_),
       images_(images) {
     // Thesis 2.1.3: i_a is the sum of the lights' intensities. The colour of a light with the
     // inverse-square falloff is what it gives at distance 1, no irradiance: it adds nothing.
     for (const Light& light : scene.lights)
         if (light.falloff == Light::Falloff::None) ambientLight_ += light.color;
     for (const Material& m : scene.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
+    for (const Texture& t : scene.textures) filtered_ = filtered_ || (images && t.kind == Texture::Kind::Image);
 }
 
 Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
@@ -55,9 +58,12 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
         hits += seen;
         Color sample = scene_.background;
         if (seen) {  // the AOVs take the point, normal and colour the shading uses
-            const SurfacePoint surface = shadedSurfaceAt(scene_, ray, hit, images_);
+            const RayDifferential differential =
+                filtered_ ? camera_.differentialAt(Real(x) + sx, Real(y) + sy, ray, differentialScale_)
+                          : RayDifferential{};
+            const SurfacePoint surface = shadedSurfaceAt(scene_, ray, hit, images_, differential);
             if (aovs) addHit(*aovs, surface, hit, i == 0);
-            sample = shade(ray, hit, surface, 0, false, rng, counters);
+            sample = shade(ray, hit, surface, 0, false, rng, counters, differential.radiusAt(hit.t));
         }
         if (isFinite(sample))
             sum += sample;
@@ -103,15 +109,17 @@ void Tracer::average(PixelAovs& a, int samples, int hits, const RenderCounters& 
     a.allTests = float(all.intersectionTests - allBefore.intersectionTests) * perSample;
 }
 
-Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const {
+Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
+                    const RayDifferential& differential) const {
     Hit hit;
     RayCounters& work = depth == 0 ? counters.camera : counters.reflection;
     if (!accel_.intersect(ray, kInfinity, hit, work)) return scene_.background;
-    return shade(ray, hit, shadedSurfaceAt(scene_, ray, hit, images_), depth, inBundle, rng, counters);
+    return shade(ray, hit, shadedSurfaceAt(scene_, ray, hit, images_, differential), depth, inBundle, rng, counters,
+                 differential.radiusAt(hit.t));
 }
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
-                    RenderCounters& counters) const {
+                    RenderCounters& counters, Real cone) const {
     const Material& m = scene_.materialOf(hit.prim);
     const Color color = surfaceColor(scene_, m, s, images_);
     const Vec3 toViewer = -ray.direction;
@@ -133,10 +141,10 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
         const RefractionSplit split =
             splitAt(m.transmission, ray.direction, s.shadingNormal, s.geometricNormal, s.frontFace);
         mirrorWeight += m.transmission.weight * split.reflected;
-        c += transmitted(s, split, m.transmission, depth, inBundle, rng, counters);
+        c += transmitted(s, m, split, depth, inBundle, rng, counters, cone);
     }
     if (mirrorWeight > 0 && depth < settings_.reflectionDepth)
-        c += reflection(s, ray.direction, m, depth, inBundle, rng, counters) * mirrorWeight;
+        c += reflection(s, ray.direction, m, depth, inBundle, rng, counters, cone) * mirrorWeight;
     // A ray that leaves a volume has crossed it from where it entered (render/refraction.h).
     if (m.transmission.absorbs() && !s.frontFace) c = c * absorbed(m.transmission, hit.t);
     return c;
@@ -193,39 +201,52 @@ Color Tracer::transmittance(const Ray& ray, Real distance, RenderCounters& count
     return {};
 }
 
+RayDifferential Tracer::secondary(const Vec3& d, Real cone, float widen) const {
+    return filtered_ ? RayDifferential::cone(d, cone, coneSpread_ + Real(widen)) : RayDifferential{};
+}
+
 Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
-                         SampleRng& rng, RenderCounters& counters) const {
+                         SampleRng& rng, RenderCounters& counters, Real cone) const {
     const Vec3 origin = s.point + s.geometricNormal * epsilon_;
     Vec3 r = mirror(dir, s.shadingNormal);
     if (dot(r, s.geometricNormal) <= 0) r = mirror(r, s.geometricNormal);  // a shading normal can send it inside
-    if (!settings_.glossyReflections || !(m.spread > 0)) {
+    return lobe({origin, r}, s.geometricNormal, glossySpread(scene_, m, s, images_), depth, inBundle, rng, counters,
+                cone);
+}
+
+Color Tracer::lobe(const Ray& axis, const Vec3& side, float sigma, int depth, bool inBundle, SampleRng& rng,
+                   RenderCounters& counters, Real cone) const {
+    if (!settings_.glossyReflections || !(sigma > 0)) {
         ++counters.reflection.rays;
-        return trace({origin, r}, depth + 1, inBundle, rng, counters);
+        return trace(axis, depth + 1, inBundle, rng, counters, secondary(axis.direction, cone, 2 * sigma));
     }
-    // Glossy: directions around r, offset in the plane across r by a 2-D normal
-    // distribution with sigma = spread (about the angle in radians, for small spreads).
+    // Directions around the axis, offset in the plane across it by a 2-D normal distribution
+    // with this sigma (about the angle in radians, for small sigmas).
     Vec3 t, b;
-    orthonormalBasis(r, t, b);
+    orthonormalBasis(axis.direction, t, b);
     const int samples = inBundle ? 1 : settings_.distributedSamples;
     Color sum;
     for (int i = 0; i < samples; ++i) {
         Real g1, g2;
         rng.normalPair(g1, g2);
-        Vec3 d = normalize(r + (t * g1 + b * g2) * Real(m.spread));
-        if (dot(d, s.geometricNormal) <= 0) d = mirror(d, s.geometricNormal);  // below the surface: fold it back above
+        Vec3 d = normalize(axis.direction + (t * g1 + b * g2) * Real(sigma));
+        if (dot(d, side) <= 0) d = mirror(d, side);  // across the surface: fold it back
         ++counters.reflection.rays;
-        sum += trace({origin, d}, depth + 1, true, rng, counters);
+        sum += trace({axis.origin, d}, depth + 1, true, rng, counters, secondary(d, cone, 0));
     }
     return samples == 1 ? sum : sum * (1.0f / float(samples));
 }
 
-// The transmitted ray leaves from the far side of the surface, one epsilon through it.
-Color Tracer::transmitted(const SurfacePoint& s, const RefractionSplit& split, const Transmission& t, int depth,
-                          bool inBundle, SampleRng& rng, RenderCounters& counters) const {
+// The transmitted ray leaves from the far side of the surface, one epsilon through it; a rough
+// surface spreads it as a glossy one does its reflection.
+Color Tracer::transmitted(const SurfacePoint& s, const Material& m, const RefractionSplit& split, int depth,
+                          bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const {
     if (split.reflected >= 1) return {};  // total internal reflection
-    ++counters.reflection.rays;
+    const Transmission& t = m.transmission;
     const Ray through{s.point - s.geometricNormal * epsilon_, split.direction};
-    return trace(through, depth + 1, inBundle, rng, counters) * t.color * (t.weight * (1 - split.reflected));
+    const float sigma = t.thin ? 0 : glossySpread(scene_, m, s, images_);
+    return lobe(through, -s.geometricNormal, sigma, depth, inBundle, rng, counters, cone) * t.color *
+           (t.weight * (1 - split.reflected));
 }
 
 }  // namespace rt

@@ -38,8 +38,10 @@ public:
         return pixel(x, y, counters, coverage);
     }
 
-    // The colour seen along a ray that has already been reflected `depth` times.
-    Color trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters) const;
+    // The colour seen along a ray that has already been reflected `depth` times; `differential`
+    // sets the footprint of its texture lookups (render/ray_differential.h; none: unfiltered).
+    Color trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
+                const RayDifferential& differential = {}) const;
 
     // How far secondary rays start off a surface: scaled to the scene's size (see the .cpp).
     Real epsilon() const { return epsilon_; }
@@ -48,20 +50,30 @@ private:
     void addHit(PixelAovs& aovs, const SurfacePoint& s, const Hit& hit, bool first) const;
     static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
                         const RenderCounters& after);
-    // The colour at `s`, the surface of `hit` (surfaceAt).
+    // The colour at `s`, the surface of `hit` (surfaceAt); `cone`: the radius of the ray's
+    // footprint there, which the reflected and transmitted rays widen from.
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
-                RenderCounters& counters) const;
+                RenderCounters& counters, Real cone) const;
     // Fraction of `light` seen from the surface (1 without shadows), tinted by glass in the way;
     // toLight: unit, towards it.
     Color visibility(const SurfacePoint& s, const Light& light, const Vec3& toLight, bool inBundle, SampleRng& rng,
                      RenderCounters& counters) const;
     Color reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
-                     SampleRng& rng, RenderCounters& counters) const;
+                     SampleRng& rng, RenderCounters& counters, Real cone) const;
+    // What comes along `axis` from a lobe of width sigma (glossySpread) on the side `side`
+    // faces: with distributed ray tracing the mean of a bundle of rays jittered around it
+    // (thesis 2.6.2), else the one ray, whose texture footprint widens by 2 sigma instead.
+    Color lobe(const Ray& axis, const Vec3& side, float sigma, int depth, bool inBundle, SampleRng& rng,
+               RenderCounters& counters, Real cone) const;
     // What a shadow ray of unit direction lets through over `distance`: black when blocked.
     Color transmittance(const Ray& ray, Real distance, RenderCounters& counters) const;
-    // The colour the transmitted ray of `split` brings, weighted (render/refraction.h).
-    Color transmitted(const SurfacePoint& s, const RefractionSplit& split, const Transmission& t, int depth,
-                      bool inBundle, SampleRng& rng, RenderCounters& counters) const;
+    // The colour the transmitted ray of `split` brings through material m, weighted
+    // (render/refraction.h); a rough glass spreads it as a glossy surface its reflection (lobe).
+    Color transmitted(const SurfacePoint& s, const Material& m, const RefractionSplit& split, int depth, bool inBundle,
+                      SampleRng& rng, RenderCounters& counters, Real cone) const;
+    // The differential of a ray leaving a surface along `d` where the footprint's radius is
+    // `cone`: a cone widening by the pixel angle plus `widen` radians per unit distance.
+    RayDifferential secondary(const Vec3& d, Real cone, float widen) const;
 
     const Scene& scene_;
     const Accelerator& accel_;
@@ -69,8 +81,13 @@ private:
     CameraRays camera_;
     Color ambientLight_;
     Real epsilon_;
+    // The camera's differentials are scaled by this (fewer pixel samples: wider), and ray cones
+    // widen by this per unit distance: render/ray_differential.h.
+    Real differentialScale_;
+    Real coneSpread_;
     const ImageTextures* images_;
     bool anyGlass_ = false;  // a material lets light through: shadow rays must look past hits
+    bool filtered_ = false;  // image textures are read: rays carry differentials
 };
 
 }  // namespace rt

@@ -34,6 +34,7 @@ constexpr RawSection kSections[] = {
     {{'v', 'n', 'r', 'm'}, &Model::vertexNormals, 9, "vertex normals"},
     {{'v', 't', 'e', 'x'}, &Model::vertexUvs, 6, "texture coordinates"},
     {{'v', 'c', 'o', 'l'}, &Model::vertexColors, 9, "vertex colours"},
+    {{'v', 't', 'a', 'n'}, &Model::vertexTangents, 12, "tangents"},
 };
 
 // What the 10-byte header says: which array the data goes to and how many floats follow.
@@ -121,9 +122,9 @@ void RawReader::readSection(Model& model, const RawHeader& h) {
         readFloats(values, h.count * section.floatsPerTriangle, h, section.what);
         return;
     }
-    throw inputErrorAtByte(
-        name_, start,
-        std::to_string(total_ - start) + " bytes after the triangles that are no section " + "(vnrm, vtex or vcol)");
+    throw inputErrorAtByte(name_, start,
+                           std::to_string(total_ - start) + " bytes after the triangles that are no section " +
+                               "(vnrm, vtex, vcol or vtan)");
 }
 
 void RawReader::readFloats(std::vector<float>& values, std::size_t floats, const RawHeader& h, const char* what) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/error.h"
 #include "geometry/tangents.h"
@@ -30,11 +31,30 @@ CornerNormals placedNormals(const Model& model, std::size_t i, const Transform& 
     return n;
 }
 
+// The file's tangents of triangle `i` placed by `xf`, or none where they are zero (to be
+// generated). A mirroring transform turns the bitangent w * cross(n, t) the other way, as it
+// does the image's up direction: w changes sign.
+std::optional<CornerTangents> placedTangents(const Model& model, std::size_t i, const Transform& xf) {
+    CornerTangents t = cornerValues<CornerTangents>(model.vertexTangents, i);
+    const bool mirrors = dot(cross(xf.vector({1, 0, 0}), xf.vector({0, 1, 0})), xf.vector({0, 0, 1})) < 0;
+    for (int c = 0; c < 3; ++c) {
+        float* corner = &t.values[4 * std::size_t(c)];
+        const Vec3 placed = xf.vector({corner[0], corner[1], corner[2]});
+        const Real len = length(placed);
+        if (!(len > 0) || corner[3] == 0) return std::nullopt;
+        for (int a = 0; a < 3; ++a) corner[a] = float(placed[a] / len);
+        corner[3] = (corner[3] < 0) != mirrors ? -1.0f : 1.0f;
+    }
+    return t;
+}
+
 // Gives the triangle just added as number `index` the model's shading data for its triangle `i`.
 void addShading(const Model& model, std::size_t i, const Transform& xf, std::size_t index, TriangleShading& to) {
     if (!model.vertexNormals.empty()) to.normals.set(index, placedNormals(model, i, xf));
     if (!model.vertexUvs.empty()) to.uvs.set(index, cornerValues<CornerUvs>(model.vertexUvs, i));
     if (!model.vertexColors.empty()) to.colors.set(index, cornerValues<CornerColors>(model.vertexColors, i));
+    if (!model.vertexTangents.empty())
+        if (const std::optional<CornerTangents> t = placedTangents(model, i, xf)) to.tangents.set(index, *t);
 }
 
 // Adds one instance of a model to `out`. A sphere under a non-uniform scale would be

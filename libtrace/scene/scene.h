@@ -98,6 +98,9 @@ struct Model {
     std::vector<float> vertexNormals;  // 9 floats per triangle: unit normals, or zeros for a flat triangle
     std::vector<float> vertexUvs;      // 6 floats per triangle: texture coordinates u, v
     std::vector<float> vertexColors;   // 9 floats per triangle: linear RGB
+    // 12 floats per triangle: a file's tangents x y z and handedness w (glTF's TANGENT), or
+    // zeros where the normal map's tangents are to be generated (geometry/tangents.h).
+    std::vector<float> vertexTangents;
 
     std::size_t triangleCount() const { return triangleVertices.size() / 9; }
     std::size_t sphereCount() const { return sphereData.size() / 4; }

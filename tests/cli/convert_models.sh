@@ -16,9 +16,11 @@ raw_triangles() {
     for f in "$1"/*.raw; do
         [ "$(head -c 6 "$f")" = "raw3dT" ] || fail "$f: not a triangle RAW file"
         n=$(od -An -tu4 -j6 -N4 "$f" | tr -d ' ')
-        # Triangles, then any of the per-corner sections: vnrm and vcol 4 + 36n bytes, vtex 4 + 24n.
-        local rest=$(($(stat -c %s "$f") - 10 - 36 * n)) ok=
-        for sections in 0 $((4 + 24 * n)) $((4 + 36 * n)) $((8 + 60 * n)) $((8 + 72 * n)) $((12 + 96 * n)); do
+        # Triangles, then any of the per-corner sections: vnrm and vcol 4 + 36n bytes, vtex 4 + 24n, vtan 4 + 48n.
+        local rest=$(($(stat -c %s "$f") - 10 - 36 * n)) ok= subset sizes=(36 24 36 48)
+        for subset in $(seq 0 15); do
+            local sections=0 i
+            for i in 0 1 2 3; do ((subset >> i & 1)) && sections=$((sections + 4 + sizes[i] * n)); done
             [ "$rest" = "$sections" ] && ok=1
         done
         [ -n "$ok" ] || fail "$f: size does not match its count $n"

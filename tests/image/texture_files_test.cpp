@@ -84,6 +84,126 @@ TEST(TextureFiles, ATexturedQuadSeenHeadOnReproducesItsPicture) {
     std::filesystem::remove(path);
 }
 
+namespace {
+
+// The same lookups without their footprints: the finest level, bilinear (no ray differentials).
+class Unfiltered : public ImageTextures {
+public:
+    Unfiltered(const Scene& scene, const ImageTextures& filtered) : ImageTextures(scene), filtered_(filtered) {}
+    Color lookup(std::uint32_t i, const TexCoord& at) const override { return filtered_.lookup(i, {at.s, at.t}); }
+    Color data(std::uint32_t i, const TexCoord& at) const override { return filtered_.data(i, {at.s, at.t}); }
+    float alpha(std::uint32_t i, float s, float t, bool mask) const override { return filtered_.alpha(i, s, t, mask); }
+    bool hasAlpha(std::uint32_t i, bool mask) const override { return filtered_.hasAlpha(i, mask); }
+
+private:
+    const ImageTextures& filtered_;
+};
+
+// A black and white checker of 8 x 8 squares, 8 texels each, in float (linear: no sRGB
+// decoding, whose mip levels would average encoded values), written to `path`.
+void writeChecker(const std::string& path) {
+    OIIO::ImageBuf picture(OIIO::ImageSpec(64, 64, 1, OIIO::TypeDesc::FLOAT));
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const float v = float((x / 8 + y / 8) % 2);
+            picture.setpixel(x, y, &v);
+        }
+    EXPECT_TRUE(picture.write(path));
+}
+
+// A floor 400 units deep, the checker repeated every 4 units (squares of 0.5), seen from one
+// unit above it looking towards the horizon: far away hundreds of squares fall in a pixel.
+Scene checkerFloor(const std::string& checker) {
+    Scene s;
+    s.camera.origin = {0, 1, 2};
+    s.camera.destination = {0, 0.4, -10};
+    s.camera.fovDegrees = 60;
+    s.textures.push_back({.name = "checker", .path = checker});
+    Material m{.name = "floor", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = {1, 1, 1}};
+    m.emissionTexture = 0;
+    s.materials.push_back(m);
+    Model floor;
+    const float x = 100, zNear = 10, zFar = -400;
+    floor.triangleVertices = {-x, 0, zNear, x, 0, zNear, x, 0, zFar, -x, 0, zNear, x, 0, zFar, -x, 0, zFar};
+    for (std::size_t i = 0; i < floor.triangleVertices.size(); i += 3)
+        for (std::size_t a : {std::size_t(0), std::size_t(2)})
+            floor.vertexUvs.push_back(floor.triangleVertices[i + a] / 4);
+    s.models.push_back(floor);
+    s.instances.push_back({0, 0, Transform()});
+    s.flatten();
+    return s;
+}
+
+double rmsDifference(const Framebuffer& a, const Framebuffer& b) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+        const Color d = a.pixels()[i] + b.pixels()[i] * -1;
+        sum += double(d.r) * d.r + double(d.g) * d.g + double(d.b) * d.b;
+    }
+    return std::sqrt(sum / (3.0 * double(a.pixels().size())));
+}
+
+}  // namespace
+
+// Ray differentials (render/ray_differential.h): one filtered sample a pixel comes close to
+// 64 point samples, where one point sample a pixel shimmers (measured: RMS 0.045 against 0.27).
+TEST(TextureFiles, RayDifferentialsFilterADistantCheckerFloor) {
+    const std::string path = testing::TempDir() + "/checker.exr";
+    writeChecker(path);
+    const Scene scene = checkerFloor(path);
+    std::vector<std::string> warnings;
+    const TextureFiles filtered(scene, warnings);
+    const Unfiltered unfiltered(scene, filtered);
+    const NaiveAccelerator accel(scene.primitives);
+    RenderStats stats;
+    RenderSettings settings = test::picture(96, 64);
+    settings.pixelSamples = 64;
+    const Framebuffer reference = render(scene, accel, settings, stats, {}, &unfiltered);
+    settings.pixelSamples = 1;
+    const Framebuffer withDifferentials = render(scene, accel, settings, stats, {}, &filtered);
+    const Framebuffer without = render(scene, accel, settings, stats, {}, &unfiltered);
+    const double errorWith = rmsDifference(withDifferentials, reference);
+    const double errorWithout = rmsDifference(without, reference);
+    EXPECT_LT(errorWith, errorWithout / 3) << "RMS error with " << errorWith << ", without " << errorWithout;
+    settings.threads = 1;
+    settings.region = PixelWindow{10, 5, 70, 50};
+    const Framebuffer oneThread = render(scene, accel, settings, stats, {}, &filtered);
+    for (int y = 5; y < 50; ++y)
+        for (int x = 10; x < 70; ++x) ASSERT_EQ(oneThread.at(x, y), withDifferentials.at(x, y)) << x << "," << y;
+    std::filesystem::remove(path);
+}
+
+// Without distributed ray tracing rough glass sends one ray, whose texture footprint widens by
+// the lobe's sigma: the checker behind a frosted pane blurs (render/ray_differential.h).
+TEST(TextureFiles, RoughGlassWidensTheFootprintOfWhatIsSeenThroughIt) {
+    const std::string path = testing::TempDir() + "/checker-behind-glass.exr";
+    writeChecker(path);
+    const auto contrastThrough = [&](float spread) {
+        Scene scene = checkerFloor(path);
+        Material pane{.name = "glass", .ambient = 0, .diffuse = 0, .spread = spread};
+        pane.transmission = {.weight = 1, .ior = 1.5f};
+        scene.looseObjects.add<Sphere>({{0, 0.25, -2}, 0.5}, test::addMaterial(scene, pane));
+        scene.flatten();
+        std::vector<std::string> warnings;
+        const TextureFiles images(scene, warnings);
+        const NaiveAccelerator accel(scene.primitives);
+        RenderStats stats;
+        const Framebuffer image = render(scene, accel, test::picture(96, 64), stats, {}, &images);
+        double sum = 0, squares = 0;
+        int n = 0;
+        for (int y = 35; y < 44; ++y)  // inside the ball
+            for (int x = 43; x < 53; ++x, ++n) {
+                sum += image.at(x, y).g;
+                squares += double(image.at(x, y).g) * image.at(x, y).g;
+            }
+        return std::sqrt(squares / n - (sum / n) * (sum / n));
+    };
+    const double sharp = contrastThrough(0), frosted = contrastThrough(0.3f);
+    EXPECT_GT(sharp, 0.2);
+    EXPECT_LT(frosted, sharp / 3) << "standard deviation: sharp " << sharp << ", frosted " << frosted;
+    std::filesystem::remove(path);
+}
+
 TEST(TextureFiles, WrapModesRepeatClampAndMirror) {
     const std::string path = testing::TempDir() + "/wrap.png";
     const std::vector<Color> texels = writePicture(path);
@@ -98,11 +218,11 @@ TEST(TextureFiles, WrapModesRepeatClampAndMirror) {
     };
     // Half a texel past the right edge: repeat reads the first column, clamp and mirror the last.
     const float s = 1 + texel / 2, t = texel / 2;
-    EXPECT_TRUE(near(images.lookup(0, s, t), texels[0]));
-    EXPECT_TRUE(near(images.lookup(1, s, t), texels[kSize - 1]));
-    EXPECT_TRUE(near(images.lookup(2, s, t), texels[kSize - 1]));
+    EXPECT_TRUE(near(images.lookup(0, {s, t}), texels[0]));
+    EXPECT_TRUE(near(images.lookup(1, {s, t}), texels[kSize - 1]));
+    EXPECT_TRUE(near(images.lookup(2, {s, t}), texels[kSize - 1]));
     // 1.5 texels past: clamp still the last column, mirror the one before it.
-    EXPECT_TRUE(near(images.lookup(2, 1 + 1.5f * texel, t), texels[kSize - 2]));
+    EXPECT_TRUE(near(images.lookup(2, {1 + 1.5f * texel, t}), texels[kSize - 2]));
     std::filesystem::remove(path);
 }
 
@@ -113,5 +233,5 @@ TEST(TextureFiles, AMissingPictureIsAWarningAndWhite) {
     const TextureFiles images(scene, warnings);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("texture 'gone': cannot read"), std::string::npos) << warnings[0];
-    EXPECT_EQ(images.lookup(0, 0.5f, 0.5f), (Color{1, 1, 1}));
+    EXPECT_EQ(images.lookup(0, {0.5f, 0.5f}), (Color{1, 1, 1}));
 }

@@ -489,6 +489,22 @@ TEST(ImportGltf, VertexNormalsTextureCoordinatesAndColoursAreKept) {
     EXPECT_GT(coloured, 0u);
 }
 
+// NormalTangentMirrorTest gives its tangents (TANGENT): kept, with their handedness, mirrored halves and all.
+TEST(ImportGltf, TangentsAreKeptWithTheirHandedness) {
+    SKIP_WITHOUT_SHARED_MODELS();
+    const ImportResult r = importScene(sharedModels() + "/glb/NormalTangentMirrorTest/NormalTangentMirrorTest.glb");
+    std::size_t right = 0, left = 0;
+    for (const Model& m : r.scene.models) {
+        ASSERT_EQ(m.vertexTangents.size(), 12 * m.triangleCount());
+        for (std::size_t i = 3; i < m.vertexTangents.size(); i += 4) {
+            right += m.vertexTangents[i] == 1;
+            left += m.vertexTangents[i] == -1;
+        }
+    }
+    EXPECT_GT(right, 0u);
+    EXPECT_GT(left, 0u) << "the mirrored halves are left-handed";
+}
+
 // A 2x2 PNG, red and green in a checkerboard (made with zlib, 73 bytes).
 const char* const kCheckerPng =
     "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEElEQVR42mP4z8DAAMFAEgAd8AP9Cd2apwAAAABJRU5ErkJggg==";

@@ -154,9 +154,9 @@ TEST(RawModel, BadSectionsNameTheByteOffset) {
     const std::string tri = header('T', 1) + floatBytes({1, 2, 3, 4, 5, 6, 7, 8, 9});
     const std::string normals = floatBytes({0, 0, 1, 0, 0, 1, 0, 0, 1});
     EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "junk"); }),
-              "m.raw: byte 46: 4 bytes after the triangles that are no section (vnrm, vtex or vcol)");
+              "m.raw: byte 46: 4 bytes after the triangles that are no section (vnrm, vtex, vcol or vtan)");
     EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vn"); }),
-              "m.raw: byte 46: 2 bytes after the triangles that are no section (vnrm, vtex or vcol)");
+              "m.raw: byte 46: 2 bytes after the triangles that are no section (vnrm, vtex, vcol or vtan)");
     EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vnrm" + normals.substr(0, 8)); }),
               "m.raw: byte 58: truncated RAW data: 36 bytes of vertex normals for 1 triangle, the file has 8");
     EXPECT_EQ(inputErrorOf([&] { fromBytes(tri + "vnrm" + normals + "vnrm" + normals); }),

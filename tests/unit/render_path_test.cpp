@@ -229,8 +229,8 @@ namespace {
 class ConstantTextures : public ImageTextures {
 public:
     ConstantTextures(const Scene& scene, Color value) : ImageTextures(scene), value_(value) {}
-    Color lookup(std::uint32_t, float, float) const override { return value_; }
-    Color data(std::uint32_t, float, float) const override { return value_; }
+    Color lookup(std::uint32_t, const TexCoord&) const override { return value_; }
+    Color data(std::uint32_t, const TexCoord&) const override { return value_; }
     float alpha(std::uint32_t, float, float, bool) const override { return 1; }
     bool hasAlpha(std::uint32_t, bool) const override { return false; }
 

@@ -228,3 +228,46 @@ TEST(Refraction, AVolumeAbsorbsAlongTheDistanceInside) {
     EXPECT_NEAR(behind.g, 0.0625f, 1e-3);
     EXPECT_EQ(behind.b, 1.0f);
 }
+
+namespace {
+
+// A glass ball of sigma `spread` before a red and blue checker wall, seen under distributed ray
+// tracing (-D d, 16 rays a lobe): how much red and blue vary over the pixels inside the ball.
+double contrastThroughGlass(float spread) {
+    Scene s;
+    s.camera.origin = {0, 0, -6};
+    s.camera.destination = {0, 0, 0};
+    s.camera.fovDegrees = 20;
+    s.textures.push_back(
+        {.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}, .size = 0.25});
+    Material wall = lamp({1, 1, 1});
+    wall.emissionTexture = 0;
+    Material ball = glass(1.5f);
+    ball.spread = spread;
+    s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, test::addMaterial(s, ball));
+    test::addQuad(s, {-20, -20, 3}, {20, -20, 3}, {20, 20, 3}, {-20, 20, 3}, test::addMaterial(s, wall));
+    s.flatten();
+    RenderSettings settings = test::picture(24, 24);
+    settings.glossyReflections = true;
+    settings.distributedSamples = 16;
+    const Framebuffer image = test::renderNaive(s, settings).image;
+    double sum = 0, squares = 0;
+    int n = 0;
+    for (int y = 8; y < 16; ++y)
+        for (int x = 8; x < 16; ++x, ++n) {
+            const double v = image.at(x, y).r - image.at(x, y).b;
+            sum += v;
+            squares += v * v;
+        }
+    return std::sqrt(squares / n - (sum / n) * (sum / n));
+}
+
+}  // namespace
+
+// Rough glass spreads its transmitted ray as glossy reflection does (thesis 2.6.2): the checker
+// behind a frosted ball blurs to purple.
+TEST(Refraction, RoughGlassBlursWhatIsSeenThroughItUnderDistributedRayTracing) {
+    const double sharp = contrastThroughGlass(0), frosted = contrastThroughGlass(0.3f);
+    EXPECT_GT(sharp, 0.5);
+    EXPECT_LT(frosted, sharp / 3) << "standard deviation of red - blue: sharp " << sharp << ", frosted " << frosted;
+}

@@ -12,11 +12,28 @@ TEST(Texture, CoordinatesAreScaledRotatedThenOffset) {
     t.scale = {2, 3};
     t.rotation = float(kPi / 2);
     t.offset = {0.5f, 0.25f};
-    const std::array<float, 2> uv = UvTransform(t)(1, 0);  // scaled (2, 0), rotated (0, -2), offset
-    EXPECT_NEAR(uv[0], 0.5f, 1e-6);
-    EXPECT_NEAR(uv[1], -1.75f, 1e-6);
-    const std::array<float, 2> same = UvTransform(Texture{})(0.25, 0.75);
-    EXPECT_EQ(same, (std::array<float, 2>{0.25f, 0.75f}));
+    const TexCoord uv = UvTransform(t)(1, 0);  // scaled (2, 0), rotated (0, -2), offset
+    EXPECT_NEAR(uv.s, 0.5f, 1e-6);
+    EXPECT_NEAR(uv.t, -1.75f, 1e-6);
+    const TexCoord same = UvTransform(Texture{})(0.25, 0.75);
+    EXPECT_EQ(same.s, 0.25f);
+    EXPECT_EQ(same.t, 0.75f);
+}
+
+// Derivatives (the filter's footprint) are scaled and rotated, not offset.
+TEST(Texture, DerivativesTakeTheLinearPartOfTheTransform) {
+    Texture t;
+    t.scale = {2, 3};
+    t.rotation = float(kPi / 2);
+    t.offset = {0.5f, 0.25f};
+    SurfacePoint p;
+    p.dudx = 1;  // one pixel right: u grows by 1
+    p.dvdy = 1;  // one pixel down: v grows by 1
+    const TexCoord at = UvTransform(t)(p);
+    EXPECT_NEAR(at.dsdx, 0, 1e-6);
+    EXPECT_NEAR(at.dtdx, -2, 1e-6);
+    EXPECT_NEAR(at.dsdy, 3, 1e-6);
+    EXPECT_NEAR(at.dtdy, 0, 1e-6);
 }
 
 TEST(Texture, CheckerAlternatesCubesAndIsOneColourOnABoundaryPlane) {

@@ -297,7 +297,8 @@ int runRender(RenderOptions o) {
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
     checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
-    const TextureFiles images(scene, scene.warnings);  // before the warnings are shown: it adds its own
+    const TextureFiles images(scene, scene.warnings,
+                              o.textureCacheMb);  // before the warnings are shown: it adds its own
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;

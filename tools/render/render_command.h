@@ -53,6 +53,7 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::vector<std::string>>> optionValues;
     std::optional<double> maxMemoryGb;       // --max-memory GB; default: rt::defaultMemoryLimit()
     std::optional<std::string> environment;  // --environment FILE: the path tracer's sky image
+    float textureCacheMb = 256;              // --texture-cache MB: OpenImageIO's texture cache
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.

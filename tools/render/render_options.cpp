@@ -54,6 +54,12 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
                    "machine's]")
         ->check(rt::tool::numberIn(0.01, 1e6))
         ->group(group);
+    app.add_option("--texture-cache", o.textureCacheMb,
+                   "Memory for image textures, in MB: OpenImageIO keeps the tiles it reads within it (tiled, "
+                   "MIP-mapped pictures; untiled ones are held a level at a time)")
+        ->check(rt::tool::numberIn(1.0, 1e6))
+        ->capture_default_str()
+        ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
     app.add_option("--seed", o.render.seed,
                    "Random seed of the samples: another seed, independent noise (default 0, always the same)")
