@@ -120,33 +120,95 @@ SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& 
     return best;
 }
 
+namespace {
+
+// The planes base + extent k / divisions for k = first..last, rounded to float, without
+// repeats. A box's place among them is found by arithmetic, then corrected for the rounding
+// by a step or two: the binned nodes are the largest, where a binary search per bound counts.
+class EvenPlanes {
+public:
+    EvenPlanes(double base, double extent, int divisions, int first, int last)
+        : base_(base), scale_(extent > 0 ? divisions / extent : 0), first_(first) {
+        for (int k = first; k <= last; ++k) {
+            const float p = float(base + extent * k / divisions);
+            if (planes_.empty() || p > planes_.back()) planes_.push_back(p);
+        }
+    }
+
+    std::size_t size() const { return planes_.size(); }
+    float operator[](std::size_t k) const { return planes_[k]; }
+    // The number of planes p <= x (std::upper_bound's index).
+    std::size_t atOrBelow(float x) const {
+        return count(x, [x](float p) { return p <= x; });
+    }
+    // The number of planes p < x (std::lower_bound's index).
+    std::size_t below(float x) const {
+        return count(x, [x](float p) { return p < x; });
+    }
+
+private:
+    template <typename Before>
+    std::size_t count(float x, const Before& before) const {
+        const double guess = (double(x) - base_) * scale_ - first_ + 1;
+        std::size_t k = guess > 0 ? (guess < double(size()) ? std::size_t(guess) : size()) : 0;
+        while (k < size() && before(planes_[k])) ++k;
+        while (k > 0 && !before(planes_[k - 1])) --k;
+        return k;
+    }
+
+    double base_, scale_;
+    int first_;
+    std::vector<float> planes_;
+};
+
+// Offers every plane of `planes` on `axis` to `best`, with the boxes below, above and in it
+// counted in one pass over the boxes.
+void considerPlanes(const std::vector<FloatBox>& boxes, int axis, const EvenPlanes& planes, const SahModel& sah,
+                    SahSplit& best) {
+    const std::size_t n = boxes.size(), m = planes.size();
+    std::vector<std::size_t> starts(m + 1, 0);  // starts[k]: boxes whose first plane above lo is k
+    std::vector<std::size_t> ends(m + 1, 0);    // ends[k]: boxes whose first plane with hi <= plane is k
+    std::vector<std::size_t> planars(m, 0);     // planars[k]: boxes lying in plane k
+    for (const FloatBox& b : boxes) {
+        ++starts[planes.atOrBelow(b.lo[axis])];
+        const std::size_t end = planes.below(b.hi[axis]);
+        ++ends[end];
+        if (b.planar(axis) && end != m && planes[end] == b.lo[axis]) ++planars[end];
+    }
+    std::size_t started = 0, ended = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+        started += starts[k];
+        ended += ends[k];
+        sah.consider(axis, planes[k], started, n - ended, planars[k], best);
+    }
+}
+
+}  // namespace
+
 SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples, const SahModel& sah) {
     SahSplit best;
-    const std::size_t n = boxes.size();
-    std::vector<float> planes;
-    std::vector<std::size_t> starts, ends, planars;
+    for (int axis = 0; axis < 3; ++axis)
+        considerPlanes(boxes, axis, EvenPlanes(voxel.lo[axis], voxel.diagonal()[axis], samples + 1, 1, samples), sah,
+                       best);
+    return best;
+}
+
+SahSplit findSplitByBinning(const std::vector<FloatBox>& boxes, int bins, const SahModel& sah) {
+    FloatBox extent;
     for (int axis = 0; axis < 3; ++axis) {
-        planes.clear();
-        for (int k = 1; k <= samples; ++k) {
-            const float p = float(voxel.lo[axis] + voxel.diagonal()[axis] * k / (samples + 1));
-            if (planes.empty() || p > planes.back()) planes.push_back(p);
+        extent.lo[axis] = std::numeric_limits<float>::infinity();
+        extent.hi[axis] = -extent.lo[axis];
+    }
+    for (const FloatBox& b : boxes) {
+        for (int axis = 0; axis < 3; ++axis) {
+            extent.lo[axis] = std::min(extent.lo[axis], b.lo[axis]);
+            extent.hi[axis] = std::max(extent.hi[axis], b.hi[axis]);
         }
-        const std::size_t m = planes.size();
-        starts.assign(m + 1, 0);  // starts[k]: primitives whose first plane with lo < plane is k
-        ends.assign(m + 1, 0);    // ends[k]: primitives whose first plane with hi <= plane is k
-        planars.assign(m, 0);     // planars[k]: primitives lying in plane k
-        for (const FloatBox& b : boxes) {
-            ++starts[std::upper_bound(planes.begin(), planes.end(), b.lo[axis]) - planes.begin()];
-            const auto end = std::lower_bound(planes.begin(), planes.end(), b.hi[axis]);
-            ++ends[end - planes.begin()];
-            if (b.planar(axis) && end != planes.end() && *end == b.lo[axis]) ++planars[end - planes.begin()];
-        }
-        std::size_t started = 0, ended = 0;
-        for (std::size_t k = 0; k < m; ++k) {
-            started += starts[k];
-            ended += ends[k];
-            sah.consider(axis, planes[k], started, n - ended, planars[k], best);
-        }
+    }
+    SahSplit best;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lo = extent.lo[axis], hi = extent.hi[axis];
+        if (lo <= hi) considerPlanes(boxes, axis, EvenPlanes(lo, hi - lo, bins, 0, bins), sah, best);
     }
     return best;
 }

@@ -1,7 +1,8 @@
 // Finding the SAH split of a KD node (thesis 2.5.1). The three methods of KdSplitMethod
 // share the cost model and the sweep over sorted plane events; they differ in where the
 // sorted events come from (kept sorted from the root by the builder for Sweep, sorted in
-// every node for Sort) or in evaluating only a few fixed planes (Sample).
+// every node for Sort) or in evaluating only a few evenly spaced planes (Sample, and the
+// binning that Sweep uses in its largest nodes).
 #pragma once
 
 #include <cstdint>
@@ -108,7 +109,12 @@ void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::siz
 // The thesis's method: build and sort the events of every axis in this node.
 SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& sah);
 
-// The thesis's sampling: `samples` evenly spaced planes per axis, counted by binary search.
+// The thesis's sampling: `samples` evenly spaced planes per axis inside the voxel.
 SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples, const SahModel& sah);
+
+// Min-max binning (Shevtsov et al. 2007): `bins` + 1 evenly spaced planes per axis from the
+// lowest lower bound of the boxes to the highest upper bound, so that the planes at both ends
+// cut off the empty space around them, as the exact sweep's would.
+SahSplit findSplitByBinning(const std::vector<FloatBox>& boxes, int bins, const SahModel& sah);
 
 }  // namespace rt

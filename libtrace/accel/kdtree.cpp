@@ -6,7 +6,6 @@
 
 #include "accel/kd_split.h"
 #include "accel/tree_builder.h"
-#include "core/parallel_errors.h"
 #include "core/stopwatch.h"
 #include "geometry/clip.h"
 
@@ -35,28 +34,16 @@ constexpr std::size_t kSweepMinimum = 8;
 // stays the same for any number of threads. Real scenes stay far below it (docs/trees.md).
 constexpr double kReferenceBudgetPerPrimitive = 16;
 
-bool carriesEvents(KdSplitMethod method, std::size_t primitives) {
-    return method == KdSplitMethod::Sweep && primitives >= kSweepMinimum;
+// Whether a node finds its split by sweeping sorted events that it carries (and hands on
+// to its children): those of the Sweep method between the sizes that sort their own events
+// and those that bin (KdSettings::binningMinimum).
+bool carriesEvents(const KdSettings& settings, std::size_t primitives) {
+    return settings.splitMethod == KdSplitMethod::Sweep && primitives >= kSweepMinimum &&
+           primitives < settings.binningMinimum;
 }
 
-// Runs f(axis) for the three axes, as OpenMP tasks if `parallel`. Used at the root, whose
-// sweep and event split over millions of events (out of the caches at 1M triangles) would
-// otherwise keep the other threads waiting for the first subtree task. Below the root every
-// thread has a subtree of its own; axis tasks there made the 1M build 75% slower in wall
-// time (same CPU time: threads idle at the task waits).
-template <typename PerAxis>
-void forEachAxis(bool parallel, const PerAxis& f) {
-    if (!parallel) {
-        for (int axis = 0; axis < 3; ++axis) f(axis);
-        return;
-    }
-    ParallelErrors errors;
-    for (int axis = 0; axis < 3; ++axis) {
-#pragma omp task default(shared) firstprivate(axis)
-        errors.capture([&] { f(axis); });
-    }
-#pragma omp taskwait
-    errors.rethrowIfAny();
+bool bins(const KdSettings& settings, std::size_t primitives) {
+    return settings.splitMethod == KdSplitMethod::Sweep && primitives >= settings.binningMinimum;
 }
 
 struct KdNode {
@@ -96,20 +83,25 @@ public:
     }
 
 private:
-    SahSplit findSplit(const KdNode& node, const SahModel& sah) const {
+    SahSplit findSplit(KdNode& node, const SahModel& sah) const {
+        const std::size_t n = node.primitives.size();
         if (settings_.splitMethod == KdSplitMethod::Sample)
             return findSplitBySampling(node.boxes, node.voxel, settings_.samples, sah);
-        if (!carriesEvents(settings_.splitMethod, node.primitives.size())) return findSplitBySorting(node.boxes, sah);
-        // Each axis keeps its own best plane; taking them in axis order with strict < (as
-        // SahModel::offer does) gives the plane one sweep over all three axes would.
-        std::array<SahSplit, 3> bestOf;
-        forEachAxis(node.depth == 0, [&](int axis) {
-            sweepSortedEvents(node.events[axis], axis, node.primitives.size(), sah, bestOf[axis]);
-        });
+        if (bins(settings_, n)) return findSplitByBinning(node.boxes, settings_.bins, sah);
+        if (!carriesEvents(settings_, n)) return findSplitBySorting(node.boxes, sah);
+        if (node.events[0].empty()) sortEvents(node);  // the root, or a child of a binned node
         SahSplit best;
-        for (const SahSplit& s : bestOf)
-            if (s.cost < best.cost) best = s;
+        for (int axis = 0; axis < 3; ++axis) sweepSortedEvents(node.events[axis], axis, n, sah, best);
         return best;
+    }
+
+    static void sortEvents(KdNode& node) {
+        for (int axis = 0; axis < 3; ++axis) {
+            std::vector<SplitEvent>& events = node.events[axis];
+            events.reserve(2 * node.boxes.size());
+            addEventsByType(node.boxes, axis, events);  // spares radixSortEvents its type pass
+            radixSortEvents(events);
+        }
     }
 
     // Sorts the node's primitives to the two sides. One that straddles the plane is
@@ -153,8 +145,8 @@ private:
             addClipped(below, node.primitives[i]);
             addClipped(above, node.primitives[i]);
         }
-        if (carriesEvents(settings_.splitMethod, n)) {
-            forEachAxis(node.depth == 0, [&](int a) {
+        if (carriesEvents(settings_, n)) {
+            for (int a = 0; a < 3; ++a) {
                 std::vector<SplitEvent>& belowEvents = below.events[a];
                 std::vector<SplitEvent>& aboveEvents = above.events[a];
                 belowEvents.reserve(2 * below.primitives.size());
@@ -166,9 +158,9 @@ private:
                 }
                 mergeClippedEvents(below, belowKept, a);
                 mergeClippedEvents(above, aboveKept, a);
-            });
+            }
             for (KdNode* child : {&below, &above}) {
-                if (carriesEvents(settings_.splitMethod, child->primitives.size())) continue;
+                if (carriesEvents(settings_, child->primitives.size())) continue;
                 for (std::vector<SplitEvent>& events : child->events) events = {};
             }
         }
@@ -225,7 +217,7 @@ KdSettings withSceneCosts(const Primitives& prims, const KdSettings& settings) {
     return s;
 }
 
-KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
+KdNode makeRoot(const Primitives& prims) {
     KdNode root;
     root.voxel = roundOutToFloat(prims.bounds());
     const std::uint32_t n = prims.size();
@@ -237,19 +229,6 @@ KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
         root.primitives[id] = std::uint32_t(id);
         root.boxes[id] = toFloatBox(prims.bounds(std::uint32_t(id)), root.voxel);
     }
-    if (carriesEvents(settings.splitMethod, n)) {
-        ParallelErrors errors;
-#pragma omp parallel for schedule(static, 1)
-        for (int axis = 0; axis < 3; ++axis) {
-            errors.capture([&] {
-                std::vector<SplitEvent>& events = root.events[axis];
-                events.reserve(2 * std::size_t(n));
-                addEventsByType(root.boxes, axis, events);  // spares radixSortEvents its type pass
-                radixSortEvents(events);
-            });
-        }
-        errors.rethrowIfAny();
-    }
     return root;
 }
 
@@ -258,7 +237,7 @@ KdNode makeRoot(const Primitives& prims, const KdSettings& settings) {
 std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& userSettings) {
     const Stopwatch stopwatch;
     const KdSettings settings = withSceneCosts(prims, userSettings);
-    KdNode root = makeRoot(prims, settings);
+    KdNode root = makeRoot(prims);
     const Aabb bounds = root.voxel;
     FlatTree flat = buildFlatTree(std::move(root), KdSplitter(prims, settings));
     auto tree =

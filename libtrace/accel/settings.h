@@ -2,6 +2,7 @@
 // builder settings). rt-render and rt-inspect expose the same names on their command lines.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -42,6 +43,12 @@ struct KdSettings {
     std::optional<int> maxDepth;    // default 8 + 1.3 log2(N)
     KdSplitMethod splitMethod = KdSplitMethod::Sweep;
     int samples = 16;  // candidate planes per axis for Sample (8-32 in the thesis)
+    // Sweep: nodes of at least this many primitives take the best of `bins` planes per axis
+    // (min-max binning, Shevtsov et al. 2007) instead of sweeping sorted events. Linear in the
+    // node's primitives, for the top levels, whose event lists do not fit in the caches; the
+    // nodes below keep the exact sweep. Measured in docs/benchmarks.md (SAH cost and build time).
+    std::size_t binningMinimum = 4096;
+    int bins = 64;  // evenly spaced over the extent of the node's primitives, both ends included
 };
 
 struct AccelSettings {

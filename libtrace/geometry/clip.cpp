@@ -23,7 +23,7 @@ Polygon clipToPlane(const Polygon& in, int axis, Real pos, bool keepAbove) {
     auto inside = [&](const Vec3& p) { return keepAbove ? p[axis] >= pos : p[axis] <= pos; };
     for (int i = 0; i < in.n; ++i) {
         const Vec3& a = in.v[i];
-        const Vec3& b = in.v[(i + 1) % in.n];
+        const Vec3& b = in.v[i + 1 < in.n ? i + 1 : 0];
         const bool aIn = inside(a), bIn = inside(b);
         if (aIn) out.v[out.n++] = a;
         if (aIn != bIn) {
@@ -43,9 +43,12 @@ Aabb clippedBounds(const Triangle& tri, const Aabb& box) {
     poly.v[1] = tri.p1;
     poly.v[2] = tri.p2;
     poly.n = 3;
+    // A plane the whole triangle lies inside of would return the polygon unchanged: skip it.
+    // In a KD build most triangles cross one or two of a voxel's planes, not six.
+    const Aabb triBounds = tri.bounds();
     for (int a = 0; a < 3 && poly.n > 0; ++a) {
-        poly = clipToPlane(poly, a, box.lo[a], true);
-        poly = clipToPlane(poly, a, box.hi[a], false);
+        if (triBounds.lo[a] < box.lo[a]) poly = clipToPlane(poly, a, box.lo[a], true);
+        if (triBounds.hi[a] > box.hi[a]) poly = clipToPlane(poly, a, box.hi[a], false);
     }
     Aabb bounds;
     for (int i = 0; i < poly.n; ++i) bounds.extend(poly.v[i]);

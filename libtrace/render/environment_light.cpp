@@ -99,7 +99,7 @@ Color EnvironmentLight::radiance(const Vec3& direction) const {
     if (!texture_) return scene_.background;
     if (!images_) return {1, 1, 1};
     const auto [s, t] = equirectangularCoordinates(direction);
-    return images_->lookup(*texture_, float(s), float(t));
+    return images_->lookup(*texture_, TexCoord{float(s), float(t)});
 }
 
 Real EnvironmentLight::sampleRow(const double* cdf, int n, Real u, int& cell) {

@@ -81,6 +81,9 @@ std::vector<std::unique_ptr<Accelerator>> allTrees(const Primitives& prims) {
         kd.splitMethod = method;
         trees.push_back(buildKdTree(prims, kd));
     }
+    KdSettings binned;  // the binning of the large nodes, here in every node of 16 primitives or more
+    binned.binningMinimum = 16;
+    trees.push_back(buildKdTree(prims, binned));
     return trees;
 }
 

@@ -109,6 +109,23 @@ TEST(KdSplit, SweepAndSamplingMatchDirectCounting) {
     EXPECT_DOUBLE_EQ(fewer.cost, direct({0.25f, 0.5f, 0.75f}).cost);
 }
 
+// Binning's planes run from the boxes' lowest bound to their highest, so on a grid of
+// eighths it sees every box edge, and the empty space beyond the boxes is cut off at its
+// border, as by the exact sweep.
+TEST(KdSplit, BinningFindsTheSweepsPlaneOnAGrid) {
+    const std::vector<FloatBox> boxes = randomBoxes(60, 8);
+    for (const Aabb voxel : {Aabb{{0, 0, 0}, {1, 1, 1}}, Aabb{{0, -1, 0}, {2, 1, 3}}}) {
+        const SahModel sah(voxel, KdSettings{});
+        const SahSplit sorted = findSplitBySorting(boxes, sah);
+        const SahSplit binned = findSplitByBinning(boxes, 8, sah);
+        EXPECT_EQ(binned.axis, sorted.axis);
+        EXPECT_EQ(binned.pos, sorted.pos);
+        EXPECT_DOUBLE_EQ(binned.cost, sorted.cost);
+        // Fewer bins see fewer planes: never a cheaper one.
+        EXPECT_GE(findSplitByBinning(boxes, 3, sah).cost, sorted.cost);
+    }
+}
+
 TEST(KdSplit, RadixSortOrdersEventsAsOperatorLess) {
     std::mt19937 gen(9);
     std::uniform_int_distribution<int> pick(0, 9);
@@ -136,6 +153,18 @@ TEST(KdTree, SweepAndSortBuildTheSameTree) {
     EXPECT_GT(sweep->stats().nodes, 100u);
     // Sampling evaluates fewer planes: never a cheaper tree than the exact search here.
     EXPECT_GE(buildKdTree(prims, withMethod(KdSplitMethod::Sample))->stats().sahCost, sweep->stats().sahCost);
+}
+
+// Min-max binning in the large nodes (KdSettings::binningMinimum) costs little tree quality:
+// here every node of 64 primitives or more bins.
+TEST(KdTree, BinningKeepsTheSahCostClose) {
+    const Primitives prims = generateScene({20000, 2000, Placement::Clustered, 11}).primitives;
+    KdSettings exact;
+    exact.binningMinimum = prims.size() + 1;
+    KdSettings binned;
+    binned.binningMinimum = 64;
+    const double exactCost = buildKdTree(prims, exact)->stats().sahCost;
+    EXPECT_NEAR(buildKdTree(prims, binned)->stats().sahCost, exactCost, 0.02 * exactCost);
 }
 
 TEST(KdTree, SameTreeForAnyNumberOfThreads) {

@@ -21,8 +21,8 @@ class FunctionTextures : public ImageTextures {
 public:
     FunctionTextures(const Scene& scene, std::function<Color(float, float)> value)
         : ImageTextures(scene), value_(std::move(value)) {}
-    Color lookup(std::uint32_t, float s, float t) const override { return value_(s, t); }
-    Color data(std::uint32_t, float s, float t) const override { return value_(s, t); }
+    Color lookup(std::uint32_t, const TexCoord& at) const override { return value_(at.s, at.t); }
+    Color data(std::uint32_t, const TexCoord& at) const override { return value_(at.s, at.t); }
     float alpha(std::uint32_t, float, float, bool) const override { return 1; }
     bool hasAlpha(std::uint32_t, bool) const override { return false; }
 
