@@ -50,8 +50,9 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
 
 // What a render will cost, predicted before it starts (rt-render -p): a fixed, even spread of
 // the window's pixels (a grid of about `probePixels`, taken in a fixed order) is traced with one
-// sample each on one thread, until all are done or `maxProbeSeconds` has passed (after at least
-// one pixel), and extrapolated to every pixel and sample. The counts depend only on the pixels
+// sample each on one thread (after one untimed pixel that pays the one-time costs), until all
+// are done or `maxProbeSeconds` has passed (after at least one pixel), and extrapolated to every
+// pixel and sample. The counts depend only on the pixels
 // probed; the seconds assume the render's threads share the work evenly. --adaptive is not
 // taken into account (it traces fewer pixels than predicted).
 struct RenderEstimate {
