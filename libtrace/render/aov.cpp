@@ -16,8 +16,14 @@ const std::vector<AovLayer>& aovLayers() {
         {Aov::Albedo, "albedo", {"albedo.R", "albedo.G", "albedo.B"}, false},
         {Aov::Id, "id", {"id.material", "id.primitive"}, true},
         {Aov::Cost, "cost", {"cost.steps", "cost.tests", "cost.allSteps", "cost.allTests"}, false},
+        {Aov::Variance, "variance", {"variance.R", "variance.G", "variance.B"}, false},
     };
     return layers;
+}
+
+const char* aovName(Aov aov) {
+    const auto& layers = aovLayers();
+    return std::find_if(layers.begin(), layers.end(), [aov](const AovLayer& l) { return l.aov == aov; })->name;
 }
 
 std::vector<Aov> parseAovList(const std::string& list) {
@@ -27,7 +33,7 @@ std::vector<Aov> parseAovList(const std::string& list) {
         const auto& layers = aovLayers();
         const auto it = std::find_if(layers.begin(), layers.end(), [&](const AovLayer& l) { return name == l.name; });
         if (it == layers.end())
-            throw InputError("--aov: unknown AOV '" + name + "' (Z, N, Ng, P, albedo, id, cost or all)");
+            throw InputError("--aov: unknown AOV '" + name + "' (Z, N, Ng, P, albedo, id, cost, variance or all)");
         wanted[std::size_t(it - layers.begin())] = true;
     }
     std::vector<Aov> aovs;
@@ -50,6 +56,8 @@ std::vector<float> aovValues(const PixelAovs& a, Aov aov) {
             return {a.albedo.r, a.albedo.g, a.albedo.b};
         case Aov::Cost:
             return {a.steps, a.tests, a.allSteps, a.allTests};
+        case Aov::Variance:
+            return {a.variance.r, a.variance.g, a.variance.b};
         case Aov::Id:
             break;
     }

@@ -3,7 +3,9 @@
 // (`oiiotool --ch N.X,N.Y,N.Z`). Supersampling averages Z, N, Ng, P, albedo and cost over the
 // camera samples (Z, N, Ng, P and albedo over those that hit something); the ids are the first
 // sample's. The cost layer is rt-inspect's heat map as data: the traversal steps and
-// intersection tests of the pixel's camera rays, and of every ray they spawned.
+// intersection tests of the pixel's camera rays, and of every ray they spawned. The variance
+// layer is a noise figure: the variance of the pixel's mean colour, per channel, estimated from
+// its samples (render/pixel_estimate.h); it falls as 1/N with N samples, and is 0 with one.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +16,7 @@
 
 namespace rt {
 
-enum class Aov { Z, N, Ng, P, Albedo, Id, Cost };
+enum class Aov { Z, N, Ng, P, Albedo, Id, Cost, Variance };
 
 struct AovLayer {
     Aov aov;
@@ -25,6 +27,9 @@ struct AovLayer {
 
 // Every AOV, in the order the channels are written.
 const std::vector<AovLayer>& aovLayers();
+
+// The name --aov gives `aov`.
+const char* aovName(Aov aov);
 
 // "Z,N,cost" or "all" as the list of AOVs, in aovLayers() order; throws rt::InputError
 // naming an unknown one.
@@ -41,6 +46,7 @@ struct PixelAovs {
     std::uint32_t material = kNoId, primitive = kNoId;
     float steps = 0, tests = 0;        // per camera ray: its own traversal steps and tests
     float allSteps = 0, allTests = 0;  // per camera ray: with every shadow and reflection ray it spawned
+    Color variance;                    // of the mean colour, per channel
 };
 
 // The float values of `aov` for a pixel, in the order of its channels (not for Aov::Id).

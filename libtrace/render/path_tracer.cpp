@@ -6,6 +6,7 @@
 #include "render/light_sample.h"
 #include "render/normal_map.h"
 #include "render/refraction.h"
+#include "render/pixel_estimate.h"
 
 namespace rt {
 
@@ -71,23 +72,21 @@ PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const Rende
       images_(images) {}
 
 Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs*) const {
-    const int n = settings_.pixelSamples;
-    Color sum;
-    int hits = 0;
-    for (int i = 0; i < n; ++i) {
-        SobolSampler sampler{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i), settings_.seed};
-        const auto [sx, sy] = sampler.next2D();  // a box filter over the pixel
-        ++counters.camera.rays;
+    PixelEstimate estimate;
+    for (int i = 0; i < settings_.pixelSamples; ++i) {
         bool seen = false;
-        const Color sample = radiance(camera_.at(Real(x) + sx, Real(y) + sy), sampler, counters, seen);
-        hits += seen;
-        if (isFinite(sample))
-            sum += sample;
-        else
-            counters.nonFinite.add(x, y);
+        const Color c = sample(x, y, i, counters, seen);  // before add() reads `seen`
+        if (!estimate.add(c, seen)) counters.nonFinite.add(x, y);
     }
-    coverage = float(hits) / float(n);
-    return sum * (1.0f / float(n));
+    coverage = estimate.coverage();
+    return estimate.mean();
+}
+
+Color PathTracer::sample(int x, int y, int index, RenderCounters& counters, bool& seen) const {
+    SobolSampler sampler{std::uint32_t(x), std::uint32_t(y), std::uint32_t(index), settings_.seed};
+    const auto [sx, sy] = sampler.next2D();  // a box filter over the pixel
+    ++counters.camera.rays;
+    return radiance(camera_.at(Real(x) + sx, Real(y) + sy), sampler, counters, seen);
 }
 
 Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCounters& counters, bool& seen) const {

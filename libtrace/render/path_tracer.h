@@ -79,6 +79,10 @@ public:
     // Non-finite samples count as black and are recorded in counters.nonFinite.
     Color pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs = nullptr) const;
 
+    // Path `index` of pixel (x, y), as pixel() takes it (possibly non-finite); `seen` tells whether
+    // its camera ray hit anything. The progressive renderer (render/renderer.h) takes one per pass.
+    Color sample(int x, int y, int index, RenderCounters& counters, bool& seen) const;
+
     // The radiance arriving along a camera ray; `seen` tells whether it hit anything.
     Color radiance(const Ray& ray, SobolSampler& sampler, RenderCounters& counters, bool& seen) const;
 

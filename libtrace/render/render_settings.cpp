@@ -41,18 +41,23 @@ void validate(const RenderSettings& s) {
         throw InputError("--max-bounces must be 0-" + std::to_string(kMaxBounces));
     if (!(s.clampRadiance >= 0) || !std::isfinite(s.clampRadiance))
         throw InputError("--clamp must be a finite number >= 0 (0 is off)");
-    if (s.integrator == Integrator::Path && s.aovs)
-        throw InputError("AOVs are written by the whitted integrator only, so far");
+    if (s.integrator == Integrator::Path)
+        for (const Aov aov : s.aovs)
+            if (aov != Aov::Variance)
+                throw InputError(std::string("--aov ") + aovName(aov) +
+                                 ": written by the whitted integrator only, so far (the path tracer writes variance)");
     if (s.adaptiveGrid != 0 &&
         (s.adaptiveGrid < 2 || s.adaptiveGrid > kMaxAdaptiveGrid || (s.adaptiveGrid & (s.adaptiveGrid - 1)) != 0))
         throw InputError("the adaptive grid must be a power of two from 2 to " + std::to_string(kMaxAdaptiveGrid) +
                          ", got " + std::to_string(s.adaptiveGrid));
     if (!(s.adaptiveThreshold >= 0) || !std::isfinite(s.adaptiveThreshold))
         throw InputError("the adaptive threshold must be a finite number of at least 0");
-    if (s.adaptiveGrid && s.aovs)
+    if (s.adaptiveGrid && !s.aovs.empty())
         throw InputError("--adaptive interpolates colour only: AOVs (--aov) need every pixel traced");
     if (s.adaptiveGrid && s.integrator == Integrator::Path)
         throw InputError("--adaptive needs the whitted integrator: it compares the objects the camera rays hit");
+    if (!(s.timeLimitSeconds >= 0) || s.timeLimitSeconds > kMaxTimeLimit)
+        throw InputError("--time-limit must be 0 (none) to " + std::to_string(int(kMaxTimeLimit)) + " seconds");
     if (s.threads < 0) throw InputError("the thread count must not be negative");
 }
 

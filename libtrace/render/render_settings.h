@@ -3,8 +3,10 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "core/names.h"
+#include "render/aov.h"
 #include "render/framebuffer.h"
 
 namespace rt {
@@ -15,6 +17,7 @@ inline constexpr int kMaxReflectionDepth = 10;
 inline constexpr int kMaxSamples = 1 << 20;   // -S and -r
 inline constexpr int kMaxBounces = 1000;      // --max-bounces
 inline constexpr int kMaxAdaptiveGrid = 256;  // --adaptive: the coarsest corner spacing
+inline constexpr double kMaxTimeLimit = 1e9;  // --time-limit, seconds: about 32 years
 
 // --integrator: the thesis's Whitted ray tracer (render/tracer.h) or the path tracer
 // (render/path_tracer.h, docs/path-tracing.md).
@@ -37,7 +40,7 @@ struct RenderSettings {
     int distributedSamples = 128;  // -r
     int threads = 0;               // --threads; 0 lets OpenMP use every core
     std::uint32_t seed = 0;        // --seed: another seed gives independent noise, as deterministic
-    bool aovs = false;             // --aov: fill each pixel's PixelAovs (render/aov.h) too
+    std::vector<Aov> aovs;         // --aov: fill each pixel's PixelAovs (render/aov.h) too, for these layers
     Integrator integrator = Integrator::Whitted;
     int maxBounces = 8;       // --max-bounces: the path tracer's surface interactions after the camera ray
     float clampRadiance = 0;  // --clamp: the path tracer's indirect samples capped at this value; 0 is off
@@ -46,6 +49,9 @@ struct RenderSettings {
     // adaptiveThreshold (linear colour and alpha) and see the same object is interpolated.
     int adaptiveGrid = 0;
     float adaptiveThreshold = 0.02f;  // --adaptive-threshold
+    // --time-limit: seconds after which the render stops; 0 is none. The path tracer keeps its
+    // last whole pass (render/renderer.h); a render with no whole pass yet keeps nothing.
+    double timeLimitSeconds = 0;
 
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
 };

@@ -63,6 +63,10 @@ struct RenderStats {
     std::uint64_t treeNodes = 0;
     int threads = 0;
     RenderCounters counters;
+    // The samples every pixel of the picture received: -S, or with --time-limit the whole passes
+    // the path tracer finished (0: not one, or a Whitted render cut short; the picture is not whole).
+    int samplesPerPixel = 0;
+    bool timeLimitReached = false;  // --time-limit stopped the render before all -S samples
 
     double testsPerRay() const {
         const RayCounters all = counters.total();

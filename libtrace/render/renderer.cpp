@@ -3,14 +3,16 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <optional>
-#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/stopwatch.h"
 #include "render/adaptive.h"
 #include "render/path_tracer.h"
+#include "render/pixel_estimate.h"
 #include "render/tracer.h"
 
 namespace rt {
@@ -32,86 +34,252 @@ std::vector<PixelWindow> blocksOf(const PixelWindow& w, int size) {
     return blocks;
 }
 
-// The blocks in the order the threads take them: a golden-ratio stride through the picture,
+// The items in the order the threads take them: a golden-ratio stride through the picture,
 // so that every stretch of the render samples the whole frame (sky and detail alike) and the
 // work done so far predicts the time left. Pixels are independent, so the order changes no bit.
-std::vector<PixelWindow> spreadOut(const std::vector<PixelWindow>& blocks) {
-    const std::size_t n = blocks.size();
+template <class Item>
+std::vector<Item> spreadOut(const std::vector<Item>& items) {
+    const std::size_t n = items.size();
     std::size_t stride = std::max<std::size_t>(1, std::size_t(double(n) * 0.6180339887));
-    while (std::gcd(stride, n) > 1) ++stride;  // coprime: the walk visits every block once
-    std::vector<PixelWindow> order;
+    while (std::gcd(stride, n) > 1) ++stride;  // coprime: the walk visits every item once
+    std::vector<Item> order;
     order.reserve(n);
-    for (std::size_t i = 0, k = 0; i < n; ++i, k = (k + stride) % n) order.push_back(blocks[k]);
+    for (std::size_t i = 0, k = 0; i < n; ++i, k = (k + stride) % n) order.push_back(items[k]);
     return order;
 }
 
-// The block loop, for either integrator: both give pixel(x, y, counters, alpha, aovs). Adaptive
-// subsampling needs the Whitted tracer's object ids (validate() refuses it with the path tracer).
-template <class Integrator>
-Framebuffer renderWith(const Integrator& integrator, const Scene& scene, const RenderSettings& settings,
-                       RenderStats& stats, const RenderProgress& progress, const RenderWatch& watch) {
-    Framebuffer image(settings.width, settings.height, settings.window(), scene.background, settings.aovs);
-    std::optional<AdaptiveSampler> adaptive;
-    if constexpr (std::is_same_v<Integrator, Tracer>)
-        if (settings.adaptiveGrid) adaptive.emplace(integrator, settings);
-    const int blockSize = adaptive ? adaptive->blockSize() : kBlockSize;
-    const std::vector<PixelWindow> blocks = spreadOut(blocksOf(settings.window(), blockSize));
-    const int total = int(blocks.size());
-    const int threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
-    std::vector<ThreadCounters> perThread(static_cast<std::size_t>(threads));
-    const auto countersOfThisThread = [&perThread]() -> RenderCounters& {
-        return perThread[std::size_t(omp_get_thread_num())].counters;
-    };
-    const auto samplesIn = [&settings](const PixelWindow& w) {
-        return std::uint64_t(w.width()) * std::uint64_t(w.height()) * std::uint64_t(settings.pixelSamples);
-    };
-    const std::uint64_t samplesTotal = samplesIn(settings.window());
-    std::uint64_t samplesDone = 0;
+int threadCount(const RenderSettings& settings) {
+    return settings.threads > 0 ? settings.threads : omp_get_max_threads();
+}
 
-    const Stopwatch stopwatch;
-    if (adaptive) {
-        const auto corners = std::int64_t(adaptive->cornerCount());
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 64)
-        for (std::int64_t i = 0; i < corners; ++i) adaptive->traceCorner(std::size_t(i), countersOfThisThread());
+// What every pass over the picture shares: the blocks in their order, the threads with their
+// counters, the progress, the clock of --time-limit and the stop flag of a window.
+class BlockLoop {
+public:
+    BlockLoop(const RenderSettings& settings, std::vector<PixelWindow> blocks, const RenderProgress& progress,
+              const RenderWatch& watch)
+        : settings_(settings),
+          blocks_(spreadOut(blocks)),
+          progress_(progress),
+          watch_(watch),
+          threads_(threadCount(settings)),
+          perThread_(std::size_t(threads_)) {
+        const PixelWindow w = settings.window();
+        samplesTotal_ = std::uint64_t(w.width()) * std::uint64_t(w.height()) * std::uint64_t(settings.pixelSamples);
     }
-#pragma omp parallel for num_threads(threads) schedule(dynamic)
-    for (int i = 0; i < total; ++i) {
-        if (watch.stop && watch.stop->load(std::memory_order_relaxed)) continue;
-        const PixelWindow& b = blocks[std::size_t(i)];
-        RenderCounters& counters = countersOfThisThread();
-        if (adaptive)
-            adaptive->fill(b, image, counters);
-        else
-            for (int y = b.y0; y < b.y1; ++y)
-                for (int x = b.x0; x < b.x1; ++x)
-                    image.at(x, y) = integrator.pixel(x, y, counters, image.alphaAt(x, y), image.aovsAt(x, y));
-        if (progress || watch.blockDone) {
+
+    int threads() const { return threads_; }
+    RenderCounters& counters() { return perThread_[std::size_t(omp_get_thread_num())].counters; }
+
+    // True once the time limit has passed or the watcher asked to stop: no further work starts.
+    bool halted() {
+        if (settings_.timeLimitSeconds > 0 && !timeUp_.load(std::memory_order_relaxed) &&
+            stopwatch_.seconds() >= settings_.timeLimitSeconds)
+            timeUp_.store(true, std::memory_order_relaxed);
+        return timeUp_.load(std::memory_order_relaxed) || (watch_.stop && watch_.stop->load(std::memory_order_relaxed));
+    }
+    bool timeUp() const { return timeUp_.load(std::memory_order_relaxed); }
+
+    // Runs traceBlock(block, counters) on every block over the threads. A finished block counts
+    // samplesPerPixel camera samples a pixel towards the progress and, given `image`, goes to
+    // the watcher. False when the render halted before every block was finished.
+    template <class TraceBlock>
+    bool run(const TraceBlock& traceBlock, int samplesPerPixel, const Framebuffer* image) {
+        const int total = int(blocks_.size());
+#pragma omp parallel for num_threads(threads_) schedule(dynamic)
+        for (int i = 0; i < total; ++i) {
+            const PixelWindow& b = blocks_[std::size_t(i)];
+            if (halted() || !traceBlock(b, counters())) continue;
+            if (!progress_ && !(image && watch_.blockDone)) continue;
 #pragma omp critical(rt_render_progress)
             {
-                samplesDone += samplesIn(b);
-                if (progress) progress(samplesDone, samplesTotal);
-                if (watch.blockDone) watch.blockDone(image, b);
+                samplesDone_ += std::uint64_t(b.width()) * std::uint64_t(b.height()) * std::uint64_t(samplesPerPixel);
+                if (progress_) progress_(samplesDone_, samplesTotal_);
+                if (image && watch_.blockDone) watch_.blockDone(*image, b);
             }
         }
+        return !halted();
     }
-    stats.renderSeconds = stopwatch.seconds();
 
-    stats.counters = {};
-    for (const ThreadCounters& t : perThread) stats.counters += t.counters;
-    stats.objects = scene.primitives.size();
-    stats.lights = scene.lights.size();
-    stats.threads = threads;
+    // Calls tracePixel(x, y) on each pixel of `block`, row by row; false if the render halted
+    // first (checked at every pixel: one pixel of a million lights can take a tenth of a second).
+    template <class TracePixel>
+    bool eachPixel(const PixelWindow& block, const TracePixel& tracePixel) {
+        for (int y = block.y0; y < block.y1; ++y)
+            for (int x = block.x0; x < block.x1; ++x) {
+                if (halted()) return false;
+                tracePixel(x, y);
+            }
+        return true;
+    }
+
+    // The render part of `stats`: the time, the summed counters, the objects, lights and threads.
+    void finish(const Scene& scene, int samplesPerPixel, RenderStats& stats) const {
+        stats.renderSeconds = stopwatch_.seconds();
+        stats.counters = {};
+        for (const ThreadCounters& t : perThread_) stats.counters += t.counters;
+        stats.objects = scene.primitives.size();
+        stats.lights = scene.lights.size();
+        stats.threads = threads_;
+        stats.samplesPerPixel = samplesPerPixel;
+        stats.timeLimitReached = timeUp();
+    }
+
+private:
+    const RenderSettings& settings_;
+    std::vector<PixelWindow> blocks_;
+    const RenderProgress& progress_;
+    const RenderWatch& watch_;
+    int threads_;
+    std::vector<ThreadCounters> perThread_;
+    std::uint64_t samplesDone_ = 0, samplesTotal_ = 0;
+    std::atomic<bool> timeUp_{false};
+    const Stopwatch stopwatch_;
+};
+
+// The Whitted tracer in one pass: every pixel takes all its -S samples at once (their jittered
+// grid needs them all), so a render cut short by --time-limit has no whole picture. Adaptive
+// subsampling needs the tracer's object ids (validate() refuses it with the path tracer).
+Framebuffer renderWhitted(const Tracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
+                          const RenderProgress& progress, const RenderWatch& watch) {
+    Framebuffer image(settings.width, settings.height, settings.window(), scene.background, !settings.aovs.empty());
+    std::optional<AdaptiveSampler> adaptive;
+    if (settings.adaptiveGrid) adaptive.emplace(tracer, settings);
+    const int blockSize = adaptive ? adaptive->blockSize() : kBlockSize;
+    BlockLoop loop(settings, blocksOf(settings.window(), blockSize), progress, watch);
+    if (adaptive) {
+        const auto corners = std::int64_t(adaptive->cornerCount());
+#pragma omp parallel for num_threads(loop.threads()) schedule(dynamic, 64)
+        for (std::int64_t i = 0; i < corners; ++i)
+            if (!loop.halted()) adaptive->traceCorner(std::size_t(i), loop.counters());
+    }
+    const bool whole = loop.run(
+        [&](const PixelWindow& b, RenderCounters& counters) {
+            if (adaptive) {
+                adaptive->fill(b, image, counters);
+                return true;
+            }
+            return loop.eachPixel(b, [&](int x, int y) {
+                image.at(x, y) = tracer.pixel(x, y, counters, image.alphaAt(x, y), image.aovsAt(x, y));
+            });
+        },
+        settings.pixelSamples, &image);
+    loop.finish(scene, whole ? settings.pixelSamples : 0, stats);
     return image;
 }
 
+// One camera sample of every pixel of the window, as a pass leaves it before it is added.
+struct PassSample {
+    Color color;
+    bool seen = false;
+};
+
+// Adds a finished pass to every pixel's estimate, in scan order (so that the first non-finite
+// pixel is found as the tracer finds it), and writes the estimates into the picture.
+void addPass(const std::vector<PassSample>& pass, std::vector<PixelEstimate>& estimates, Framebuffer& image,
+             NonFiniteSamples& nonFinite) {
+    const PixelWindow& w = image.window();
+    std::size_t i = 0;
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x, ++i) {
+            PixelEstimate& e = estimates[i];
+            if (!e.add(pass[i].color, pass[i].seen)) nonFinite.add(x, y);
+            image.at(x, y) = e.mean();
+            image.alphaAt(x, y) = e.coverage();
+            if (PixelAovs* aovs = image.aovsAt(x, y)) aovs->variance = e.varianceOfMean();
+        }
+}
+
+// The path tracer in passes: pass k takes sample k of every pixel, so the picture after K
+// passes holds the same bits as a render with -S K (PixelEstimate adds in the same order), for
+// any thread count or region split. --time-limit keeps the passes that finished: a pass cut
+// short is dropped whole. The watcher sees the picture after every pass.
+Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
+                       const RenderProgress& progress, const RenderWatch& watch) {
+    const PixelWindow w = settings.window();
+    Framebuffer image(settings.width, settings.height, w, scene.background, !settings.aovs.empty());
+    BlockLoop loop(settings, blocksOf(w, kBlockSize), progress, watch);
+    std::vector<PixelEstimate> estimates(image.pixels().size());
+    std::vector<PassSample> pass(estimates.size());
+    NonFiniteSamples nonFinite;
+    int passes = 0;
+    for (; passes < settings.pixelSamples; ++passes) {
+        const bool whole = loop.run(
+            [&](const PixelWindow& b, RenderCounters& counters) {
+                return loop.eachPixel(b, [&](int x, int y) {
+                    PassSample& s = pass[std::size_t(y - w.y0) * std::size_t(w.width()) + std::size_t(x - w.x0)];
+                    s.color = tracer.sample(x, y, passes, counters, s.seen);
+                });
+            },
+            1, nullptr);
+        if (!whole) break;
+        addPass(pass, estimates, image, nonFinite);
+        if (watch.blockDone) watch.blockDone(image, w);
+    }
+    loop.finish(scene, passes, stats);
+    stats.counters.nonFinite += nonFinite;
+    return image;
+}
+
+// About `count` pixels of the window on an even grid, in the golden-stride order, so that a
+// probe cut short still sees the whole frame.
+std::vector<std::pair<int, int>> probePixels(const PixelWindow& w, int count) {
+    const int side = std::max(1, int(std::sqrt(double(count))));
+    const int columns = std::min(side, w.width()), rows = std::min(side, w.height());
+    std::vector<std::pair<int, int>> pixels;
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c)
+            pixels.emplace_back(w.x0 + int((c + 0.5) * w.width() / columns), w.y0 + int((r + 0.5) * w.height() / rows));
+    return spreadOut(pixels);
+}
+
+// `probe` is set up as `settings` but with one sample a pixel and no --adaptive.
+template <class Integrator>
+RenderEstimate estimateWith(const Integrator& probe, const RenderSettings& settings, int count, double maxSeconds) {
+    RenderEstimate e;
+    const std::vector<std::pair<int, int>> pixels = probePixels(settings.window(), count);
+    // One untimed, uncounted pixel first pays what only the first pays: tables built on first
+    // use, cold caches. Without it a path-traced probe predicted 12 times the render's time.
+    RenderCounters warmUp;
+    float coverage;
+    probe.pixel(pixels.front().first, pixels.front().second, warmUp, coverage);
+    const Stopwatch stopwatch;
+    for (const auto& [x, y] : pixels) {
+        if (e.probePixels > 0 && stopwatch.seconds() >= maxSeconds) break;
+        probe.pixel(x, y, e.probe, coverage);
+        ++e.probePixels;
+    }
+    e.probeSeconds = stopwatch.seconds();
+    const PixelWindow w = settings.window();
+    e.cameraSamples = std::uint64_t(w.width()) * std::uint64_t(w.height()) * std::uint64_t(settings.pixelSamples);
+    const double perProbe = double(e.cameraSamples) / double(e.probePixels);
+    e.rays = double(e.probe.rays()) * perProbe;
+    e.intersectionTests = double(e.probe.total().intersectionTests) * perProbe;
+    e.threads = threadCount(settings);
+    e.seconds = e.probeSeconds * perProbe / e.threads;
+    return e;
+}
+
 }  // namespace
+
+RenderEstimate estimateRender(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+                              const ImageTextures* images, int probePixels, double maxProbeSeconds) {
+    validate(settings);
+    RenderSettings probe = settings;
+    probe.pixelSamples = 1;
+    probe.adaptiveGrid = 0;
+    probe.aovs.clear();
+    if (settings.integrator == Integrator::Path)
+        return estimateWith(PathTracer(scene, accel, probe, images), settings, probePixels, maxProbeSeconds);
+    return estimateWith(Tracer(scene, accel, probe, images), settings, probePixels, maxProbeSeconds);
+}
 
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
                    const RenderProgress& progress, const ImageTextures* images, const RenderWatch& watch) {
     validate(settings);
     if (settings.integrator == Integrator::Path)
-        return renderWith(PathTracer(scene, accel, settings, images), scene, settings, stats, progress, watch);
-    return renderWith(Tracer(scene, accel, settings, images), scene, settings, stats, progress, watch);
+        return renderPath(PathTracer(scene, accel, settings, images), scene, settings, stats, progress, watch);
+    return renderWhitted(Tracer(scene, accel, settings, images), scene, settings, stats, progress, watch);
 }
 
 }  // namespace rt

@@ -34,12 +34,39 @@ struct RenderWatch {
 };
 
 // Renders settings.window() of the scene. Fills the render part of `stats` (render time,
-// rays, tests, non-finite samples written as black, objects, lights, threads); preprocessing
-// time and tree nodes are the caller's.
+// rays, tests, non-finite samples written as black, objects, lights, threads, samples per pixel);
+// preprocessing time and tree nodes are the caller's.
+//
+// The path tracer renders in passes, one sample of every pixel each, so that its picture is
+// whole after every pass; with -S K and K passes finished it holds the same bits as in one go.
+// settings.timeLimitSeconds stops it at the last whole pass (stats.samplesPerPixel says how
+// many). The Whitted tracer takes all -S samples of a pixel at once: a render it cuts short
+// has stats.samplesPerPixel 0, and the picture must not be used.
 // Image textures are looked up through `images` (none: they are white).
 // Throws rt::InputError for bad settings or a degenerate camera.
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
                    const RenderProgress& progress = {}, const ImageTextures* images = nullptr,
                    const RenderWatch& watch = {});
+
+// What a render will cost, predicted before it starts (rt-render -p): a fixed, even spread of
+// the window's pixels (a grid of about `probePixels`, taken in a fixed order) is traced with one
+// sample each on one thread (after one untimed pixel that pays the one-time costs), until all
+// are done or `maxProbeSeconds` has passed (after at least one pixel), and extrapolated to every
+// pixel and sample. The counts depend only on the pixels
+// probed; the seconds assume the render's threads share the work evenly. --adaptive is not
+// taken into account (it traces fewer pixels than predicted).
+struct RenderEstimate {
+    std::uint64_t probePixels = 0;  // traced by the probe
+    double probeSeconds = 0;
+    RenderCounters probe;             // the probed pixels' rays and the accelerator's work for them
+    std::uint64_t cameraSamples = 0;  // of the whole render: pixels x -S
+    double rays = 0;                  // predicted for the whole render, of every kind
+    double intersectionTests = 0;
+    double seconds = 0;  // predicted wall-clock time of the render on `threads` threads
+    int threads = 0;
+};
+RenderEstimate estimateRender(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
+                              const ImageTextures* images = nullptr, int probePixels = 256,
+                              double maxProbeSeconds = 0.5);
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 #include "render/light_sample.h"
 #include "render/normal_map.h"
 #include "render/phong.h"
+#include "render/pixel_estimate.h"
 
 namespace rt {
 
@@ -44,8 +45,7 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
 Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
     const int n = settings_.pixelSamples;
     const RenderCounters before = counters;
-    Color sum;
-    int hits = 0;
+    PixelEstimate estimate;
     for (int i = 0; i < n; ++i) {
         SampleRng rng{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i), settings_.seed};
         Real sx = Real(0.5), sy = Real(0.5);
@@ -55,7 +55,6 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
         const Ray ray = camera_.at(Real(x) + sx, Real(y) + sy);
         Hit hit;
         const bool seen = accel_.intersect(ray, kInfinity, hit, counters.camera);
-        hits += seen;
         Color sample = scene_.background;
         if (seen) {  // the AOVs take the point, normal and colour the shading uses
             const RayDifferential differential =
@@ -65,14 +64,14 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
             if (aovs) addHit(*aovs, surface, hit, i == 0);
             sample = shade(ray, hit, surface, 0, false, rng, counters, differential.radiusAt(hit.t));
         }
-        if (isFinite(sample))
-            sum += sample;
-        else
-            counters.nonFinite.add(x, y);  // counts as black, and the tool says so
+        if (!estimate.add(sample, seen)) counters.nonFinite.add(x, y);  // counts as black, and the tool says so
     }
-    coverage = float(hits) / float(n);
-    if (aovs) average(*aovs, n, hits, before, counters);
-    return n == 1 ? sum : sum * (1.0f / float(n));
+    coverage = estimate.coverage();
+    if (aovs) {
+        average(*aovs, n, estimate.hits, before, counters);
+        aovs->variance = estimate.varianceOfMean();
+    }
+    return estimate.mean();
 }
 
 // Sums what a camera ray that hit shows into the pixel's AOVs; average() divides. N and the

@@ -175,6 +175,6 @@ TEST(RenderAdaptive, RejectsAGridThatIsNoPowerOfTwoAndAovs) {
     settings = adaptive(16, 16, 1);
     EXPECT_THROW(render(s, accel, settings, stats), InputError);
     settings = adaptive(16, 16);
-    settings.aovs = true;
+    settings.aovs = {Aov::Z};
     EXPECT_THROW(render(s, accel, settings, stats), InputError);
 }

@@ -28,7 +28,7 @@ Scene planeAtFive() {
 }
 
 Framebuffer renderAovs(const Scene& s, const Accelerator& accel, RenderSettings settings) {
-    settings.aovs = true;
+    settings.aovs = parseAovList("all");
     RenderStats stats;
     return render(s, accel, settings, stats);
 }

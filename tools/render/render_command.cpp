@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
 #include <vector>
 
 #include "accel/build.h"
@@ -23,6 +24,7 @@
 #include "render/tiles.h"
 #include "sdl_window.h"
 #include "stats_report.h"
+#include "tool.h"
 #include "version.h"
 
 namespace rt::tool::render {
@@ -134,6 +136,17 @@ void checkOneStandardOutput(const RenderOptions& o, const std::vector<ImageOutpu
         throw InputError(users[0] + " and " + users[1] + " would both write to standard output; send one to a file");
 }
 
+// Every AOV some output asks for, in aovLayers() order.
+std::vector<Aov> wantedAovs(const std::vector<ImageOutputSettings>& outputs) {
+    std::vector<Aov> aovs;
+    for (const AovLayer& layer : aovLayers())
+        if (std::any_of(outputs.begin(), outputs.end(), [&layer](const ImageOutputSettings& s) {
+                return std::find(s.aovs.begin(), s.aovs.end(), layer.aov) != s.aovs.end();
+            }))
+            aovs.push_back(layer.aov);
+    return aovs;
+}
+
 // Every problem with the outputs is found before the scene is loaded: bad colour names
 // (whatever the output type), a file that cannot be written; missing folders are created.
 void prepareOutputs(const RenderOptions& o, const std::vector<ImageOutputSettings>& outputs, int firstFrame) {
@@ -239,19 +252,33 @@ std::string outputNote(const RenderOptions& o, const ImageOutputSettings& output
            "write the picture with -f out.png or -f out.exr\n";
 }
 
+// The exit code of a render that --time-limit cut short with nothing written (docs/rt-render.md).
+constexpr int kExitTimeLimit = 3;
+
+// --time-limit ran out before the picture had one sample in every pixel: nothing is written.
+class TimeLimitReached : public std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 // Renders one picture (a turntable's frame `frame`) once and writes every output of it.
 void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& accel, const TreeReport& tree,
                  const ImageTextures& images, const std::vector<ImageOutputSettings>& outputs, int frame,
                  ProgressMode progress, RenderStats& stats, const RenderWatch& watch) {
     std::vector<ImageOutputSettings> frameOutputs = outputs;
     for (ImageOutputSettings& out : frameOutputs) out.path = framePath(out.path, frame);
-    if (!o.preprocessOnly) {
+    std::optional<RenderEstimate> estimate;
+    if (o.preprocessOnly) {
+        estimate = estimateRender(scene, accel, o.render, &images);
+        if (!o.quiet) std::cerr << estimateSummary(o.render, *estimate);
+    } else {
         const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats, images, watch);
         if (watch.stop && *watch.stop) return;  // the window was closed: nothing is written
-        const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, o.render.pixelSamples,
+        if (stats.samplesPerPixel == 0) throw TimeLimitReached(timeLimitMessage(o.render));
+        const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, stats.samplesPerPixel,
                                  stats.renderSeconds};
         for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
-        std::cerr << nonFiniteWarning(stats);  // even with -q: a replaced sample is never silent
+        std::cerr << nonFiniteWarning(stats);         // even with -q: a replaced sample is never silent
+        std::cerr << timeLimitNote(o.render, stats);  // even with -q: the picture has fewer samples than asked
     }
     if (!o.quiet) {
         std::cerr << statsSummary(o.render, tree.stats, stats, !o.preprocessOnly);
@@ -261,8 +288,9 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
     if (o.statsJson) {
         const SceneSummary summary = summarizeScene(o.scenePath, scene);
         const RunRecord run{o.arguments, o.optionValues, o.orbit > 0 ? std::optional<int>(frame) : std::nullopt};
-        writeFileAtomically(framePath(*o.statsJson, frame),
-                            [&](std::ostream& out) { writeStatsJson(out, run, summary, o.render, tree, stats); });
+        writeFileAtomically(framePath(*o.statsJson, frame), [&](std::ostream& out) {
+            writeStatsJson(out, run, summary, o.render, tree, stats, estimate);
+        });
     }
 }
 
@@ -276,16 +304,14 @@ std::optional<SdlWindow> openWindow(RenderOptions& o) {
     return std::optional<SdlWindow>(std::in_place, o.render.window(), o.color, "rt-render " + o.scenePath);
 }
 
-}  // namespace
-
-int runRender(RenderOptions o) {
+// Everything runRender does but the exit code of --time-limit.
+int renderAll(RenderOptions o) {
     if (o.region) o.render.region = parseRegion(*o.region);
     if (o.tile) o.render.region = parseTile(o.tiles.value_or(""), *o.tile, o.render.width, o.render.height);
     const FrameRange frames = parseFrames(o.frames, o.orbit);
     std::optional<SdlWindow> window = openWindow(o);
     const std::vector<ImageOutputSettings> outputs = outputSettings(o);
-    o.render.aovs =
-        std::any_of(outputs.begin(), outputs.end(), [](const ImageOutputSettings& s) { return !s.aovs.empty(); });
+    o.render.aovs = wantedAovs(outputs);
     validate(o.render);  // with the AOVs the outputs ask for
     const ProgressMode progress = progressMode(o.progress, o.quiet);
     if (outputsComplete(o, outputs, frames, progress)) return 0;
@@ -324,6 +350,17 @@ int runRender(RenderOptions o) {
     if (window) return showWhileRendering(*window, renderFrames);
     renderFrames({});
     return 0;
+}
+
+}  // namespace
+
+int runRender(RenderOptions o) {
+    try {
+        return renderAll(std::move(o));
+    } catch (const TimeLimitReached& e) {
+        printError("rt-render", e.what());
+        return kExitTimeLimit;
+    }
 }
 
 }  // namespace rt::tool::render

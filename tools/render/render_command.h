@@ -76,7 +76,8 @@ PixelWindow parseRegion(const std::string& text);
 PixelWindow parseTile(const std::string& tiles, const std::string& tile, int width, int height);
 
 // Loads the scene, builds the accelerator, renders and writes what the options ask for.
-// Returns the exit code; throws rt::InputError for bad input (exit 2), others for failures (exit 1).
+// Returns the exit code (3: --time-limit left no whole picture, nothing written); throws
+// rt::InputError for bad input (exit 2), others for failures (exit 1).
 int runRender(RenderOptions options);
 
 }  // namespace rt::tool::render

@@ -61,6 +61,10 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
         ->capture_default_str()
         ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
+    app.add_option("--time-limit", o.render.timeLimitSeconds,
+                   "Stop after this many seconds: the path tracer writes its whole passes, else nothing (exit 3)")
+        ->check(rt::tool::numberIn(0.0, rt::kMaxTimeLimit))
+        ->group(group);
     app.add_option("--seed", o.render.seed,
                    "Random seed of the samples: another seed, independent noise (default 0, always the same)")
         ->capture_default_str()
@@ -141,7 +145,8 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
         ->check(CLI::IsMember(rt::namesOf(rt::kOnOffNames)))
         ->group(group);
     app.add_option("--aov", o.aovs,
-                   "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, or all")
+                   "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, "
+                   "variance, or all")
         ->group(group);
     app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")
         ->check(CLI::IsMember(rt::kPngBits))

@@ -63,6 +63,22 @@ std::string adaptiveSummary(const RenderSettings& settings, const RenderCounters
                   100.0 * (full - double(c.camera.rays)) / full, full);
 }
 
+void writeEstimateJson(JsonWriter& json, const std::optional<RenderEstimate>& e) {
+    if (!e) {
+        json.null();
+        return;
+    }
+    json.beginObject();
+    json.member("probePixels", e->probePixels);
+    json.member("probeSeconds", e->probeSeconds);
+    json.member("cameraSamples", e->cameraSamples);
+    json.member("rays", e->rays);
+    json.member("intersectionTests", e->intersectionTests);
+    json.member("seconds", e->seconds);
+    json.member("threads", e->threads);
+    json.endObject();
+}
+
 }  // namespace
 
 std::string nonFiniteWarning(const RenderStats& s) {
@@ -74,6 +90,31 @@ std::string nonFiniteWarning(const RenderStats& s) {
         static_cast<unsigned long long>(n.count), n.firstX, n.firstY);
 }
 
+std::string timeLimitMessage(const RenderSettings& settings) {
+    const std::string limit = format("--time-limit %g s", settings.timeLimitSeconds);
+    if (settings.integrator == Integrator::Path)
+        return limit + " ran out before the first pass (one sample of every pixel) was finished: nothing written";
+    return limit +
+           " ran out before the picture was finished: nothing written (the whitted integrator renders in one "
+           "pass; --integrator path keeps the passes it finished)";
+}
+
+std::string timeLimitNote(const RenderSettings& settings, const RenderStats& stats) {
+    if (!stats.timeLimitReached) return {};
+    return format("rt-render: --time-limit %g s reached: %d of %d samples per pixel taken and written\n",
+                  settings.timeLimitSeconds, stats.samplesPerPixel, settings.pixelSamples);
+}
+
+std::string estimateSummary(const RenderSettings& settings, const RenderEstimate& e) {
+    const PixelWindow w = settings.window();
+    return format(
+        "rt-render: estimate: %dx%d pixels x %d sample%s: %.3g rays, %.3g intersection tests, about %.3g s on %d "
+        "thread%s (probe: %llu pixels traced in %.3g s)\n",
+        w.width(), w.height(), settings.pixelSamples, settings.pixelSamples == 1 ? "" : "s", e.rays,
+        e.intersectionTests, e.seconds, e.threads, e.threads == 1 ? "" : "s",
+        static_cast<unsigned long long>(e.probePixels), e.probeSeconds);
+}
+
 std::string thesisStatsLine(const RenderStats& s) {
     return format("%.2f %.2f %llu %llu %llu %.2f", s.preprocessSeconds, s.renderSeconds,
                   static_cast<unsigned long long>(s.objects), static_cast<unsigned long long>(s.lights),
@@ -81,7 +122,7 @@ std::string thesisStatsLine(const RenderStats& s) {
 }
 
 void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary& scene, const RenderSettings& settings,
-                    const TreeReport& tree, const RenderStats& s) {
+                    const TreeReport& tree, const RenderStats& s, const std::optional<RenderEstimate>& estimate) {
     const NonFiniteSamples& nonFinite = s.counters.nonFinite;
     JsonWriter json(out);
     json.beginDocument();
@@ -101,6 +142,10 @@ void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary&
     json.member("nonFiniteSamples", nonFinite.count);
     json.member("interpolatedPixels", s.counters.interpolatedPixels);  // --adaptive
     json.member("fullRenderCameraRays", fullRenderCameraRays(settings));
+    json.member("samplesPerPixel", s.samplesPerPixel);    // taken: fewer than -S if --time-limit ran out
+    json.member("timeLimitReached", s.timeLimitReached);  // --time-limit
+    json.key("estimate");                                 // -p's prediction, else null
+    writeEstimateJson(json, estimate);
     json.key("firstNonFinitePixel");  // [x, y], or null when every sample was finite
     if (nonFinite.count) {
         json.beginArray();

@@ -12,6 +12,7 @@
 #include "inspect/tree_report.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
+#include "render/renderer.h"
 
 namespace rt::tool::render {
 
@@ -28,12 +29,23 @@ struct RunRecord {
 
 // --stats-json: the run, the scene, the picture, the tree and every counter as one JSON document
 // (docs/json.md), written with rt-inspect's pieces so that a quantity has one name in both.
+// With -p, `estimate` is the predicted render (its "estimate" member; null without).
 void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary& scene, const RenderSettings& settings,
-                    const TreeReport& tree, const RenderStats& stats);
+                    const TreeReport& tree, const RenderStats& stats,
+                    const std::optional<RenderEstimate>& estimate = std::nullopt);
 
 // One warning line for standard error if some samples came out NaN or infinite (written as
 // black), else nothing.
 std::string nonFiniteWarning(const RenderStats& stats);
+
+// Why a render that --time-limit cut short wrote nothing (RenderStats::samplesPerPixel 0).
+std::string timeLimitMessage(const RenderSettings& settings);
+
+// One line for standard error when --time-limit stopped the path tracer's passes, else nothing.
+std::string timeLimitNote(const RenderSettings& settings, const RenderStats& stats);
+
+// -p's prediction of the render (rt::estimateRender), one line for standard error.
+std::string estimateSummary(const RenderSettings& settings, const RenderEstimate& estimate);
 
 // Two or three lines for standard error.
 std::string statsSummary(const RenderSettings& settings, const AccelStats& accel, const RenderStats& stats,

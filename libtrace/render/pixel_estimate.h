@@ -1,0 +1,46 @@
+// One pixel's estimate from its camera samples, taken in sample-index order: the mean colour,
+// the coverage (alpha) and the variance of that mean (the --aov variance layer, a noise figure).
+// The mean is the plain sum times 1/n, the same float additions in the same order whether
+// the samples come in one loop (Tracer::pixel) or one per pass (the progressive path tracer
+// in render/renderer.cpp): K passes give the bits of -S K. The variance follows Welford's
+// running update (Welford 1962; Knuth TAOCP 2, 4.2.2), stable where sum-of-squares is not.
+#pragma once
+
+#include "core/color.h"
+
+namespace rt {
+
+struct PixelEstimate {
+    Color sum;
+    Color runningMean;        // Welford's mean: exact for constant samples, where sum / n may round
+    Color squaredDeviations;  // Welford's M2: the sum of squared deviations from the running mean
+    int samples = 0;
+    int hits = 0;  // samples whose camera ray hit something
+
+    // Adds one sample; a non-finite one counts as black and the call returns false, so that
+    // the caller can record it (RenderCounters::nonFinite).
+    bool add(const Color& sample, bool hit) {
+        const bool finite = isFinite(sample);
+        const Color x = finite ? sample : Color{};
+        const Color before = runningMean;
+        sum += x;
+        ++samples;
+        hits += hit;
+        const Color delta = x + before * -1.0f;
+        runningMean += delta * (1.0f / float(samples));
+        squaredDeviations += delta * (x + runningMean * -1.0f);
+        return finite;
+    }
+
+    // The mean of the samples (black before the first).
+    Color mean() const { return samples <= 1 ? sum : sum * (1.0f / float(samples)); }
+    float coverage() const { return samples ? float(hits) / float(samples) : 0.0f; }
+    // The variance of the mean, per channel: the samples' unbiased variance over n. Zero with
+    // fewer than two samples, where there is nothing to estimate it from.
+    Color varianceOfMean() const {
+        if (samples < 2) return {};
+        return squaredDeviations * (1.0f / (float(samples - 1) * float(samples)));
+    }
+};
+
+}  // namespace rt
