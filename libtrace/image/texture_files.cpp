@@ -5,8 +5,10 @@
 #include <OpenImageIO/texture.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -47,6 +49,38 @@ std::optional<std::string> refusal(OIIO::ImageCache& cache, OIIO::ustring file) 
         return "is " + size + ", more than the 1 GiB an untiled image may take";
     return std::nullopt;
 }
+
+// Texture systems outlive the TextureFiles that use them. OpenImageIO 2.4 keeps a texture
+// system's private image cache when the system is destroyed (LeakSanitizer reports it after every
+// render), and destroying the cache too is worse: a cache later made at the same address found the
+// old one's tiles through the render threads' per-thread data (a rewritten file read stale, in
+// NormalMap.APlaneShadesAsThePerturbedNormalPredicts). So systems are kept for the process and
+// reused, one per TextureFiles alive at a time, emptied before each reuse.
+class TextureSystemPool {
+public:
+    static OIIO::TextureSystem* take() {
+        TextureSystemPool& pool = instance();
+        const std::lock_guard lock(pool.mutex_);
+        if (pool.idle_.empty()) return OIIO::TextureSystem::create(false);
+        OIIO::TextureSystem* system = pool.idle_.back();
+        pool.idle_.pop_back();
+        return system;
+    }
+    static void give(OIIO::TextureSystem* system) {
+        system->invalidate_all(/*force=*/true);
+        TextureSystemPool& pool = instance();
+        const std::lock_guard lock(pool.mutex_);
+        pool.idle_.push_back(system);
+    }
+
+private:
+    static TextureSystemPool& instance() {
+        static TextureSystemPool* pool = new TextureSystemPool;  // never freed: the systems stay reachable
+        return *pool;
+    }
+    std::mutex mutex_;
+    std::vector<OIIO::TextureSystem*> idle_;
+};
 
 // The sRGB transfer function, inverted (IEC 61966-2-1).
 float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
@@ -117,7 +151,10 @@ struct TextureFiles::Impl {
     // An embedded image, read from memory through an IOProxy (OpenImageIO's PNG, JPEG, WebP,
     // TIFF and EXR readers take one) under a name no file has; its extension picks the reader.
     OIIO::ustring addEmbedded(const Texture& t, std::size_t index) {
-        const OIIO::ustring name("rt-embedded:" + std::to_string(index) + "/" + t.file);
+        // Numbered for the process: a reused system still knows the names of earlier readers.
+        static std::atomic<std::uint64_t> serial{0};
+        const OIIO::ustring name("rt-embedded:" + std::to_string(serial++) + ":" + std::to_string(index) + "/" +
+                                 t.file);
         embeddedBytes.push_back(t.embedded);
         memoryReaders.push_back(
             std::make_unique<OIIO::Filesystem::IOMemReader>(t.embedded->data(), t.embedded->size()));
@@ -135,16 +172,14 @@ bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
 
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes)
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
-    impl_->system = OIIO::TextureSystem::create(false);
+    impl_->system = TextureSystemPool::take();
     impl_->system->attribute("max_memory_MB", cacheMegabytes);
     impl_->system->attribute("automip", 1);
     for (std::size_t i = 0; i < scene.textures.size(); ++i)
         impl_->entries.push_back(impl_->open(scene.textures[i], i, warnings));
 }
 
-// teardown_imagecache: the private ImageCache that create(false) made for this system is freed
-// with it (OpenImageIO 2.4 keeps it otherwise: LeakSanitizer found it after every render).
-TextureFiles::~TextureFiles() { OIIO::TextureSystem::destroy(impl_->system, /*teardown_imagecache=*/true); }
+TextureFiles::~TextureFiles() { TextureSystemPool::give(impl_->system); }
 
 Color TextureFiles::lookup(std::uint32_t index, const TexCoord& at) const {
     const Impl::Entry& e = impl_->entries[index];

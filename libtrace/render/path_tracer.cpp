@@ -5,8 +5,8 @@
 
 #include "render/light_sample.h"
 #include "render/normal_map.h"
-#include "render/refraction.h"
 #include "render/pixel_estimate.h"
+#include "render/refraction.h"
 
 namespace rt {
 
