@@ -18,8 +18,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<std::string> warnings;  // an unreadable image is white and a warning
     const rt::TextureFiles textures(scene, warnings, 16);
     for (const float st : {0.0f, 0.37f, 0.999f, -2.5f}) {
-        textures.lookup(0, st, 1 - st);
-        textures.data(0, st, st);
+        textures.lookup(0, rt::TexCoord{st, 1 - st});
+        textures.lookup(0, rt::TexCoord{st, st, 0.01f, 0, 0, 0.02f});  // filtered: the MIP levels
+        textures.data(0, rt::TexCoord{st, st});
         if (textures.hasAlpha(0, true)) textures.alpha(0, st, 0.5f, true);
     }
     return 0;
