@@ -134,15 +134,6 @@ Scene checkerFloor(const std::string& checker) {
     return s;
 }
 
-double rmsDifference(const Framebuffer& a, const Framebuffer& b) {
-    double sum = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
-        const Color d = a.pixels()[i] + b.pixels()[i] * -1;
-        sum += double(d.r) * d.r + double(d.g) * d.g + double(d.b) * d.b;
-    }
-    return std::sqrt(sum / (3.0 * double(a.pixels().size())));
-}
-
 }  // namespace
 
 // Ray differentials (render/ray_differential.h): one filtered sample a pixel comes close to
@@ -162,8 +153,8 @@ TEST(TextureFiles, RayDifferentialsFilterADistantCheckerFloor) {
     settings.pixelSamples = 1;
     const Framebuffer withDifferentials = render(scene, accel, settings, stats, {}, &filtered);
     const Framebuffer without = render(scene, accel, settings, stats, {}, &unfiltered);
-    const double errorWith = rmsDifference(withDifferentials, reference);
-    const double errorWithout = rmsDifference(without, reference);
+    const double errorWith = test::rmsDifference(withDifferentials, reference);
+    const double errorWithout = test::rmsDifference(without, reference);
     EXPECT_LT(errorWith, errorWithout / 3) << "RMS error with " << errorWith << ", without " << errorWithout;
     settings.threads = 1;
     settings.region = PixelWindow{10, 5, 70, 50};

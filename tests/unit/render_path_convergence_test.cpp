@@ -25,15 +25,6 @@ Scene cornellBox(const std::string& name) {
     return s;
 }
 
-double rmse(const Framebuffer& a, const Framebuffer& b) {
-    double sum = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
-        const Color d = a.pixels()[i] + b.pixels()[i] * -1.0f;
-        sum += double(d.r * d.r + d.g * d.g + d.b * d.b) / 3;
-    }
-    return std::sqrt(sum / double(a.pixels().size()));
-}
-
 }  // namespace
 
 // With independent random numbers the ratio would be sqrt((1/64 + 1/1024) / (1/16 + 1/1024)) = 0.51
@@ -55,7 +46,8 @@ TEST(PathTracerConvergence, CornellBoxErrorFallsAsOneOverTheSquareRootOfTheSampl
             return render(s, *accel, r, stats);
         };
         const Framebuffer reference = renderWith(1024, 0);
-        const double e16 = rmse(renderWith(16, 3), reference), e64 = rmse(renderWith(64, 3), reference);
+        const double e16 = test::rmsDifference(renderWith(16, 3), reference),
+                     e64 = test::rmsDifference(renderWith(64, 3), reference);
         std::printf("%s RMSE: 16 paths %.4f, 64 paths %.4f (ratio %.2f)\n", name, e16, e64, e64 / e16);
         EXPECT_GT(e16, 0) << name;
         EXPECT_LT(e64, 0.65 * e16) << name;

@@ -175,15 +175,6 @@ Scene boxWithLightPanel() {
     return s;
 }
 
-double rmse(const Framebuffer& a, const Framebuffer& b) {
-    double sum = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
-        const Color d = a.pixels()[i] + b.pixels()[i] * -1.0f;
-        sum += double(d.r * d.r + d.g * d.g + d.b * d.b) / 3;
-    }
-    return std::sqrt(sum / double(a.pixels().size()));
-}
-
 }  // namespace
 
 // Monte Carlo error falls as 1/sqrt(samples): four times the paths, half the error against a
@@ -197,7 +188,8 @@ TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfTheSamples) {
         return test::renderPath(s, r);
     };
     const Framebuffer reference = test::renderPath(s, test::pathPicture(16, 1024));
-    const double e16 = rmse(renderWith(16), reference), e64 = rmse(renderWith(64), reference);
+    const double e16 = test::rmsDifference(renderWith(16), reference),
+                 e64 = test::rmsDifference(renderWith(64), reference);
     std::printf("box RMSE: 16 paths %.4f, 64 paths %.4f\n", e16, e64);
     EXPECT_GT(e16, 0);
     EXPECT_LT(e64, 0.7 * e16);

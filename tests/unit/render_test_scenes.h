@@ -2,6 +2,7 @@
 // so that they need neither the XML loader nor files.
 #pragma once
 
+#include <cmath>
 #include <initializer_list>
 
 #include "accel/naive.h"
@@ -17,6 +18,16 @@ inline RenderSettings picture(int width, int height) {
     r.width = width;
     r.height = height;
     return r;
+}
+
+// The root-mean-square difference of two pictures of one size, over pixels and colour channels.
+inline double rmsDifference(const Framebuffer& a, const Framebuffer& b) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+        const Color d = a.pixels()[i] + b.pixels()[i] * -1;
+        sum += double(d.r) * d.r + double(d.g) * d.g + double(d.b) * d.b;
+    }
+    return std::sqrt(sum / (3.0 * double(a.pixels().size())));
 }
 
 inline std::uint32_t addMaterial(Scene& s, Material m) {
