@@ -35,8 +35,9 @@ std::string hex(std::uint64_t v) {
 std::string identity(const TextureSource& source) {
     std::string what = kCopySettings;
     if (source.bytes)
-        return what + "\nbytes " + hex(OIIO::farmhash::Fingerprint64(
-                                         reinterpret_cast<const char*>(source.bytes->data()), source.bytes->size()));
+        return what + "\nbytes " +
+               hex(OIIO::farmhash::Fingerprint64(reinterpret_cast<const char*>(source.bytes->data()),
+                                                 source.bytes->size()));
     const fs::path path = fs::absolute(source.path);
     const auto changed = fs::last_write_time(path).time_since_epoch().count();
     return what + "\nfile " + path.string() + "\nsize " + std::to_string(fs::file_size(path)) + "\nchanged " +
@@ -59,7 +60,8 @@ fs::path temporaryIn(const fs::path& folder, const std::string& name) {
 // Writes the tiled, MIP-mapped texture of `source` to `target`; throws saying why it cannot.
 void makeCopy(const TextureSource& source, const fs::path& target) {
     std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
-    if (source.bytes) memory = std::make_unique<OIIO::Filesystem::IOMemReader>(source.bytes->data(), source.bytes->size());
+    if (source.bytes)
+        memory = std::make_unique<OIIO::Filesystem::IOMemReader>(source.bytes->data(), source.bytes->size());
     OIIO::ImageBuf picture(source.bytes ? source.name : source.path, 0, 0, nullptr, nullptr, memory.get());
     if (!picture.read(0, 0, /*force=*/true)) throw std::runtime_error("cannot read it: " + picture.geterror());
     OIIO::ImageSpec config;
