@@ -5,13 +5,16 @@
 #
 # Speed: textured models of ../shared rendered straight from the model file, and the same scene
 # converted to XML with every texture attribute taken out (same geometry, lights and materials);
-# 640x480, shadows, reflection depth 3, best of 3 wall-clock render times (--stats-json's renderSeconds).
+# 640x480, shadows, reflection depth 3, best of 3 wall-clock render times (--stats-json's renderSeconds),
+# the textures read through their tiled copies (a tx cache of the script's own, emptied first). "copies":
+# the seconds the first run takes longer than a later one as a whole process, making the copies.
 #
 # Memory: a generated OBJ of 12 quads in a 4 x 3 grid filling the picture, each with its own
 # 2048 x 2048 noise picture (8-bit RGB PNG: 12 MB each, 16 MB with mip levels, 192 MB in all),
 # rendered with --texture-cache 32 (six times less than the textures), by the Whitted tracer
 # (filtered: coarse mip levels) and the path tracer (the finest level everywhere). Peak resident
-# memory from /usr/bin/time -v, against rt-render's start-up (`rt-render --version`).
+# memory from /usr/bin/time -v, against rt-render's start-up (`rt-render --version`); first the
+# run that makes the copies, then runs that read them, then (--tx-cache off) the pictures as they are.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/release}
@@ -20,20 +23,33 @@ convert="$build/tools/convert/rt-convert"
 shared=${RT_SHARED_DIR:-../shared}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+export RT_TX_CACHE="$work/tx"
 
 # The render's wall-clock seconds (--stats-json's renderSeconds).
 seconds() { "$render" "$@" -x 640 -y 480 -s -d 3 -o null -q --stats-json - | jq .renderSeconds; }
 best_of_3() { for _ in 1 2 3; do seconds "$@"; done | sort -g | head -1; }
 
-printf '%-48s %10s %10s %8s\n' model textured untextured ratio
+# Wall-clock seconds of a whole rt-render process.
+process_seconds() {
+    local start
+    start=$(date +%s.%N)
+    "$render" "$@" -x 640 -y 480 -s -d 3 -o null -q
+    awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }'
+}
+
+printf '%-48s %10s %10s %8s %8s\n' model textured untextured ratio copies
 for model in glb/Duck/Duck.glb gltf/Suzanne/Suzanne.gltf gltf/LightsPunctualLamp/LightsPunctualLamp.gltf \
     obj/scrub-pine/scrubPine.obj glb/NormalTangentMirrorTest/NormalTangentMirrorTest.glb; do
     "$convert" "$shared/models/$model" -o "$work/scene.xml" 2>/dev/null
     sed -E -i 's/ (texture|emission_texture|alpha_texture|normal_texture|metallic_roughness_texture)="[^"]*"//g' \
         "$work/scene.xml"
+    rm -rf "$RT_TX_CACHE"
+    first=$(process_seconds "$shared/models/$model")
+    later=$(process_seconds "$shared/models/$model")
     textured=$(best_of_3 "$shared/models/$model")
     plain=$(best_of_3 "$work/scene.xml")
-    awk -v m="$model" -v t="$textured" -v p="$plain" 'BEGIN { printf "%-48s %9.3fs %9.3fs %7.2fx\n", m, t, p, p / t }'
+    awk -v m="$model" -v t="$textured" -v p="$plain" -v c="$(awk -v a="$first" -v b="$later" 'BEGIN { print a - b }')" \
+        'BEGIN { printf "%-48s %9.3fs %9.3fs %7.2fx %7.2fs\n", m, t, p, p / t, c }'
 done
 
 # rss_kb of one run
@@ -59,13 +75,16 @@ mkdir -p "$work/big"
 total=$(du -cb "$work"/big/t*.png | tail -1 | cut -f1)
 base=$(peak_kb "$render" --version)
 camera=(--look-from 2,1.5,3.2 --look-at 2,1.5,0 --fov 70)
-printf '\n%-36s %10s %10s %10s\n' "12 textures of 2048x2048 (PNG $((total / 1000000)) MB)" peak start-up work
-for run in "whitted:" "path:--integrator path -S 1"; do
+printf '\n%-48s %10s %10s %10s\n' "12 textures of 2048x2048 (PNG $((total / 1000000)) MB)" peak start-up work
+rm -rf "$RT_TX_CACHE"
+for run in "whitted, making the copies:" "whitted:" "path:--integrator path -S 1" \
+    "whitted, --tx-cache off:--tx-cache off"; do
     name=${run%%:*} options=${run#*:}
     for cache in 32 256; do
+        [[ $name == *making* && $cache == 256 ]] && continue  # made once
         # shellcheck disable=SC2086
         kb=$(peak_kb "$render" "$work/big/quads.obj" "${camera[@]}" -x 1200 -y 900 $options --texture-cache $cache -o null -q)
         awk -v n="$name, --texture-cache $cache" -v k="$kb" -v b="$base" \
-            'BEGIN { printf "%-36s %9.0fM %9.0fM %9.0fM\n", n, k / 1024, b / 1024, (k - b) / 1024 }'
+            'BEGIN { printf "%-48s %9.0fM %9.0fM %9.0fM\n", n, k / 1024, b / 1024, (k - b) / 1024 }'
     done
 done

@@ -10,7 +10,10 @@
 #include <cstdint>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
+
+#include "image/tiled_textures.h"
 
 namespace rt {
 
@@ -34,18 +37,25 @@ OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
 // read a tile at a time within the cache, whatever their size.
 constexpr double kMaxUntiledTextureBytes = double(std::uint64_t(1) << 30);
 
-// Why `file` must not be looked up, if it must not: an image of no pixels (a TGA header saying
-// 4 x 0 opens, and OpenImageIO's bilinear lookup then divides by zero: SIGFPE), or an untiled one
-// beyond kMaxUntiledTextureBytes. From the file's own spec: the cache's calls a whole untiled
-// image one tile.
-std::optional<std::string> refusal(OIIO::ImageCache& cache, OIIO::ustring file) {
+double decodedBytes(const OIIO::ImageSpec& spec) {
+    return double(spec.width) * spec.height * spec.depth * spec.nchannels * spec.format.size();
+}
+
+// The spec of `file` as stored: the cache's own calls a whole untiled image one tile.
+OIIO::ImageSpec nativeSpec(OIIO::ImageCache& cache, OIIO::ustring file) {
     OIIO::ImageSpec spec;
-    if (!cache.get_imagespec(file, spec, 0, 0, true)) return std::nullopt;
+    cache.get_imagespec(file, spec, 0, 0, /*native=*/true);
+    return spec;
+}
+
+// Why a file stored as `spec` must not be looked up, if it must not: an image of no pixels (a TGA header saying
+// 4 x 0 opens, and OpenImageIO's bilinear lookup then divides by zero: SIGFPE), or an untiled one
+// beyond kMaxUntiledTextureBytes. From the file's own spec (nativeSpec).
+std::optional<std::string> refusal(const OIIO::ImageSpec& spec) {
     const std::string size = std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels";
     if (spec.width < 1 || spec.height < 1 || spec.depth < 1 || spec.nchannels < 1)
         return "is " + size + " of " + std::to_string(spec.nchannels) + " channels: no pixels";
-    const double bytes = double(spec.width) * spec.height * spec.depth * spec.nchannels * spec.format.size();
-    if (spec.tile_width == 0 && bytes > kMaxUntiledTextureBytes)
+    if (spec.tile_width == 0 && decodedBytes(spec) > kMaxUntiledTextureBytes)
         return "is " + size + ", more than the 1 GiB an untiled image may take";
     return std::nullopt;
 }
@@ -91,12 +101,14 @@ float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 
 struct TextureFiles::Impl {
     struct Entry {
         OIIO::ustring file;
+        OIIO::TextureSystem::TextureHandle* handle = nullptr;  // the file, found once rather than per lookup
         OIIO::TextureOpt options;
         int channels = 0;
         int alphaChannel = -1;  // none
         bool srgb = false;
     };
     OIIO::TextureSystem* system = nullptr;
+    std::string txCache;  // tiled_textures.h; "off" once a copy could not be made
     std::vector<Entry> entries;
     // Readers of the embedded images and their bytes, alive as long as the system, which may reopen them.
     std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> memoryReaders;
@@ -109,7 +121,8 @@ struct TextureFiles::Impl {
         if (e.file.empty()) return false;
         float rgb[3] = {c.r, c.g, c.b};
         OIIO::TextureOpt options = e.options;  // per call: the system may write to it
-        if (!system->texture(e.file, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy, e.channels, rgb))
+        if (!system->texture(e.handle, nullptr, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy, e.channels,
+                             rgb))
             return false;
         if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
         c = {rgb[0], rgb[1], rgb[2]};
@@ -132,12 +145,15 @@ struct TextureFiles::Impl {
                                " (" + system->geterror() + "): white is used");
             return e;
         }
-        if (const std::optional<std::string> why = refusal(*system->imagecache(), file)) {
+        const OIIO::ImageSpec stored = nativeSpec(*system->imagecache(), file);
+        if (const std::optional<std::string> why = refusal(stored)) {
             warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + " " +
                                *why + ": white is used");
             return e;
         }
-        e.file = file;
+        e.file = tiled(t, file, stored, warnings);
+        e.handle = system->get_texture_handle(e.file);
+        spec = system->imagespec(e.file);  // tiled() has read it
         e.channels = std::min(spec->nchannels, 3);
         e.alphaChannel = spec->alpha_channel >= 0 ? spec->alpha_channel : spec->nchannels == 2 ? 1 : -1;
         e.srgb = !spec->format.is_floating_point();
@@ -146,6 +162,29 @@ struct TextureFiles::Impl {
         // Bilinear: OpenImageIO's default (smart bicubic) blurs a magnified texture with a B-spline.
         e.options.interpmode = OIIO::TextureOpt::InterpBilinear;
         return e;
+    }
+
+    // The file the lookups read for `file`, the source of `t` stored as `spec`: a tiled, MIP-mapped
+    // copy from the tx cache, or `file` itself when it is tiled and MIP-mapped already, too large to read
+    // whole, or the cache is off. A copy that cannot be made is one warning, and the cache is
+    // off for the rest of the textures.
+    OIIO::ustring tiled(const Texture& t, OIIO::ustring file, const OIIO::ImageSpec& spec,
+                        std::vector<std::string>& warnings) {
+        int levels = 1;
+        system->get_texture_info(file, 0, OIIO::ustring("miplevels"), OIIO::TypeInt, &levels);
+        if (txCacheOff(txCache) || (spec.tile_width > 0 && levels > 1) || decodedBytes(spec) > kMaxUntiledTextureBytes)
+            return file;
+        try {
+            const OIIO::ustring copy(tiledCopy(txCache, {t.path, t.embedded, t.file}));
+            if (!system->imagespec(copy))
+                throw std::runtime_error("cannot read " + copy.string() + ": " + system->geterror());
+            return copy;
+        } catch (const std::exception& e) {
+            warnings.push_back("texture '" + t.name + "': no tiled copy (" + e.what() +
+                               "): textures are read as they are, slower and beyond --texture-cache");
+            txCache = "off";
+            return file;
+        }
     }
 
     // An embedded image, read from memory through an IOProxy (OpenImageIO's PNG, JPEG, WebP,
@@ -170,10 +209,11 @@ bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
     return impl_->alphaChannel(impl_->entries[index], mask) >= 0;
 }
 
-TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes)
+TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureCacheSettings& cache)
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
     impl_->system = TextureSystemPool::take();
-    impl_->system->attribute("max_memory_MB", cacheMegabytes);
+    impl_->system->attribute("max_memory_MB", cache.megabytes);
+    impl_->txCache = cache.txCache;
     impl_->system->attribute("automip", 1);
     for (std::size_t i = 0; i < scene.textures.size(); ++i)
         impl_->entries.push_back(impl_->open(scene.textures[i], i, warnings));
@@ -202,7 +242,7 @@ float TextureFiles::alpha(std::uint32_t index, float s, float t, bool mask) cons
     OIIO::TextureOpt options = e.options;
     options.firstchannel = channel;
     // Read during traversal, where rays carry no differentials: the finest level.
-    if (!impl_->system->texture(e.file, options, s, t, 0, 0, 0, 0, 1, &a)) return 1;
+    if (!impl_->system->texture(e.handle, nullptr, options, s, t, 0, 0, 0, 0, 1, &a)) return 1;
     return a;
 }
 

@@ -1,6 +1,8 @@
-// Image textures read through OpenImageIO's TextureSystem: any format it reads, mip-mapped on
-// the fly, cached (memory bounded by the cache size for tiled, MIP-mapped files; untiled ones,
-// PNG and JPEG, are held a whole level at a time: docs/benchmarks.md) and thread-safe. 8- and 16-bit images are taken
+// Image textures read through OpenImageIO's TextureSystem: any format it reads, cached and
+// thread-safe. Pictures not tiled and MIP-mapped already (PNG, JPEG) are read through tiled,
+// MIP-mapped copies made once (image/tiled_textures.h), so that memory stays within the cache
+// size; with the tx cache off they are MIP-mapped on the fly and held a whole level at a time
+// (docs/benchmarks.md, "Textures"). 8- and 16-bit images are taken
 // as sRGB-encoded, as glTF's base colour and emissive textures are, and decoded to linear; float images (EXR, HDR) as
 // linear.
 #pragma once
@@ -16,11 +18,17 @@ namespace OIIO_NAMESPACE_FORWARD {}
 
 namespace rt {
 
+struct TextureCacheSettings {
+    float megabytes = 256;        // OpenImageIO's texture cache (rt-render --texture-cache)
+    std::string txCache = "off";  // the folder of tiled copies (rt-render --tx-cache); "off": sources as they are
+};
+
 class TextureFiles : public ImageTextures {
 public:
-    // Opens the scene's image textures. One that cannot be read is white (the material's
-    // colour alone) and named in `warnings`: a missing texture does not stop a render.
-    TextureFiles(const Scene& scene, std::vector<std::string>& warnings, float cacheMegabytes = 256);
+    // Opens the scene's image textures, making their tiled copies where needed. One that cannot
+    // be read is white (the material's colour alone) and named in `warnings`: a missing texture
+    // does not stop a render, nor does a tx cache that cannot be written (a warning).
+    TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureCacheSettings& cache = {});
     ~TextureFiles() override;
 
     Color lookup(std::uint32_t index, const TexCoord& at) const override;

@@ -3,10 +3,15 @@
 #include "image/texture_files.h"
 
 #include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "../unit/render_test_scenes.h"
 #include "accel/naive.h"
@@ -59,16 +64,8 @@ Scene texturedQuad(const std::string& picture) {
     return s;
 }
 
-}  // namespace
-
-TEST(TextureFiles, ATexturedQuadSeenHeadOnReproducesItsPicture) {
-    const std::string dir = testing::TempDir();
-    const std::string path = dir + "/texels.png";
-    const std::vector<Color> texels = writePicture(path);
-    const Scene scene = texturedQuad(path);
-    std::vector<std::string> warnings;
-    const TextureFiles images(scene, warnings);
-    EXPECT_TRUE(warnings.empty());
+// The PSNR in dB of texturedQuad's picture rendered with `images` against `texels`.
+double quadPsnr(const Scene& scene, const ImageTextures& images, const std::vector<Color>& texels) {
     const NaiveAccelerator accel(scene.primitives);
     RenderSettings settings = test::picture(kSize, kSize);
     RenderStats stats;
@@ -79,8 +76,19 @@ TEST(TextureFiles, ATexturedQuadSeenHeadOnReproducesItsPicture) {
             const Color got = image.at(x, y), want = texels[std::size_t(y * kSize + x)];
             for (float d : {got.r - want.r, got.g - want.g, got.b - want.b}) squaredError += double(d) * d;
         }
-    const double psnr = 10 * std::log10(1 / (squaredError / (3.0 * kSize * kSize)));
-    EXPECT_GE(psnr, 40) << "PSNR in dB";
+    return 10 * std::log10(1 / (squaredError / (3.0 * kSize * kSize)));
+}
+
+}  // namespace
+
+TEST(TextureFiles, ATexturedQuadSeenHeadOnReproducesItsPicture) {
+    const std::string path = testing::TempDir() + "/texels.png";
+    const std::vector<Color> texels = writePicture(path);
+    const Scene scene = texturedQuad(path);
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
     std::filesystem::remove(path);
 }
 
@@ -225,4 +233,131 @@ TEST(TextureFiles, AMissingPictureIsAWarningAndWhite) {
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("texture 'gone': cannot read"), std::string::npos) << warnings[0];
     EXPECT_EQ(images.lookup(0, {0.5f, 0.5f}), (Color{1, 1, 1}));
+}
+
+// ---- Tiled copies (image/tiled_textures.h) -------------------------------------------------
+
+namespace {
+
+// An empty folder for a test's tx cache (not made: TextureFiles makes it).
+std::string freshFolder(const std::string& name) {
+    const std::string folder = testing::TempDir() + "/" + name;
+    std::filesystem::remove_all(folder);
+    return folder;
+}
+
+// The copies in `folder`, sorted; none if it does not exist.
+std::vector<std::filesystem::path> copiesIn(const std::string& folder) {
+    std::vector<std::filesystem::path> copies;
+    if (std::filesystem::is_directory(folder))
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) copies.push_back(entry.path());
+    std::sort(copies.begin(), copies.end());
+    return copies;
+}
+
+}  // namespace
+
+TEST(TextureFiles, AnUntiledPictureIsReadThroughATiledCopyMadeOnceAndReused) {
+    const std::string folder = freshFolder("tx-reused"), path = testing::TempDir() + "/tx-reused.png";
+    const std::vector<Color> texels = writePicture(path);
+    const Scene scene = texturedQuad(path);
+    std::vector<std::string> warnings;
+    {
+        const TextureFiles images(scene, warnings, {.txCache = folder});
+        EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
+    }
+    EXPECT_TRUE(warnings.empty());
+    const std::vector<std::filesystem::path> copies = copiesIn(folder);
+    ASSERT_EQ(copies.size(), 1u);
+    OIIO::ImageBuf copy(copies[0].string());
+    ASSERT_TRUE(copy.init_spec(copies[0].string(), 0, 0));
+    EXPECT_GT(copy.spec().tile_width, 0);
+    EXPECT_EQ(copy.nmiplevels(), 5);  // 16, 8, 4, 2 and 1 texels a side
+    // Dated in the past, so that a rewrite within the clock's resolution would show too.
+    const auto past = std::filesystem::last_write_time(copies[0]) - std::chrono::hours(1);
+    std::filesystem::last_write_time(copies[0], past);
+    {
+        const TextureFiles again(scene, warnings, {.txCache = folder});
+        EXPECT_GE(quadPsnr(scene, again, texels), 40) << "PSNR in dB";
+    }
+    EXPECT_EQ(copiesIn(folder), copies);
+    EXPECT_EQ(std::filesystem::last_write_time(copies[0]), past) << "the copy was made again";
+    std::filesystem::remove(path);
+}
+
+TEST(TextureFiles, AChangedPictureGetsANewCopy) {
+    const std::string folder = freshFolder("tx-changed"), path = testing::TempDir() + "/tx-changed.png";
+    writePicture(path);
+    Scene scene;
+    scene.textures.push_back({.name = "t", .path = path});
+    std::vector<std::string> warnings;
+    { const TextureFiles before(scene, warnings, {.txCache = folder}); }
+    OIIO::ImageBuf grey(OIIO::ImageSpec(kSize, kSize, 3, OIIO::TypeDesc::UINT8));
+    OIIO::ImageBufAlgo::fill(grey, {0.5f, 0.5f, 0.5f});
+    ASSERT_TRUE(grey.write(path));
+    const TextureFiles after(scene, warnings, {.txCache = folder});
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_EQ(copiesIn(folder).size(), 2u);
+    const float linear = std::pow((128 / 255.0f + 0.055f) / 1.055f, 2.4f);  // 8-bit 0.5 decoded
+    EXPECT_NEAR(after.lookup(0, {0.5f, 0.5f}).g, linear, 1e-3f);
+    std::filesystem::remove(path);
+}
+
+TEST(TextureFiles, AnUnwritableTxCacheIsAWarningAndThePictureIsReadAsItIs) {
+    const std::string path = testing::TempDir() + "/tx-unwritable.png";
+    const std::vector<Color> texels = writePicture(path);
+    const Scene scene = texturedQuad(path);
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings, {.txCache = path + "/tx"});  // under a file: no folder, even for root
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("no tiled copy"), std::string::npos) << warnings[0];
+    EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
+    std::filesystem::remove(path);
+}
+
+TEST(TextureFiles, AnEmbeddedPictureGetsACopyAndATiledMipMappedFileNone) {
+    const std::string folder = freshFolder("tx-embedded"), path = testing::TempDir() + "/tx-embedded.png";
+    const std::vector<Color> texels = writePicture(path);
+    std::ifstream file(path, std::ios::binary);
+    Scene scene = texturedQuad("");
+    scene.textures[0].file = "embedded.png";
+    scene.textures[0].embedded = std::make_shared<std::vector<std::uint8_t>>(std::istreambuf_iterator<char>(file),
+                                                                             std::istreambuf_iterator<char>());
+    std::vector<std::string> warnings;
+    {
+        const TextureFiles images(scene, warnings, {.txCache = folder});
+        EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
+    }
+    const std::vector<std::filesystem::path> copies = copiesIn(folder);
+    ASSERT_EQ(copies.size(), 1u);
+    EXPECT_TRUE(copies[0].filename().string().starts_with("embedded-")) << copies[0];
+    // The copy as a scene's own texture is tiled and MIP-mapped already: used as it is.
+    const std::string second = freshFolder("tx-of-a-tx");
+    const Scene ofTheCopy = texturedQuad(copies[0].string());
+    const TextureFiles images(ofTheCopy, warnings, {.txCache = second});
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_GE(quadPsnr(ofTheCopy, images, texels), 40) << "PSNR in dB";
+    EXPECT_TRUE(copiesIn(second).empty());
+    std::filesystem::remove(path);
+}
+
+// The copy's MIP levels filter as OpenImageIO's own on-the-fly ones: a distant checker floor,
+// where the coarse levels show, renders the same within a small difference.
+TEST(TextureFiles, ATiledCopyRendersAsTheSourceReadAsItIs) {
+    const std::string folder = freshFolder("tx-same"), path = testing::TempDir() + "/tx-same.exr";
+    writeChecker(path);
+    const Scene scene = checkerFloor(path);
+    const NaiveAccelerator accel(scene.primitives);
+    RenderStats stats;
+    const auto rendered = [&](const std::string& txCache) {
+        std::vector<std::string> warnings;
+        const TextureFiles images(scene, warnings, {.txCache = txCache});
+        EXPECT_TRUE(warnings.empty());
+        return render(scene, accel, test::picture(96, 64), stats, {}, &images);
+    };
+    const Framebuffer asItIs = rendered("off"), throughTheCopy = rendered(folder);
+    EXPECT_EQ(copiesIn(folder).size(), 1u);
+    const double rms = test::rmsDifference(asItIs, throughTheCopy);
+    EXPECT_LT(rms, 0.01) << "RMS difference";
+    std::filesystem::remove(path);
 }

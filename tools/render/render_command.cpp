@@ -15,6 +15,7 @@
 #include "core/text.h"
 #include "image/image_check.h"
 #include "image/texture_files.h"
+#include "image/tiled_textures.h"
 #include "import/load_scene.h"
 #include "progress.h"
 #include "render/cutout.h"
@@ -323,8 +324,8 @@ int renderAll(RenderOptions o) {
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
     checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
-    const TextureFiles images(scene, scene.warnings,
-                              o.textureCacheMb);  // before the warnings are shown: it adds its own
+    const TextureFiles images(scene, scene.warnings,  // before the warnings are shown: it adds its own
+                              {o.textureCacheMb, o.txCache.value_or(defaultTxCache())});
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;

@@ -54,6 +54,7 @@ struct RenderOptions {
     std::optional<double> maxMemoryGb;       // --max-memory GB; default: rt::defaultMemoryLimit()
     std::optional<std::string> environment;  // --environment FILE: the path tracer's sky image
     float textureCacheMb = 256;              // --texture-cache MB: OpenImageIO's texture cache
+    std::optional<std::string> txCache;      // --tx-cache DIR|off: tiled texture copies; default rt::defaultTxCache()
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.

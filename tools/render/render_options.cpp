@@ -55,10 +55,13 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
         ->check(rt::tool::numberIn(0.01, 1e6))
         ->group(group);
     app.add_option("--texture-cache", o.textureCacheMb,
-                   "Memory for image textures, in MB: OpenImageIO keeps the tiles it reads within it (tiled, "
-                   "MIP-mapped pictures; untiled ones are held a level at a time)")
+                   "Memory for image textures, in MB: OpenImageIO keeps the tiles it reads within it")
         ->check(rt::tool::numberIn(1.0, 1e6))
         ->capture_default_str()
+        ->group(group);
+    app.add_option("--tx-cache", o.txCache,
+                   "Folder for the tiled, MIP-mapped copies of PNG, JPEG and other untiled textures, made once; off: "
+                   "read them as they are [default: $RT_TX_CACHE, else $XDG_CACHE_HOME/rt/tx or ~/.cache/rt/tx]")
         ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
     app.add_option("--time-limit", o.render.timeLimitSeconds,
