@@ -176,6 +176,7 @@ public:
     void getArray(T* values, std::size_t count) {
         static_assert(std::is_trivially_copyable_v<T>);
         if (count > left() / sizeof(T)) fail("it ends early");
+        if (count == 0) return;  // `values` may be null then (a node of no meshes), which memcpy must not see
         std::memcpy(values, bytes_.data() + at_, count * sizeof(T));
         at_ += count * sizeof(T);
     }
@@ -233,10 +234,11 @@ private:
     std::size_t spent_ = 0;
 };
 
-aiVector3D* readVectors(ReplyReader& r, unsigned n, unsigned components) {
-    aiVector3D* v = r.newArray<aiVector3D>(n);
-    for (unsigned i = 0; i < n; ++i) r.getArray(&v[i].x, components);
-    return v;
+// Into `to`, which owns the array before anything is read into it: a reply that ends part way
+// leaves it to the mesh's destructor.
+void readVectors(ReplyReader& r, aiVector3D*& to, unsigned n, unsigned components) {
+    to = r.newArray<aiVector3D>(n);
+    for (unsigned i = 0; i < n; ++i) r.getArray(&to[i].x, components);
 }
 
 void readFaces(ReplyReader& r, aiMesh& mesh, const std::string& what) {
@@ -262,10 +264,10 @@ void readMesh(ReplyReader& r, aiMesh& mesh, const std::string& what) {
     const auto has = r.get<std::uint8_t>();
     if (has & ~(kNormals | kUvs | kColors)) r.fail(what + " has unknown vertex data " + std::to_string(has));
     mesh.mNumVertices = n;
-    mesh.mVertices = readVectors(r, n, 3);
-    if (has & kNormals) mesh.mNormals = readVectors(r, n, 3);
+    readVectors(r, mesh.mVertices, n, 3);
+    if (has & kNormals) readVectors(r, mesh.mNormals, n, 3);
     if (has & kUvs) {
-        mesh.mTextureCoords[0] = readVectors(r, n, 2);
+        readVectors(r, mesh.mTextureCoords[0], n, 2);
         mesh.mNumUVComponents[0] = 2;
     }
     if ((has & kColors) && n > 0) {
