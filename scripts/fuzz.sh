@@ -24,7 +24,8 @@ case $target in
     # each under ASan (OBJ ran at 18 inputs a second from them).
     gltf_import) seeds=("$shared/bad/gltf-tinygltf-fuzz" "$shared/bad/glb-validator" "$shared/bad/gltf-json-validator") ;;
     # The others start from fuzz/corpus/TARGET alone: an image texture's first byte picks its
-    # extension, and the option lists and assbin replies have no shared files.
+    # extension, the option lists have no shared files, and the Assimp replies of the shared 3DS
+    # models are in fuzz/corpus/assimp_reply.
     *) seeds=() ;;
 esac
 existing=()

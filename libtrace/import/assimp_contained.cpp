@@ -2,11 +2,8 @@
 
 #include <assimp/scene.h>
 
-#include <assimp/Exporter.hpp>
-#include <stdexcept>
-
 #include "core/contained.h"
-#include "core/error.h"
+#include "import/assimp_reply.h"
 
 namespace rt {
 namespace {
@@ -25,28 +22,16 @@ ContainmentLimits limitsFor(std::uint64_t inputBytes) {
 
 }  // namespace
 
-const aiScene* readContained(Assimp::Importer& importer, const std::string& path, std::uint64_t inputBytes,
-                             const std::function<const aiScene*(Assimp::Importer&)>& read) {
-    const std::string dump = runContained(
+std::unique_ptr<aiScene> readContained(const std::string& path, std::uint64_t inputBytes,
+                                       const std::function<const aiScene*(Assimp::Importer&)>& read) {
+    const std::string reply = runContained(
         path, "Assimp",
         [&] {
             Assimp::Importer reader;
-            const aiScene* scene = read(reader);
-            Assimp::Exporter exporter;
-            const aiExportDataBlob* blob = exporter.ExportToBlob(scene, "assbin");
-            if (!blob) throw std::runtime_error(exporter.GetErrorString());
-            return std::string(static_cast<const char*>(blob->data), blob->size);
+            return writeAssimpReply(*read(reader), path);
         },
         limitsFor(inputBytes));
-    return readReply(importer, path, dump);
-}
-
-const aiScene* readReply(Assimp::Importer& importer, const std::string& path, const std::string& reply) {
-    const aiScene* scene = importer.ReadFileFromMemory(reply.data(), reply.size(), 0, "assbin");
-    if (!scene || !scene->mRootNode)
-        throw std::runtime_error(
-            path + ": the scene Assimp's process sent back does not read back: " + importer.GetErrorString());
-    return scene;
+    return readAssimpReply(reply, path);
 }
 
 }  // namespace rt

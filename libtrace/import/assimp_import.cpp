@@ -384,12 +384,19 @@ public:
 
 }  // namespace
 
+ImportResult importAssimpScene(const aiScene& scene, const std::string& path, const std::string& format,
+                               const ImportOptions& options) {
+    ImportResult result;
+    result.report.format = format;
+    AssimpSceneBuilder(scene, path, options, result).build(rootTransform(options, importerUpAxis(format)));
+    return result;
+}
+
 ImportResult importAssimp(const std::string& path, const ImportOptions& options) {
     Assimp::Importer importer;
     removeGltfImporters(importer);
-    ImportResult result;
-    result.report.format = formatName(importer, path);
-    const aiScene* ai = readContained(importer, path, inputFileSize(path), [&](Assimp::Importer& reader) {
+    const std::string format = formatName(importer, path);
+    const std::unique_ptr<aiScene> ai = readContained(path, inputFileSize(path), [&](Assimp::Importer& reader) {
         removeGltfImporters(reader);
         reader.SetIOHandler(new SandboxedFiles);  // the Importer deletes it
         // --up-axis describes the file, so it takes the place of a Collada file's own <up_axis>.
@@ -401,8 +408,7 @@ ImportResult importAssimp(const std::string& path, const ImportOptions& options)
         }
         return scene;
     });
-    AssimpSceneBuilder(*ai, path, options, result).build(rootTransform(options, importerUpAxis(result.report.format)));
-    return result;
+    return importAssimpScene(*ai, path, format, options);
 }
 
 }  // namespace rt

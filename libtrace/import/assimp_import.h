@@ -5,6 +5,8 @@
 
 #include "import/import.h"
 
+struct aiScene;
+
 namespace rt {
 
 // Reads the file with aiProcess_Triangulate and aiProcess_ValidateDataStructure only (no
@@ -16,5 +18,11 @@ namespace rt {
 // follows rootTransform, knowing which formats Assimp turns Y-up itself. Camera and light
 // defaults are left to the caller. Throws rt::InputError.
 ImportResult importAssimp(const std::string& path, const ImportOptions& options);
+
+// The second half of importAssimp: the scene from what Assimp read of `path` (in a child process,
+// import/assimp_contained.h) with the importer named `format`. Apart for the fuzz target
+// fuzz/assimp_reply_fuzz.cpp, which gives it whatever a reply can hold.
+ImportResult importAssimpScene(const aiScene& scene, const std::string& path, const std::string& format,
+                               const ImportOptions& options);
 
 }  // namespace rt

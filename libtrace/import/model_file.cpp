@@ -42,8 +42,7 @@ Model load3ds(const std::string& path) {
     if (bytes.empty()) throw fail("the file is empty");
     if (bytes.size() < 6 || bytes[0] != 0x4d || bytes[1] != 0x4d)
         throw fail("not a 3DS file (no 0x4D4D main chunk at byte 0)");
-    Assimp::Importer importer;
-    const aiScene* scene = readContained(importer, path, bytes.size(), [&](Assimp::Importer& reader) {
+    const std::unique_ptr<aiScene> scene = readContained(path, bytes.size(), [&](Assimp::Importer& reader) {
         // ValidateDataStructure rejects out-of-range indices before we follow them.
         const aiScene* read = reader.ReadFileFromMemory(bytes.data(), bytes.size(),
                                                         aiProcess_Triangulate | aiProcess_ValidateDataStructure, "3ds");
