@@ -48,9 +48,9 @@ std::string packetDisagreements(const Accelerator& tree, const std::vector<Ray>&
             bool naiveAgrees = true;
             if (naive) {
                 const bool naiveFound = naive->intersect(ray, tMax, expected, singleCounters);
-                naiveAgrees = naiveFound == singleFound &&
-                              (!naiveFound || expected.prim == single.prim ||
-                               std::abs(expected.t - single.t) <= Real(1e-4) * std::abs(expected.t));
+                naiveAgrees =
+                    naiveFound == singleFound && (!naiveFound || expected.prim == single.prim ||
+                                                  std::abs(expected.t - single.t) <= Real(1e-4) * std::abs(expected.t));
             }
             if (packetAgrees && naiveAgrees) continue;
             out << tree.stats().name << " ray " << first + std::size_t(i) << " o=" << ray.origin
@@ -85,8 +85,7 @@ std::vector<Ray> coneRays(int packets, std::uint64_t seed) {
         const Vec3 axis = normalize(Vec3{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)});
         const Real spread = p % 2 ? Real(0.02) : Real(0.2);
         for (int i = 0; i < kPacketSize; ++i)
-            rays.push_back(
-                {origin, normalize(axis + Vec3{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)} * spread)});
+            rays.push_back({origin, normalize(axis + Vec3{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)} * spread)});
     }
     return rays;
 }
@@ -105,7 +104,8 @@ TEST(KdPacket, RandomTrianglesAgreeWithSingleRaysAndTheNaiveList) {
     const NaiveAccelerator naive(scene.primitives);
     const std::vector<Ray> rays = coneRays(600, 5);
     for (const auto& tree : trees(scene.primitives)) {
-        for (int size : {kPacketSize, 5, 2, 1}) EXPECT_EQ(packetDisagreements(*tree, rays, size, kInfinity, &naive), "");
+        for (int size : {kPacketSize, 5, 2, 1})
+            EXPECT_EQ(packetDisagreements(*tree, rays, size, kInfinity, &naive), "");
         EXPECT_EQ(packetDisagreements(*tree, rays, kPacketSize, Real(1.2), &naive), "");  // a finite tMax
     }
 }
@@ -149,8 +149,7 @@ TEST(KdPacket, CameraRaysOfThesisScenesAgreeWithSingleRays) {
     for (const char* name : {"balls", "ships", "tree", "pyramid5"}) {
         const Scene scene = thesisScene(name);
         const auto tree = buildKdTree(scene.primitives, KdSettings{});
-        EXPECT_EQ(packetDisagreements(*tree, cameraTiles(scene.camera, 320, 240), kPacketSize, kInfinity), "")
-            << name;
+        EXPECT_EQ(packetDisagreements(*tree, cameraTiles(scene.camera, 320, 240), kPacketSize, kInfinity), "") << name;
     }
 }
 
@@ -170,7 +169,8 @@ TEST(KdPacket, EquallyNearHitsGoToTheSamePrimitiveAsSingleRays) {
     for (int p = 0; p < 100; ++p)  // along the quads' diagonal x = y
         for (int i = 0; i < kPacketSize; ++i) {
             const Real s = Real(p) / 60 - Real(0.8) + Real(i) / 400;
-            rays.push_back({{s, s, 3}, normalize(Vec3{Real(1e-3) * Real(i % 3 + 1), Real(1e-3) * Real(i % 3 + 1), -1})});
+            rays.push_back(
+                {{s, s, 3}, normalize(Vec3{Real(1e-3) * Real(i % 3 + 1), Real(1e-3) * Real(i % 3 + 1), -1})});
         }
     for (const auto& tree : trees(prims)) EXPECT_EQ(packetDisagreements(*tree, rays, kPacketSize, kInfinity), "");
 }
