@@ -65,6 +65,9 @@ struct TreeNodeInfo {
     std::uint32_t primitives = 0;     // primitive references of a leaf
 };
 
+// The most rays Accelerator::intersectPacket takes: eight, as a 4x2 tile of pixels.
+inline constexpr int kPacketSize = 8;
+
 class Accelerator {
 public:
     virtual ~Accelerator() = default;
@@ -73,6 +76,15 @@ public:
     virtual bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const = 0;
     // True if anything is hit with 0 < t < tMax.
     virtual bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const = 0;
+
+    // The nearest hits of `count` (at most kPacketSize) rays, each exactly what intersect()
+    // finds for it, bit for bit: found[i] says whether rays[i] hit, and hits[i] is then its hit.
+    // Trees trace coherent rays (neighbouring camera rays) together; the default traces one
+    // at a time.
+    virtual void intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                                 RayCounters& counters) const {
+        for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], tMax, hits[i], counters);
+    }
 
     virtual AccelStats stats() const = 0;
 

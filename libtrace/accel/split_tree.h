@@ -89,6 +89,9 @@ public:
 
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
+    // Wald's packet traversal (accel/kd_packet.cpp).
+    void intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                         RayCounters& counters) const override;
     AccelStats stats() const override { return stats_; }
     void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const override;
 

@@ -43,6 +43,14 @@ inline RealLanes notGreaterThan(RealLanes a, RealLanes b) { return {_mm_cmpngt_p
 inline RealLanes notEqual(RealLanes a, RealLanes b) { return {_mm_cmpneq_pd(a.v, b.v)}; }
 // Bit i set where lane i of the mask is set.
 inline unsigned laneBits(RealLanes mask) { return unsigned(_mm_movemask_pd(mask.v)); }
+// For the packet traversal (accel/kd_packet.cpp): masks combined and chosen between.
+inline RealLanes operator|(RealLanes a, RealLanes b) { return {_mm_or_pd(a.v, b.v)}; }
+inline RealLanes andNot(RealLanes a, RealLanes b) { return {_mm_andnot_pd(a.v, b.v)}; }  // ~a & b
+inline RealLanes lessEqual(RealLanes a, RealLanes b) { return {_mm_cmple_pd(a.v, b.v)}; }
+// Lane by lane: a where the mask is set, else b.
+inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
+    return {_mm_or_pd(_mm_and_pd(mask.v, a.v), _mm_andnot_pd(mask.v, b.v))};
+}
 
 #elif RT_SIMD_SSE2
 
@@ -63,6 +71,12 @@ inline RealLanes notLessThan(RealLanes a, RealLanes b) { return {_mm_cmpnlt_ps(a
 inline RealLanes notGreaterThan(RealLanes a, RealLanes b) { return {_mm_cmpngt_ps(a.v, b.v)}; }
 inline RealLanes notEqual(RealLanes a, RealLanes b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
 inline unsigned laneBits(RealLanes mask) { return unsigned(_mm_movemask_ps(mask.v)); }
+inline RealLanes operator|(RealLanes a, RealLanes b) { return {_mm_or_ps(a.v, b.v)}; }
+inline RealLanes andNot(RealLanes a, RealLanes b) { return {_mm_andnot_ps(a.v, b.v)}; }
+inline RealLanes lessEqual(RealLanes a, RealLanes b) { return {_mm_cmple_ps(a.v, b.v)}; }
+inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
+    return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
+}
 
 #else
 
@@ -111,6 +125,19 @@ inline unsigned laneBits(RealLanes mask) {
     unsigned bits = 0;
     for (int i = 0; i < 4; ++i) bits |= unsigned(mask.v[i] != 0) << i;
     return bits;
+}
+inline RealLanes operator|(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(x != 0 || y != 0); });
+}
+inline RealLanes andNot(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(x == 0 && y != 0); });
+}
+inline RealLanes lessEqual(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return Real(x <= y); });
+}
+inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
+    return {{mask.v[0] != 0 ? a.v[0] : b.v[0], mask.v[1] != 0 ? a.v[1] : b.v[1], mask.v[2] != 0 ? a.v[2] : b.v[2],
+             mask.v[3] != 0 ? a.v[3] : b.v[3]}};
 }
 
 #endif

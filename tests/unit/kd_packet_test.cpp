@@ -1,0 +1,192 @@
+// Packet traversal (accel/kd_packet.cpp): every ray of a packet gets, bit for bit, the hit the
+// single-ray traversal gives it (the same primitive, t, u and v), which agrees with the naive
+// list; on camera rays of the thesis scenes, random triangles and the hard cases, in both
+// precisions (the float build runs the same tests).
+#include <cstring>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "accel/bsp.h"
+#include "accel/kdtree.h"
+#include "accel/naive.h"
+#include "core/random.h"
+#include "render/camera_rays.h"
+#include "scene/generate.h"
+#include "scene/thesis_scenes.h"
+#include "test_util.h"
+
+using namespace rt;
+
+namespace {
+
+bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool identical(bool foundA, const Hit& a, bool foundB, const Hit& b) {
+    return foundA == foundB &&
+           (!foundA || (a.prim == b.prim && sameBits(a.t, b.t) && sameBits(a.u, b.u) && sameBits(a.v, b.v)));
+}
+
+// Traces `rays` in packets of `packetSize` (the last may be shorter) and one by one; describes
+// the first rays whose answers differ, empty if none does. `naive`, if given, checks the
+// single-ray answers too (the same primitive, or an equally near one).
+std::string packetDisagreements(const Accelerator& tree, const std::vector<Ray>& rays, int packetSize, Real tMax,
+                                const Accelerator* naive = nullptr) {
+    std::ostringstream out;
+    RayCounters packetCounters, singleCounters;
+    int reported = 0;
+    for (std::size_t first = 0; first < rays.size() && reported < 5; first += std::size_t(packetSize)) {
+        const int count = int(std::min<std::size_t>(std::size_t(packetSize), rays.size() - first));
+        Hit hits[kPacketSize];
+        bool found[kPacketSize];
+        tree.intersectPacket(&rays[first], count, tMax, hits, found, packetCounters);
+        for (int i = 0; i < count; ++i) {
+            const Ray& ray = rays[first + std::size_t(i)];
+            Hit single, expected;
+            const bool singleFound = tree.intersect(ray, tMax, single, singleCounters);
+            const bool packetAgrees = identical(found[i], hits[i], singleFound, single);
+            bool naiveAgrees = true;
+            if (naive) {
+                const bool naiveFound = naive->intersect(ray, tMax, expected, singleCounters);
+                naiveAgrees =
+                    naiveFound == singleFound && (!naiveFound || expected.prim == single.prim ||
+                                                  std::abs(expected.t - single.t) <= Real(1e-4) * std::abs(expected.t));
+            }
+            if (packetAgrees && naiveAgrees) continue;
+            out << tree.stats().name << " ray " << first + std::size_t(i) << " o=" << ray.origin
+                << " d=" << ray.direction << ": packet " << found[i] << " prim " << hits[i].prim << " t " << hits[i].t
+                << "; single " << singleFound << " prim " << single.prim << " t " << single.t << "; naive prim "
+                << expected.prim << " t " << expected.t << '\n';
+            ++reported;
+        }
+    }
+    return out.str();
+}
+
+// The camera rays of a width x height view in 4x2 tiles, as rt-render traces them.
+std::vector<Ray> cameraTiles(const Camera& camera, int width, int height) {
+    const CameraRays cameraRays(camera, width, height);
+    std::vector<Ray> rays;
+    for (int y0 = 0; y0 < height; y0 += 2)
+        for (int x0 = 0; x0 < width; x0 += 4)
+            for (int i = 0; i < kPacketSize; ++i)
+                rays.push_back(cameraRays.at(Real(x0 + i % 4) + Real(0.5), Real(y0 + i / 4) + Real(0.5)));
+    return rays;
+}
+
+// Packets of rays from one origin in a narrow cone around a random axis: coherent, but some
+// cones straddle an octant's boundary (traced one by one) and some start inside the scene.
+std::vector<Ray> coneRays(int packets, std::uint64_t seed) {
+    SplitMix64 rng(seed);
+    const auto uniform = [&](Real lo, Real hi) { return lo + (hi - lo) * Real(rng.uniform()); };
+    std::vector<Ray> rays;
+    for (int p = 0; p < packets; ++p) {
+        const Vec3 origin{uniform(-1.5, 1.5), uniform(-1.5, 1.5), uniform(-1.5, 1.5)};
+        const Vec3 axis = normalize(Vec3{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)});
+        const Real spread = p % 2 ? Real(0.02) : Real(0.2);
+        for (int i = 0; i < kPacketSize; ++i)
+            rays.push_back({origin, normalize(axis + Vec3{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)} * spread)});
+    }
+    return rays;
+}
+
+std::vector<std::unique_ptr<Accelerator>> trees(const Primitives& prims) {
+    std::vector<std::unique_ptr<Accelerator>> all;
+    all.push_back(buildKdTree(prims, KdSettings{}));
+    all.push_back(buildBspTree(prims, BspSettings{}));
+    return all;
+}
+
+}  // namespace
+
+TEST(KdPacket, RandomTrianglesAgreeWithSingleRaysAndTheNaiveList) {
+    const Scene scene = generateScene({2000, 0, Placement::Uniform, 21});
+    const NaiveAccelerator naive(scene.primitives);
+    const std::vector<Ray> rays = coneRays(600, 5);
+    for (const auto& tree : trees(scene.primitives)) {
+        for (int size : {kPacketSize, 5, 2, 1})
+            EXPECT_EQ(packetDisagreements(*tree, rays, size, kInfinity, &naive), "");
+        EXPECT_EQ(packetDisagreements(*tree, rays, kPacketSize, Real(1.2), &naive), "");  // a finite tMax
+    }
+}
+
+TEST(KdPacket, SpheresCylindersAndConesAgreeWithSingleRays) {
+    const Scene scene = generateScene({200, 200, Placement::Clustered, 22, 100, 100});
+    const NaiveAccelerator naive(scene.primitives);
+    for (const auto& tree : trees(scene.primitives))
+        EXPECT_EQ(packetDisagreements(*tree, coneRays(600, 6), kPacketSize, kInfinity, &naive), "");
+}
+
+// Rays in the split planes, parallel to the axes and on the planes: packets with a zero direction
+// component go one by one, and the others must still break ties as single rays do.
+TEST(KdPacket, AxisAlignedRaysInSplitPlanesAgreeWithSingleRays) {
+    const Scene scene = generateScene({300, 50, Placement::Clustered, 23});
+    std::vector<Ray> rays;
+    for (int p = 0; p < 400; ++p) {
+        const Real x = Real(p % 20) / 10 - 1, y = Real(p / 20) / 10 - 1;
+        for (int i = 0; i < kPacketSize; ++i) {
+            const Vec3 d = p % 3 == 0 ? Vec3{0, 0, -1} : normalize(Vec3{Real(i) * Real(1e-3), Real(0.01), -1});
+            rays.push_back({{x + Real(i % 4) / 40, y + Real(i / 4) / 40, 3}, d});
+        }
+    }
+    for (const auto& tree : trees(scene.primitives))
+        EXPECT_EQ(packetDisagreements(*tree, rays, kPacketSize, kInfinity), "");
+}
+
+TEST(KdPacket, CameraRaysOfSmallThesisScenesAgreeWithSingleRaysAndTheNaiveList) {
+    for (const char* name : {"ships", "pyramid5"}) {
+        const Scene scene = thesisScene(name);
+        const NaiveAccelerator naive(scene.primitives);
+        const auto tree = buildKdTree(scene.primitives, KdSettings{});
+        EXPECT_EQ(packetDisagreements(*tree, cameraTiles(scene.camera, 80, 60), kPacketSize, kInfinity, &naive), "")
+            << name;
+    }
+}
+
+// Every camera ray of the larger thesis scenes at 320x240, against single rays only (the naive
+// list would take minutes).
+TEST(KdPacket, CameraRaysOfThesisScenesAgreeWithSingleRays) {
+    for (const char* name : {"balls", "ships", "tree", "pyramid5"}) {
+        const Scene scene = thesisScene(name);
+        const auto tree = buildKdTree(scene.primitives, KdSettings{});
+        EXPECT_EQ(packetDisagreements(*tree, cameraTiles(scene.camera, 320, 240), kPacketSize, kInfinity), "") << name;
+    }
+}
+
+// Equally near hits (every triangle twice, and quads whose halves share an edge): the tie rule
+// must be the single traversal's, the first found winning.
+TEST(KdPacket, EquallyNearHitsGoToTheSamePrimitiveAsSingleRays) {
+    Scene scene = generateScene({400, 0, Placement::Uniform, 24});
+    Primitives& prims = scene.primitives;
+    const std::uint32_t n = prims.count<Triangle>();
+    for (std::uint32_t id = 0; id < n; ++id) prims.add<Triangle>(prims.all<Triangle>()[id], 0);
+    for (int i = 0; i < 8; ++i) {  // quads facing the rays, split along a diagonal the rays cross
+        const Real z = Real(i) / 4 - 1;
+        prims.add<Triangle>({{-1, -1, z}, {1, -1, z}, {1, 1, z}}, 0);
+        prims.add<Triangle>({{-1, -1, z}, {1, 1, z}, {-1, 1, z}}, 0);
+    }
+    std::vector<Ray> rays = coneRays(300, 7);
+    for (int p = 0; p < 100; ++p)  // along the quads' diagonal x = y
+        for (int i = 0; i < kPacketSize; ++i) {
+            const Real s = Real(p) / 60 - Real(0.8) + Real(i) / 400;
+            rays.push_back(
+                {{s, s, 3}, normalize(Vec3{Real(1e-3) * Real(i % 3 + 1), Real(1e-3) * Real(i % 3 + 1), -1})});
+        }
+    for (const auto& tree : trees(prims)) EXPECT_EQ(packetDisagreements(*tree, rays, kPacketSize, kInfinity), "");
+}
+
+// The packet counts the work of each of its rays: the same nodes and tests as single rays.
+TEST(KdPacket, CountsTheSameWorkAsSingleRays) {
+    const Scene scene = thesisScene("ships");
+    const auto tree = buildKdTree(scene.primitives, KdSettings{});
+    const std::vector<Ray> rays = cameraTiles(scene.camera, 80, 60);
+    RayCounters packet, single;
+    for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
+        Hit hits[kPacketSize];
+        bool found[kPacketSize];
+        tree->intersectPacket(&rays[first], kPacketSize, kInfinity, hits, found, packet);
+        for (int i = 0; i < kPacketSize; ++i) tree->intersect(rays[first + std::size_t(i)], kInfinity, hits[i], single);
+    }
+    EXPECT_EQ(packet.traversalSteps, single.traversalSteps);
+    EXPECT_EQ(packet.intersectionTests, single.intersectionTests);
+}
