@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "render/light_sample.h"
 #include "render/normal_map.h"
@@ -71,25 +72,31 @@ PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const Rende
       epsilon_(secondaryRayOffset(scene.primitives)),
       images_(images) {}
 
-Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs*) const {
+Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
     PixelEstimate estimate;
+    AovSums aovSums;
     for (int i = 0; i < settings_.pixelSamples; ++i) {
         bool seen = false;
-        const Color c = sample(x, y, i, counters, seen);  // before add() reads `seen`
+        const Color c = sample(x, y, i, counters, seen, aovs ? &aovSums : nullptr);  // before add() reads `seen`
         if (!estimate.add(c, seen)) counters.nonFinite.add(x, y);
     }
     coverage = estimate.coverage();
+    if (aovs) *aovs = aovSums.mean(estimate.varianceOfMean());
     return estimate.mean();
 }
 
-Color PathTracer::sample(int x, int y, int index, RenderCounters& counters, bool& seen) const {
+Color PathTracer::sample(int x, int y, int index, RenderCounters& counters, bool& seen, AovSums* aovs) const {
+    const std::optional<RenderCounters> before = aovs ? std::optional(counters) : std::nullopt;
     SobolSampler sampler{std::uint32_t(x), std::uint32_t(y), std::uint32_t(index), settings_.seed};
     const auto [sx, sy] = sampler.next2D();  // a box filter over the pixel
     ++counters.camera.rays;
-    return radiance(camera_.at(Real(x) + sx, Real(y) + sy), sampler, counters, seen);
+    const Color c = radiance(camera_.at(Real(x) + sx, Real(y) + sy), sampler, counters, seen, aovs);
+    if (aovs) aovs->finishSample(*before, counters);
+    return c;
 }
 
-Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCounters& counters, bool& seen) const {
+Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCounters& counters, bool& seen,
+                           AovSums* aovs) const {
     Color result, throughput{1, 1, 1};
     Ray ray = cameraRay;
     // How `ray` was sampled, for MIS at the emitter it hits: the BSDF's density, and whether a
@@ -109,6 +116,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         seen = seen || bounce == 0;
         const SurfacePoint s = shadedSurfaceAt(scene_, ray, hit, images_);
         const Material& m = scene_.materialOf(hit.prim);
+        if (aovs && bounce == 0) aovs->addHit(scene_, s, hit, surfaceColor(scene_, m, s, images_));
         // Beer-Lambert along the stretch just travelled inside (render/refraction.h)
         if (!s.frontFace && m.transmission.absorbs()) throughput = throughput * absorbed(m.transmission, hit.t);
         if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {

@@ -75,16 +75,19 @@ public:
     PathTracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
                const ImageTextures* images = nullptr);
 
-    // The mean of the pixel's -S paths; coverage is the fraction whose camera ray hit something.
-    // Non-finite samples count as black and are recorded in counters.nonFinite.
+    // The mean of the pixel's -S paths; coverage is the fraction whose camera ray hit something;
+    // `aovs`, if given, receives the pixel's AOVs (render/aov.h). Non-finite samples count as
+    // black and are recorded in counters.nonFinite.
     Color pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs = nullptr) const;
 
     // Path `index` of pixel (x, y), as pixel() takes it (possibly non-finite); `seen` tells whether
-    // its camera ray hit anything. The progressive renderer (render/renderer.h) takes one per pass.
-    Color sample(int x, int y, int index, RenderCounters& counters, bool& seen) const;
+    // its camera ray hit anything; `aovs`, if given, receives what it hit and the path's work.
+    // The progressive renderer (render/renderer.h) takes one per pass.
+    Color sample(int x, int y, int index, RenderCounters& counters, bool& seen, AovSums* aovs = nullptr) const;
 
-    // The radiance arriving along a camera ray; `seen` tells whether it hit anything.
-    Color radiance(const Ray& ray, SobolSampler& sampler, RenderCounters& counters, bool& seen) const;
+    // The radiance arriving along a camera ray; `seen` tells whether it hit anything, `aovs` what.
+    Color radiance(const Ray& ray, SobolSampler& sampler, RenderCounters& counters, bool& seen,
+                   AovSums* aovs = nullptr) const;
 
 private:
     struct LightNumbers {

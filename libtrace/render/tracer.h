@@ -47,9 +47,6 @@ public:
     Real epsilon() const { return epsilon_; }
 
 private:
-    void addHit(PixelAovs& aovs, const SurfacePoint& s, const Hit& hit, bool first) const;
-    static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
-                        const RenderCounters& after);
     // The colour at `s`, the surface of `hit` (surfaceAt); `cone`: the radius of the ray's
     // footprint there, which the reflected and transmitted rays widen from.
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
