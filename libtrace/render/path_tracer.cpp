@@ -34,12 +34,11 @@ ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
 
 }  // namespace
 
-SurfaceBsdf::SurfaceBsdf(const Material& m, const PbrParameters& p, bool frontFace, Real& lobe)
-    : bsdf_(choose(m, p, frontFace, lobe)) {}
+SurfaceBsdf::SurfaceBsdf(const Material& m, const PbrParameters& p, float transmission, bool frontFace, Real& lobe)
+    : bsdf_(choose(m, p, transmission, frontFace, lobe)) {}
 
-std::variant<PbrBsdf, DielectricBsdf> SurfaceBsdf::choose(const Material& m, const PbrParameters& p, bool frontFace,
-                                                          Real& lobe) {
-    const float glass = m.transmission.weight;
+std::variant<PbrBsdf, DielectricBsdf> SurfaceBsdf::choose(const Material& m, const PbrParameters& p, float glass,
+                                                          bool frontFace, Real& lobe) {
     if (!(glass > 0)) return PbrBsdf(p);
     if (lobe < glass) {
         lobe /= glass;
@@ -133,7 +132,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         const Vec3 toViewer = -ray.direction;
         const ShadingFrame frame = shadingFrame(s, toViewer);
         const Vec3 wo = frame.toLocal(toViewer);
-        const SurfaceBsdf bsdf(m, pbrParametersAt(m, s), s.frontFace, lobe);
+        const SurfaceBsdf bsdf(m, pbrParametersAt(m, s), transmissionAt(scene_, m, s, images_), s.frontFace, lobe);
         if (!bsdf.smooth())
             result += clampIndirect(throughput * directLight(s, bsdf, frame, wo, {pick, l1, l2}, counters), bounce + 1);
 

@@ -43,12 +43,12 @@ struct ShadingFrame {
     Vec3 toWorld(const Vec3& v) const { return axes[0] * v.x + axes[1] * v.y + axes[2] * v.z; }
 };
 
-// The BSDF at a hit: a transmissive material (Material::transmission, weight w) is glass
-// (render/dielectric_bsdf.h) for a share w of its paths and the metallic-roughness BRDF for the
-// rest; `lobe`, a uniform number, makes the choice and is stretched back to [0, 1) for sample().
+// The BSDF at a hit: a transmissive material (Material::transmission, weight w at the hit:
+// transmissionAt()) is glass (render/dielectric_bsdf.h) for a share w of its paths and the metallic-roughness BRDF for
+// the rest; `lobe`, a uniform number, makes the choice and is stretched back to [0, 1) for sample().
 class SurfaceBsdf {
 public:
-    SurfaceBsdf(const Material& m, const PbrParameters& p, bool frontFace, Real& lobe);
+    SurfaceBsdf(const Material& m, const PbrParameters& p, float transmission, bool frontFace, Real& lobe);
     Color evaluate(const Vec3& wo, const Vec3& wi) const {
         return std::visit([&](const auto& b) { return b.evaluate(wo, wi); }, bsdf_);
     }
@@ -64,8 +64,8 @@ public:
     }
 
 private:
-    static std::variant<PbrBsdf, DielectricBsdf> choose(const Material& m, const PbrParameters& p, bool frontFace,
-                                                        Real& lobe);
+    static std::variant<PbrBsdf, DielectricBsdf> choose(const Material& m, const PbrParameters& p, float glass,
+                                                        bool frontFace, Real& lobe);
     std::variant<PbrBsdf, DielectricBsdf> bsdf_;
 };
 

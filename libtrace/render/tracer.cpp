@@ -105,10 +105,11 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     // transmitted ray too, Fresnel's reflected share of it going to the mirror ray.
     float mirrorWeight = m.reflection;
     if (m.transmission.passesLight() && depth < settings_.reflectionDepth) {
+        const float weight = transmissionAt(scene_, m, s, images_);
         const RefractionSplit split =
             splitAt(m.transmission, ray.direction, s.shadingNormal, s.geometricNormal, s.frontFace);
-        mirrorWeight += m.transmission.weight * split.reflected;
-        c += transmitted(s, m, split, depth, inBundle, rng, counters, cone);
+        mirrorWeight += weight * split.reflected;
+        c += transmitted(s, m, weight, split, depth, inBundle, rng, counters, cone);
     }
     if (mirrorWeight > 0 && depth < settings_.reflectionDepth)
         c += reflection(s, ray.direction, m, depth, inBundle, rng, counters, cone) * mirrorWeight;
@@ -206,14 +207,14 @@ Color Tracer::lobe(const Ray& axis, const Vec3& side, float sigma, int depth, bo
 
 // The transmitted ray leaves from the far side of the surface, one epsilon through it; a rough
 // surface spreads it as a glossy one does its reflection.
-Color Tracer::transmitted(const SurfacePoint& s, const Material& m, const RefractionSplit& split, int depth,
-                          bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const {
+Color Tracer::transmitted(const SurfacePoint& s, const Material& m, float weight, const RefractionSplit& split,
+                          int depth, bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const {
     if (split.reflected >= 1) return {};  // total internal reflection
     const Transmission& t = m.transmission;
     const Ray through{s.point - s.geometricNormal * epsilon_, split.direction};
     const float sigma = t.thin ? 0 : glossySpread(scene_, m, s, images_);
     return lobe(through, -s.geometricNormal, sigma, depth, inBundle, rng, counters, cone) * t.color *
-           (t.weight * (1 - split.reflected));
+           (weight * (1 - split.reflected));
 }
 
 }  // namespace rt

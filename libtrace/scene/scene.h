@@ -70,6 +70,8 @@ struct Material {
     std::optional<MetallicRoughnessFactors> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
+    // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
+    std::optional<std::uint32_t> transmissionTexture{};
     // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times
     // alphaTexture's alpha at the hit, is below alphaCutoff, rays pass through the surface.
     // An alpha texture that is the colour texture gives its alpha channel (1 without one); any

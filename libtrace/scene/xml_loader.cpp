@@ -183,6 +183,7 @@ void SceneBuilder::readList(const XmlElement& list) {
                                      "normal_scale",
                                      "transmission",
                                      "transmission_color",
+                                     "transmission_texture",
                                      "ior",
                                      "thin",
                                      "attenuation_color",
@@ -291,6 +292,8 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
     if (const auto name = e.optionalString("metallic_roughness_texture"))
         textureUses_.push_back({index, &Material::metallicRoughnessTexture, *name, e.node()});
+    if (const auto name = e.optionalString("transmission_texture"))
+        textureUses_.push_back({index, &Material::transmissionTexture, *name, e.node()});
     readCutout(e, index, m);
     if (const auto name = e.optionalString("normal_texture"))
         textureUses_.push_back({index, &Material::normalTexture, *name, e.node()});

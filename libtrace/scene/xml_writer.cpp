@@ -260,6 +260,8 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
                 .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
         if (m.alphaCutoff) setNumber(node, "alpha_cutoff", *m.alphaCutoff);
         if (m.alpha != 1) setNumber(node, "alpha", m.alpha);
+        if (m.transmissionTexture)
+            node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmissionTexture).c_str());
         if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
         if (m.normalTexture)
             node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalTexture).c_str());
