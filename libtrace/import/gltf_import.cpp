@@ -370,6 +370,7 @@ private:
             m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             keepMetallicRoughnessTexture(gm, what, m);
+            keepTransmissionTexture(gm, what, m);
             readAlphaMode(gm, what, m);
             m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
             if (m.normalTexture)
@@ -387,6 +388,21 @@ private:
         if (!m.metallicRoughnessTexture) return;
         m.metallicRoughness->metallic = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
         m.metallicRoughness->roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+    }
+
+    // Both integrators follow the transmission texture per hit (its red channel times the
+    // factor), so the weight is the factor again (metallicRoughness() halved it for the Phong
+    // coefficients, which cannot follow the texture).
+    void keepTransmissionTexture(const tinygltf::Material& gm, const std::string& what, Material& m) {
+        const auto ext = gm.extensions.find("KHR_materials_transmission");
+        if (ext == gm.extensions.end() || !ext->second.Has("transmissionTexture") || !m.transmission.passesLight())
+            return;
+        const tinygltf::Value& info = ext->second.Get("transmissionTexture");
+        tinygltf::TextureInfo reference;
+        if (info.Has("index")) reference.index = info.Get("index").GetNumberAsInt();
+        if (info.Has("texCoord")) reference.texCoord = info.Get("texCoord").GetNumberAsInt();
+        m.transmissionTexture = textureFor(reference, what + " transmissionTexture");
+        if (m.transmissionTexture) m.transmission.weight = std::min(1.0f, m.transmission.weight * 2);
     }
 
     // alphaMode MASK is a cut-out at alphaCutoff of the base colour's alpha (factor times the
@@ -495,9 +511,10 @@ private:
         return in;
     }
 
-    // KHR_materials_transmission and KHR_materials_volume. The textures are not followed: a
+    // KHR_materials_transmission and KHR_materials_volume. For the Phong coefficients a
     // transmissionTexture, which usually holds the real values (a paper lamp shade's fibres), is
-    // taken as mid-grey, half the factor, as the metallicRoughnessTexture is.
+    // taken as mid-grey, half the factor, as the metallicRoughnessTexture is (the renderers then
+    // follow it per hit: keepTransmissionTexture()).
     void readTransmission(const tinygltf::Material& gm, MetallicRoughness& in, const std::string& what) const {
         const auto number = [&](const tinygltf::Value& ext, const char* key, float& to) {
             if (ext.Has(key)) to = float(numberValue(ext.Get(key), file_, what + " " + key));

@@ -4,6 +4,9 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "render/render_stats.h"
+#include "render/surface.h"
+#include "scene/scene.h"
 
 namespace rt {
 
@@ -40,6 +43,50 @@ std::vector<Aov> parseAovList(const std::string& list) {
     for (std::size_t i = 0; i < wanted.size(); ++i)
         if (wanted[i]) aovs.push_back(aovLayers()[i].aov);
     return aovs;
+}
+
+// Ng is the primitive's own normal, not turned to the ray.
+void AovSums::addHit(const Scene& scene, const SurfacePoint& s, const Hit& hit, const Color& albedo) {
+    const Vec3 ng = scene.primitives.normal(hit.prim, s.point);
+    for (int c = 0; c < 3; ++c) {
+        sum_.p[c] += float(s.point[c]);
+        sum_.n[c] += float(s.shadingNormal[c]);
+        sum_.ng[c] += float(ng[c]);
+    }
+    sum_.z += float(hit.t);
+    sum_.albedo += albedo;
+    ++hits_;
+    if (samples_ > 0) return;
+    sum_.material = scene.primitives.material(hit.prim);
+    sum_.primitive = hit.prim;
+}
+
+void AovSums::finishSample(const RenderCounters& before, const RenderCounters& after) {
+    steps_ += after.camera.traversalSteps - before.camera.traversalSteps;
+    tests_ += after.camera.intersectionTests - before.camera.intersectionTests;
+    const RayCounters all = after.total(), allBefore = before.total();
+    allSteps_ += all.traversalSteps - allBefore.traversalSteps;
+    allTests_ += all.intersectionTests - allBefore.intersectionTests;
+    ++samples_;
+}
+
+PixelAovs AovSums::mean(const Color& varianceOfMean) const {
+    PixelAovs a = sum_;
+    const float perHit = hits_ > 0 ? 1.0f / float(hits_) : 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        a.p[c] *= perHit;
+        a.n[c] *= perHit;
+        a.ng[c] *= perHit;
+    }
+    a.albedo *= perHit;
+    a.z = hits_ > 0 ? a.z * perHit : kInfinity;
+    const float perSample = samples_ > 0 ? 1.0f / float(samples_) : 0.0f;
+    a.steps = float(steps_) * perSample;
+    a.tests = float(tests_) * perSample;
+    a.allSteps = float(allSteps_) * perSample;
+    a.allTests = float(allTests_) * perSample;
+    a.variance = varianceOfMean;
+    return a;
 }
 
 std::vector<float> aovValues(const PixelAovs& a, Aov aov) {

@@ -3,7 +3,8 @@
 // (`oiiotool --ch N.X,N.Y,N.Z`). Supersampling averages Z, N, Ng, P, albedo and cost over the
 // camera samples (Z, N, Ng, P and albedo over those that hit something); the ids are the first
 // sample's. The cost layer is rt-inspect's heat map as data: the traversal steps and
-// intersection tests of the pixel's camera rays, and of every ray they spawned. The variance
+// intersection tests of the pixel's camera rays, and of every ray they spawned (a whole path
+// with the path tracer). Both integrators sum them in AovSums, sample by sample. The variance
 // layer is a noise figure: the variance of the pixel's mean colour, per channel, estimated from
 // its samples (render/pixel_estimate.h); it falls as 1/N with N samples, and is 0 with one.
 #pragma once
@@ -15,6 +16,11 @@
 #include "core/color.h"
 
 namespace rt {
+
+struct Hit;
+struct RenderCounters;
+struct Scene;
+struct SurfacePoint;
 
 enum class Aov { Z, N, Ng, P, Albedo, Id, Cost, Variance };
 
@@ -47,6 +53,24 @@ struct PixelAovs {
     float steps = 0, tests = 0;        // per camera ray: its own traversal steps and tests
     float allSteps = 0, allTests = 0;  // per camera ray: with every shadow and reflection ray it spawned
     Color variance;                    // of the mean colour, per channel
+};
+
+// A pixel's AOVs summed over its camera samples, taken one at a time in sample order: by the
+// Whitted tracer in one loop, by the path tracer one per pass (K passes give the bits of -S K).
+class AovSums {
+public:
+    // What sample's camera ray hit (before finishSample()): the surface point, shading normal and
+    // colour (`albedo`) the shading uses; the ids are taken from the pixel's first sample only.
+    void addHit(const Scene& scene, const SurfacePoint& s, const Hit& hit, const Color& albedo);
+    // Ends a sample with its work: the tracing thread's counters before and after it.
+    void finishSample(const RenderCounters& before, const RenderCounters& after);
+    // The averages so far (see the file comment), with the variance the caller estimated.
+    PixelAovs mean(const Color& varianceOfMean) const;
+
+private:
+    PixelAovs sum_;  // z, n, ng, p and albedo summed; the ids as taken
+    std::uint64_t steps_ = 0, tests_ = 0, allSteps_ = 0, allTests_ = 0;
+    int samples_ = 0, hits_ = 0;
 };
 
 // The float values of `aov` for a pixel, in the order of its channels (not for Aov::Id).

@@ -37,7 +37,7 @@ void appendCdf(const double* values, int n, std::vector<double>& cdf) {
 void setEnvironmentImage(Scene& scene, const std::string& path) {
     if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such environment image");
     scene.textures.push_back({.name = "environment", .file = path, .path = path});
-    scene.environment = std::uint32_t(scene.textures.size() - 1);
+    scene.environment = Environment{.texture = std::uint32_t(scene.textures.size() - 1)};
 }
 
 std::pair<Real, Real> equirectangularCoordinates(const Vec3& d) {
@@ -52,17 +52,20 @@ Vec3 equirectangularDirection(Real s, Real t) {
     return {sinTheta * std::sin(phi), std::cos(theta), -sinTheta * std::cos(phi)};
 }
 
-EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* images)
-    : scene_(scene), images_(images), texture_(scene.environment) {
+EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* images) : scene_(scene), images_(images) {
+    if (scene.environment) {
+        texture_ = scene.environment->texture;
+        intensity_ = scene.environment->intensity;
+        const Real angle = Real(scene.environment->rotation) * kPi / 180;
+        cosRotation_ = std::cos(angle), sinRotation_ = std::sin(angle);
+    }
     if (!texture_) {
         average_ = luminance(scene.background);
         return;
     }
     width_ = kGridWidth, height_ = kGridHeight;
     cells_.resize(std::size_t(width_) * std::size_t(height_));
-    const auto brightness = [this](Real s, Real t) {
-        return std::max(0.0, double(luminance(radiance(equirectangularDirection(s, t)))));
-    };
+    const auto brightness = [this](Real s, Real t) { return std::max(0.0, double(luminance(imageRadiance(s, t)))); };
     // A cell's value is the brightest of its centre and corners: a sun that covers part of a cell
     // but not its centre would otherwise get next to no samples, and its light a tiny density.
     const auto cornerRow = [&](int y) {
@@ -97,9 +100,23 @@ EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* imag
 
 Color EnvironmentLight::radiance(const Vec3& direction) const {
     if (!texture_) return scene_.background;
-    if (!images_) return {1, 1, 1};
-    const auto [s, t] = equirectangularCoordinates(direction);
-    return images_->lookup(*texture_, TexCoord{float(s), float(t)});
+    const auto [s, t] = equirectangularCoordinates(toImage(direction));
+    return imageRadiance(s, t);
+}
+
+Color EnvironmentLight::imageRadiance(Real s, Real t) const {
+    const Color c = images_ ? images_->lookup(*texture_, TexCoord{float(s), float(t)}) : Color{1, 1, 1};
+    return c * intensity_;
+}
+
+// The image turned by the rotation about +y: a world direction turned back by it is the
+// image's, and an image direction turned by it the world's.
+Vec3 EnvironmentLight::toImage(const Vec3& d) const {
+    return {cosRotation_ * d.x - sinRotation_ * d.z, d.y, sinRotation_ * d.x + cosRotation_ * d.z};
+}
+
+Vec3 EnvironmentLight::toWorld(const Vec3& d) const {
+    return {cosRotation_ * d.x + sinRotation_ * d.z, d.y, -sinRotation_ * d.x + cosRotation_ * d.z};
 }
 
 Real EnvironmentLight::sampleRow(const double* cdf, int n, Real u, int& cell) {
@@ -116,7 +133,7 @@ EnvironmentSample EnvironmentLight::sample(Real u1, Real u2) const {
     int row = 0, column = 0;
     const Real t = sampleRow(marginalCdf_.data(), height_, u1, row);
     const Real s = sampleRow(&rowCdfs_[std::size_t(row) * std::size_t(width_)], width_, u2, column);
-    return {equirectangularDirection(s, t), densityOf(row * width_ + column, std::sin(kPi * t))};
+    return {toWorld(equirectangularDirection(s, t)), densityOf(row * width_ + column, std::sin(kPi * t))};
 }
 
 Real EnvironmentLight::densityOf(int cell, Real sinTheta) const {
@@ -134,7 +151,7 @@ int EnvironmentLight::cellOf(Real s, Real t) const {
 
 Real EnvironmentLight::pdf(const Vec3& direction) const {
     if (!texture_) return 1 / (4 * kPi);
-    const auto [s, t] = equirectangularCoordinates(direction);
+    const auto [s, t] = equirectangularCoordinates(toImage(direction));
     return densityOf(cellOf(s, t), std::sqrt(std::max(Real(0), 1 - direction.y * direction.y)));
 }
 

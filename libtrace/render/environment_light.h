@@ -7,7 +7,9 @@
 // BSDF's by multiple importance sampling, so a small bright sun gives no fireflies.
 //
 // The image's mapping: +y is up; the top row looks straight up (t = 0), the bottom row straight
-// down; the image's centre (s = 0.5) looks along -z, and s grows towards +x.
+// down; the image's centre (s = 0.5) looks along -z, and s grows towards +x. Scene::environment's
+// rotation turns the image about +y (counter-clockwise seen from above: 90 degrees brings the
+// centre to -x), its intensity scales it.
 #pragma once
 
 #include <optional>
@@ -21,7 +23,8 @@
 
 namespace rt {
 
-// Makes the image file at `path` the scene's environment (a texture named "environment").
+// Makes the image file at `path` the scene's environment (a texture named "environment"),
+// unturned and unscaled, in place of any the scene names.
 // Throws rt::InputError when the file does not exist.
 void setEnvironmentImage(Scene& scene, const std::string& path);
 
@@ -50,12 +53,17 @@ private:
     // Where u falls in n running sums (one row, or the marginal over the rows): a position in
     // [0, 1), and the cell it is in.
     static Real sampleRow(const double* cdf, int n, Real u, int& cell);
+    Color imageRadiance(Real s, Real t) const;  // at the image's coordinates, times the intensity
+    Vec3 toImage(const Vec3& direction) const;  // undoes the rotation
+    Vec3 toWorld(const Vec3& direction) const;  // applies it
     int cellOf(Real s, Real t) const;
     Real densityOf(int cell, Real sinTheta) const;  // per solid angle
 
     const Scene& scene_;
     const ImageTextures* images_;
     std::optional<std::uint32_t> texture_;
+    float intensity_ = 1;
+    Real cosRotation_ = 1, sinRotation_ = 0;
     Real average_ = 0;
     // the image's distribution: values per cell (luminance times sin(theta)), the running sums
     // of each row (normalised to end at 1) and of the rows' totals

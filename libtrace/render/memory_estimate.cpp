@@ -10,8 +10,10 @@ MemoryEstimate estimateRenderMemory(const RenderSettings& settings, std::size_t 
     MemoryEstimate e;
     if (renders) {
         const PixelWindow w = settings.window();
-        const std::uint64_t perPixel = kRenderBytesPerPixel + (settings.aovs.empty() ? 0 : kAovBytesPerPixel) +
-                                       (settings.integrator == Integrator::Path ? kPathPassBytesPerPixel : 0);
+        const bool aovs = !settings.aovs.empty(), path = settings.integrator == Integrator::Path;
+        const std::uint64_t perPixel = kRenderBytesPerPixel + (aovs ? kAovBytesPerPixel : 0) +
+                                       (path ? kPathPassBytesPerPixel : 0) +
+                                       (path && aovs ? kPathAovPassBytesPerPixel : 0);
         e.image = std::uint64_t(w.width()) * std::uint64_t(w.height()) * perPixel;
     }
     e.sceneAndTree = std::uint64_t(primitives) * kRenderBytesPerPrimitive;

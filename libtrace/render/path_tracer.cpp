@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "render/light_sample.h"
 #include "render/normal_map.h"
@@ -33,12 +34,11 @@ ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
 
 }  // namespace
 
-SurfaceBsdf::SurfaceBsdf(const Material& m, const PbrParameters& p, bool frontFace, Real& lobe)
-    : bsdf_(choose(m, p, frontFace, lobe)) {}
+SurfaceBsdf::SurfaceBsdf(const Material& m, const PbrParameters& p, float transmission, bool frontFace, Real& lobe)
+    : bsdf_(choose(m, p, transmission, frontFace, lobe)) {}
 
-std::variant<PbrBsdf, DielectricBsdf> SurfaceBsdf::choose(const Material& m, const PbrParameters& p, bool frontFace,
-                                                          Real& lobe) {
-    const float glass = m.transmission.weight;
+std::variant<PbrBsdf, DielectricBsdf> SurfaceBsdf::choose(const Material& m, const PbrParameters& p, float glass,
+                                                          bool frontFace, Real& lobe) {
     if (!(glass > 0)) return PbrBsdf(p);
     if (lobe < glass) {
         lobe /= glass;
@@ -71,25 +71,31 @@ PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const Rende
       epsilon_(secondaryRayOffset(scene.primitives)),
       images_(images) {}
 
-Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs*) const {
+Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
     PixelEstimate estimate;
+    AovSums aovSums;
     for (int i = 0; i < settings_.pixelSamples; ++i) {
         bool seen = false;
-        const Color c = sample(x, y, i, counters, seen);  // before add() reads `seen`
+        const Color c = sample(x, y, i, counters, seen, aovs ? &aovSums : nullptr);  // before add() reads `seen`
         if (!estimate.add(c, seen)) counters.nonFinite.add(x, y);
     }
     coverage = estimate.coverage();
+    if (aovs) *aovs = aovSums.mean(estimate.varianceOfMean());
     return estimate.mean();
 }
 
-Color PathTracer::sample(int x, int y, int index, RenderCounters& counters, bool& seen) const {
+Color PathTracer::sample(int x, int y, int index, RenderCounters& counters, bool& seen, AovSums* aovs) const {
+    const std::optional<RenderCounters> before = aovs ? std::optional(counters) : std::nullopt;
     SobolSampler sampler{std::uint32_t(x), std::uint32_t(y), std::uint32_t(index), settings_.seed};
     const auto [sx, sy] = sampler.next2D();  // a box filter over the pixel
     ++counters.camera.rays;
-    return radiance(camera_.at(Real(x) + sx, Real(y) + sy), sampler, counters, seen);
+    const Color c = radiance(camera_.at(Real(x) + sx, Real(y) + sy), sampler, counters, seen, aovs);
+    if (aovs) aovs->finishSample(*before, counters);
+    return c;
 }
 
-Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCounters& counters, bool& seen) const {
+Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCounters& counters, bool& seen,
+                           AovSums* aovs) const {
     Color result, throughput{1, 1, 1};
     Ray ray = cameraRay;
     // How `ray` was sampled, for MIS at the emitter it hits: the BSDF's density, and whether a
@@ -109,6 +115,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         seen = seen || bounce == 0;
         const SurfacePoint s = shadedSurfaceAt(scene_, ray, hit, images_);
         const Material& m = scene_.materialOf(hit.prim);
+        if (aovs && bounce == 0) aovs->addHit(scene_, s, hit, surfaceColor(scene_, m, s, images_));
         // Beer-Lambert along the stretch just travelled inside (render/refraction.h)
         if (!s.frontFace && m.transmission.absorbs()) throughput = throughput * absorbed(m.transmission, hit.t);
         if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {
@@ -125,7 +132,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         const Vec3 toViewer = -ray.direction;
         const ShadingFrame frame = shadingFrame(s, toViewer);
         const Vec3 wo = frame.toLocal(toViewer);
-        const SurfaceBsdf bsdf(m, pbrParametersAt(m, s), s.frontFace, lobe);
+        const SurfaceBsdf bsdf(m, pbrParametersAt(m, s), transmissionAt(scene_, m, s, images_), s.frontFace, lobe);
         if (!bsdf.smooth())
             result += clampIndirect(throughput * directLight(s, bsdf, frame, wo, {pick, l1, l2}, counters), bounce + 1);
 

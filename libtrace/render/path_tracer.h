@@ -43,12 +43,12 @@ struct ShadingFrame {
     Vec3 toWorld(const Vec3& v) const { return axes[0] * v.x + axes[1] * v.y + axes[2] * v.z; }
 };
 
-// The BSDF at a hit: a transmissive material (Material::transmission, weight w) is glass
-// (render/dielectric_bsdf.h) for a share w of its paths and the metallic-roughness BRDF for the
-// rest; `lobe`, a uniform number, makes the choice and is stretched back to [0, 1) for sample().
+// The BSDF at a hit: a transmissive material (Material::transmission, weight w at the hit:
+// transmissionAt()) is glass (render/dielectric_bsdf.h) for a share w of its paths and the metallic-roughness BRDF for
+// the rest; `lobe`, a uniform number, makes the choice and is stretched back to [0, 1) for sample().
 class SurfaceBsdf {
 public:
-    SurfaceBsdf(const Material& m, const PbrParameters& p, bool frontFace, Real& lobe);
+    SurfaceBsdf(const Material& m, const PbrParameters& p, float transmission, bool frontFace, Real& lobe);
     Color evaluate(const Vec3& wo, const Vec3& wi) const {
         return std::visit([&](const auto& b) { return b.evaluate(wo, wi); }, bsdf_);
     }
@@ -64,8 +64,8 @@ public:
     }
 
 private:
-    static std::variant<PbrBsdf, DielectricBsdf> choose(const Material& m, const PbrParameters& p, bool frontFace,
-                                                        Real& lobe);
+    static std::variant<PbrBsdf, DielectricBsdf> choose(const Material& m, const PbrParameters& p, float glass,
+                                                        bool frontFace, Real& lobe);
     std::variant<PbrBsdf, DielectricBsdf> bsdf_;
 };
 
@@ -75,16 +75,19 @@ public:
     PathTracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
                const ImageTextures* images = nullptr);
 
-    // The mean of the pixel's -S paths; coverage is the fraction whose camera ray hit something.
-    // Non-finite samples count as black and are recorded in counters.nonFinite.
+    // The mean of the pixel's -S paths; coverage is the fraction whose camera ray hit something;
+    // `aovs`, if given, receives the pixel's AOVs (render/aov.h). Non-finite samples count as
+    // black and are recorded in counters.nonFinite.
     Color pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs = nullptr) const;
 
     // Path `index` of pixel (x, y), as pixel() takes it (possibly non-finite); `seen` tells whether
-    // its camera ray hit anything. The progressive renderer (render/renderer.h) takes one per pass.
-    Color sample(int x, int y, int index, RenderCounters& counters, bool& seen) const;
+    // its camera ray hit anything; `aovs`, if given, receives what it hit and the path's work.
+    // The progressive renderer (render/renderer.h) takes one per pass.
+    Color sample(int x, int y, int index, RenderCounters& counters, bool& seen, AovSums* aovs = nullptr) const;
 
-    // The radiance arriving along a camera ray; `seen` tells whether it hit anything.
-    Color radiance(const Ray& ray, SobolSampler& sampler, RenderCounters& counters, bool& seen) const;
+    // The radiance arriving along a camera ray; `seen` tells whether it hit anything, `aovs` what.
+    Color radiance(const Ray& ray, SobolSampler& sampler, RenderCounters& counters, bool& seen,
+                   AovSums* aovs = nullptr) const;
 
 private:
     struct LightNumbers {

@@ -41,11 +41,6 @@ void validate(const RenderSettings& s) {
         throw InputError("--max-bounces must be 0-" + std::to_string(kMaxBounces));
     if (!(s.clampRadiance >= 0) || !std::isfinite(s.clampRadiance))
         throw InputError("--clamp must be a finite number >= 0 (0 is off)");
-    if (s.integrator == Integrator::Path)
-        for (const Aov aov : s.aovs)
-            if (aov != Aov::Variance)
-                throw InputError(std::string("--aov ") + aovName(aov) +
-                                 ": written by the whitted integrator only, so far (the path tracer writes variance)");
     if (s.adaptiveGrid != 0 &&
         (s.adaptiveGrid < 2 || s.adaptiveGrid > kMaxAdaptiveGrid || (s.adaptiveGrid & (s.adaptiveGrid - 1)) != 0))
         throw InputError("the adaptive grid must be a power of two from 2 to " + std::to_string(kMaxAdaptiveGrid) +

@@ -168,53 +168,64 @@ Framebuffer renderWhitted(const Tracer& tracer, const Scene& scene, const Render
     return image;
 }
 
-// One camera sample of every pixel of the window, as a pass leaves it before it is added.
-struct PassSample {
-    Color color;
-    bool seen = false;
+// What the path tracer's passes have gathered in each pixel of the window (row by row): its
+// estimate and, with --aov, its AOV sums.
+struct PassState {
+    std::vector<PixelEstimate> estimates;
+    std::vector<AovSums> aovs;  // empty without --aov
+
+    PassState(std::size_t pixels, bool withAovs) : estimates(pixels), aovs(withAovs ? pixels : 0) {}
 };
 
-// Adds a finished pass to every pixel's estimate, in scan order (so that the first non-finite
-// pixel is found as the tracer finds it), and writes the estimates into the picture.
-void addPass(const std::vector<PassSample>& pass, std::vector<PixelEstimate>& estimates, Framebuffer& image,
-             NonFiniteSamples& nonFinite) {
-    const PixelWindow& w = image.window();
-    std::size_t i = 0;
-    for (int y = w.y0; y < w.y1; ++y)
-        for (int x = w.x0; x < w.x1; ++x, ++i) {
-            PixelEstimate& e = estimates[i];
-            if (!e.add(pass[i].color, pass[i].seen)) nonFinite.add(x, y);
-            image.at(x, y) = e.mean();
-            image.alphaAt(x, y) = e.coverage();
-            if (PixelAovs* aovs = image.aovsAt(x, y)) aovs->variance = e.varianceOfMean();
-        }
+// Writes pixel i (at x, y) of `state` into the picture.
+void writePixel(const PassState& state, std::size_t i, int x, int y, Framebuffer& image) {
+    const PixelEstimate& e = state.estimates[i];
+    image.at(x, y) = e.mean();
+    image.alphaAt(x, y) = e.coverage();
+    if (PixelAovs* aovs = image.aovsAt(x, y)) *aovs = state.aovs[i].mean(e.varianceOfMean());
 }
 
 // The path tracer in passes: pass k takes sample k of every pixel, so the picture after K
-// passes holds the same bits as a render with -S K (PixelEstimate adds in the same order), for
-// any thread count or region split. --time-limit keeps the passes that finished: a pass cut
-// short is dropped whole. The watcher sees the picture after every pass.
+// passes holds the same bits as a render with -S K (PixelEstimate and AovSums add in the same
+// order), for any thread count or region split. Each pixel's new sample is added where it is
+// traced, in the parallel loop, to a copy of the pixel's state (`next`), so that a pass cut
+// short by --time-limit or the watcher's stop can be dropped whole: the picture goes back to
+// `done`, the passes that finished. The watcher sees the picture after every pass.
 Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
                        const RenderProgress& progress, const RenderWatch& watch) {
     const PixelWindow w = settings.window();
-    Framebuffer image(settings.width, settings.height, w, scene.background, !settings.aovs.empty());
+    const bool withAovs = !settings.aovs.empty();
+    Framebuffer image(settings.width, settings.height, w, scene.background, withAovs);
     BlockLoop loop(settings, blocksOf(w, kBlockSize), progress, watch);
-    std::vector<PixelEstimate> estimates(image.pixels().size());
-    std::vector<PassSample> pass(estimates.size());
+    PassState done(image.pixels().size(), withAovs), next = done;
+    // the pass's non-finite samples, per thread, kept only if the pass is
+    std::vector<NonFiniteSamples> passNonFinite(std::size_t(loop.threads()));
     NonFiniteSamples nonFinite;
     int passes = 0;
     for (; passes < settings.pixelSamples; ++passes) {
+        std::fill(passNonFinite.begin(), passNonFinite.end(), NonFiniteSamples{});
         const bool whole = loop.run(
             [&](const PixelWindow& b, RenderCounters& counters) {
                 return loop.eachPixel(b, [&](int x, int y) {
-                    PassSample& s = pass[std::size_t(y - w.y0) * std::size_t(w.width()) + std::size_t(x - w.x0)];
-                    s.color = tracer.sample(x, y, passes, counters, s.seen);
+                    const std::size_t i = std::size_t(y - w.y0) * std::size_t(w.width()) + std::size_t(x - w.x0);
+                    next.estimates[i] = done.estimates[i];
+                    AovSums* aovs = withAovs ? &(next.aovs[i] = done.aovs[i]) : nullptr;
+                    bool seen = false;
+                    const Color c = tracer.sample(x, y, passes, counters, seen, aovs);  // before add() reads `seen`
+                    if (!next.estimates[i].add(c, seen)) passNonFinite[std::size_t(omp_get_thread_num())].add(x, y);
+                    writePixel(next, i, x, y, image);
                 });
             },
             1, nullptr);
         if (!whole) break;
-        addPass(pass, estimates, image, nonFinite);
+        std::swap(done, next);
+        for (const NonFiniteSamples& n : passNonFinite) nonFinite += n;
         if (watch.blockDone) watch.blockDone(image, w);
+    }
+    if (passes < settings.pixelSamples) {  // the last pass was cut short: back to the whole ones
+        std::size_t i = 0;
+        for (int y = w.y0; y < w.y1; ++y)
+            for (int x = w.x0; x < w.x1; ++x, ++i) writePixel(done, i, x, y, image);
     }
     loop.finish(scene, passes, stats);
     stats.counters.nonFinite += nonFinite;

@@ -1,5 +1,6 @@
 #include "render/texture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -73,6 +74,12 @@ Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s,
 
 Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
     return m.emissionTexture ? m.emission * textureColor(scene, *m.emissionTexture, s, images) : m.emission;
+}
+
+float transmissionAt(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
+    const float weight = m.transmission.weight;
+    if (!m.transmissionTexture || !(weight > 0)) return weight;
+    return std::clamp(weight * textureData(scene, *m.transmissionTexture, s, images).r, 0.0f, 1.0f);
 }
 
 float glossySpread(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {

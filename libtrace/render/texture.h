@@ -67,6 +67,9 @@ Color textureData(const Scene& scene, std::uint32_t index, const SurfacePoint& s
 // emits there (its emission times its emission texture).
 Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
 Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
+// The share of the light the material lets through at s: Transmission::weight times the red
+// channel of its transmission texture (read as data), if it has one.
+float transmissionAt(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
 // The sigma of the material's glossy lobe at the surface point, for its reflection and, on glass,
 // its transmission: Material::spread; with a metallic-roughness texture, (roughness times the
 // texture's green)^2, the GGX alpha that spread is made from (import/phong_from_pbr.h).

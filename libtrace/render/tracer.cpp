@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "render/light_sample.h"
 #include "render/normal_map.h"
@@ -44,9 +45,10 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
 
 Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
     const int n = settings_.pixelSamples;
-    const RenderCounters before = counters;
     PixelEstimate estimate;
+    AovSums aovSums;
     for (int i = 0; i < n; ++i) {
+        const std::optional<RenderCounters> before = aovs ? std::optional(counters) : std::nullopt;
         SampleRng rng{std::uint32_t(x), std::uint32_t(y), std::uint32_t(i), settings_.seed};
         Real sx = Real(0.5), sy = Real(0.5);
         if (n > 1) jitteredGridSample(i, n, rng, sx, sy);
@@ -61,51 +63,17 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
                 filtered_ ? camera_.differentialAt(Real(x) + sx, Real(y) + sy, ray, differentialScale_)
                           : RayDifferential{};
             const SurfacePoint surface = shadedSurfaceAt(scene_, ray, hit, images_, differential);
-            if (aovs) addHit(*aovs, surface, hit, i == 0);
+            if (aovs)
+                aovSums.addHit(scene_, surface, hit,
+                               surfaceColor(scene_, scene_.materialOf(hit.prim), surface, images_));
             sample = shade(ray, hit, surface, 0, false, rng, counters, differential.radiusAt(hit.t));
         }
         if (!estimate.add(sample, seen)) counters.nonFinite.add(x, y);  // counts as black, and the tool says so
+        if (aovs) aovSums.finishSample(*before, counters);
     }
     coverage = estimate.coverage();
-    if (aovs) {
-        average(*aovs, n, estimate.hits, before, counters);
-        aovs->variance = estimate.varianceOfMean();
-    }
+    if (aovs) *aovs = aovSums.mean(estimate.varianceOfMean());
     return estimate.mean();
-}
-
-// Sums what a camera ray that hit shows into the pixel's AOVs; average() divides. N and the
-// albedo are what shade() lights with: the shading normal and the colour with its vertex
-// colour and texture; Ng is the primitive's own normal, not turned to the ray.
-void Tracer::addHit(PixelAovs& a, const SurfacePoint& s, const Hit& hit, bool first) const {
-    const Vec3 ng = scene_.primitives.normal(hit.prim, s.point);
-    for (int c = 0; c < 3; ++c) {
-        a.p[c] += float(s.point[c]);
-        a.n[c] += float(s.shadingNormal[c]);
-        a.ng[c] += float(ng[c]);
-    }
-    a.z += float(hit.t);
-    a.albedo += surfaceColor(scene_, scene_.materialOf(hit.prim), s, images_);
-    if (!first) return;
-    a.material = scene_.primitives.material(hit.prim);
-    a.primitive = hit.prim;
-}
-
-void Tracer::average(PixelAovs& a, int samples, int hits, const RenderCounters& before, const RenderCounters& after) {
-    const float perHit = hits > 0 ? 1.0f / float(hits) : 0.0f;
-    for (int c = 0; c < 3; ++c) {
-        a.p[c] *= perHit;
-        a.n[c] *= perHit;
-        a.ng[c] *= perHit;
-    }
-    a.albedo *= perHit;
-    a.z = hits > 0 ? a.z * perHit : kInfinity;
-    const float perSample = 1.0f / float(samples);
-    a.steps = float(after.camera.traversalSteps - before.camera.traversalSteps) * perSample;
-    a.tests = float(after.camera.intersectionTests - before.camera.intersectionTests) * perSample;
-    const RayCounters all = after.total(), allBefore = before.total();
-    a.allSteps = float(all.traversalSteps - allBefore.traversalSteps) * perSample;
-    a.allTests = float(all.intersectionTests - allBefore.intersectionTests) * perSample;
 }
 
 Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
@@ -137,10 +105,11 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     // transmitted ray too, Fresnel's reflected share of it going to the mirror ray.
     float mirrorWeight = m.reflection;
     if (m.transmission.passesLight() && depth < settings_.reflectionDepth) {
+        const float weight = transmissionAt(scene_, m, s, images_);
         const RefractionSplit split =
             splitAt(m.transmission, ray.direction, s.shadingNormal, s.geometricNormal, s.frontFace);
-        mirrorWeight += m.transmission.weight * split.reflected;
-        c += transmitted(s, m, split, depth, inBundle, rng, counters, cone);
+        mirrorWeight += weight * split.reflected;
+        c += transmitted(s, m, weight, split, depth, inBundle, rng, counters, cone);
     }
     if (mirrorWeight > 0 && depth < settings_.reflectionDepth)
         c += reflection(s, ray.direction, m, depth, inBundle, rng, counters, cone) * mirrorWeight;
@@ -238,14 +207,14 @@ Color Tracer::lobe(const Ray& axis, const Vec3& side, float sigma, int depth, bo
 
 // The transmitted ray leaves from the far side of the surface, one epsilon through it; a rough
 // surface spreads it as a glossy one does its reflection.
-Color Tracer::transmitted(const SurfacePoint& s, const Material& m, const RefractionSplit& split, int depth,
-                          bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const {
+Color Tracer::transmitted(const SurfacePoint& s, const Material& m, float weight, const RefractionSplit& split,
+                          int depth, bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const {
     if (split.reflected >= 1) return {};  // total internal reflection
     const Transmission& t = m.transmission;
     const Ray through{s.point - s.geometricNormal * epsilon_, split.direction};
     const float sigma = t.thin ? 0 : glossySpread(scene_, m, s, images_);
     return lobe(through, -s.geometricNormal, sigma, depth, inBundle, rng, counters, cone) * t.color *
-           (t.weight * (1 - split.reflected));
+           (weight * (1 - split.reflected));
 }
 
 }  // namespace rt

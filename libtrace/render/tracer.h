@@ -47,9 +47,6 @@ public:
     Real epsilon() const { return epsilon_; }
 
 private:
-    void addHit(PixelAovs& aovs, const SurfacePoint& s, const Hit& hit, bool first) const;
-    static void average(PixelAovs& aovs, int samples, int hits, const RenderCounters& before,
-                        const RenderCounters& after);
     // The colour at `s`, the surface of `hit` (surfaceAt); `cone`: the radius of the ray's
     // footprint there, which the reflected and transmitted rays widen from.
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
@@ -67,10 +64,11 @@ private:
                RenderCounters& counters, Real cone) const;
     // What a shadow ray of unit direction lets through over `distance`: black when blocked.
     Color transmittance(const Ray& ray, Real distance, RenderCounters& counters) const;
-    // The colour the transmitted ray of `split` brings through material m, weighted
-    // (render/refraction.h); a rough glass spreads it as a glossy surface its reflection (lobe).
-    Color transmitted(const SurfacePoint& s, const Material& m, const RefractionSplit& split, int depth, bool inBundle,
-                      SampleRng& rng, RenderCounters& counters, Real cone) const;
+    // The colour the transmitted ray of `split` brings through material m, whose transmission is
+    // `weight` there (transmissionAt), weighted (render/refraction.h); a rough glass spreads it as
+    // a glossy surface its reflection (lobe).
+    Color transmitted(const SurfacePoint& s, const Material& m, float weight, const RefractionSplit& split, int depth,
+                      bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const;
     // The differential of a ray leaving a surface along `d` where the footprint's radius is
     // `cone`: a cone widening by the pixel angle plus `widen` radians per unit distance.
     RayDifferential secondary(const Vec3& d, Real cone, float widen) const;

@@ -70,6 +70,8 @@ struct Material {
     std::optional<MetallicRoughnessFactors> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
+    // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
+    std::optional<std::uint32_t> transmissionTexture{};
     // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times
     // alphaTexture's alpha at the hit, is below alphaCutoff, rays pass through the surface.
     // An alpha texture that is the colour texture gives its alpha channel (1 without one); any
@@ -106,6 +108,14 @@ struct Model {
     std::size_t sphereCount() const { return sphereData.size() / 4; }
 };
 
+// rt extension: the path tracer's sky as an equirectangular image (render/environment_light.h,
+// <environment> in docs/scene-format.md).
+struct Environment {
+    std::uint32_t texture = 0;  // an image texture
+    float intensity = 1;        // scales its radiance
+    float rotation = 0;         // degrees about +y, counter-clockwise seen from above
+};
+
 struct Instance {
     std::uint32_t model = 0;
     std::uint32_t material = 0;
@@ -122,8 +132,8 @@ struct Scene {
     std::vector<Instance> instances;
     Primitives looseObjects;  // spheres, triangles and quads placed directly, in world space
     std::vector<Light> lights;
-    // rt extension: the texture the path tracer's sky is (render/environment_light.h); none: the background colour
-    std::optional<std::uint32_t> environment{};
+    // rt extension: the path tracer's sky; none: the background colour
+    std::optional<Environment> environment{};
 
     Primitives primitives;              // everything, in world space: looseObjects, then each instance
     std::size_t droppedDegenerate = 0;  // by the loader and by flatten()

@@ -60,6 +60,7 @@ private:
     static void once(const XmlElement& e, bool& seen);
     void readList(const XmlElement& list);
     void readBackground(const XmlElement& e, bool& seen);
+    void readEnvironment(const XmlElement& e, bool& seen);
     void readCamera(const XmlElement& e, bool& seen);
     Vec3 readPoint(pugi::xml_node node) const;
     void readMaterial(const XmlElement& e);
@@ -67,6 +68,8 @@ private:
     void readCutout(const XmlElement& e, std::uint32_t index, Material& m);
     void readTexture(const XmlElement& e);
     void resolveTextures();
+    struct TextureUse;
+    std::uint32_t textureNamed(const TextureUse& use) const;
     void readModel(const XmlElement& e);
     Model readModelData(const XmlElement& e, const std::string& name) const;
     std::vector<std::uint8_t> inlineData(const XmlElement& e, const std::string& what) const;
@@ -103,6 +106,7 @@ private:
         pugi::xml_node node;
     };
     std::vector<TextureUse> textureUses_;
+    std::optional<TextureUse> environmentTexture_;  // <environment>'s (no material, no slot)
     std::size_t dropped_ = 0;
 };
 
@@ -112,13 +116,16 @@ Scene SceneBuilder::build() {
     for (const pugi::xml_node& n : file_.document().children())
         if (n != root) file_.failAt(n, "the file must hold one <scene> element and nothing else");
     const XmlElement scene(file_, root, {});
-    scene.requireOnlyChildren({"background", "camera", "materials", "textures", "models", "objects", "lights"});
-    bool hasBackground = false, hasCamera = false;
+    scene.requireOnlyChildren(
+        {"background", "environment", "camera", "materials", "textures", "models", "objects", "lights"});
+    bool hasBackground = false, hasCamera = false, hasEnvironment = false;
     std::vector<pugi::xml_node> objects;
     for (const pugi::xml_node& section : root.children()) {
         const std::string_view tag = section.name();
         if (tag == "background") {
             readBackground(XmlElement(file_, section, {"r", "g", "b"}), hasBackground);
+        } else if (tag == "environment") {
+            readEnvironment(XmlElement(file_, section, {"texture", "intensity", "rotation"}), hasEnvironment);
         } else if (tag == "camera") {
             readCamera(XmlElement(file_, section, {"name", "fov", "f", "zoom"}), hasCamera);
         } else if (tag == "objects") {
@@ -176,6 +183,7 @@ void SceneBuilder::readList(const XmlElement& list) {
                                      "normal_scale",
                                      "transmission",
                                      "transmission_color",
+                                     "transmission_texture",
                                      "ior",
                                      "thin",
                                      "attenuation_color",
@@ -197,6 +205,17 @@ void SceneBuilder::readBackground(const XmlElement& e, bool& seen) {
     once(e, seen);
     e.requireNoChildren();
     scene_.background = e.rgb(0);
+}
+
+// rt extension: the path tracer's sky, an image <texture> (resolved with the materials' ones).
+void SceneBuilder::readEnvironment(const XmlElement& e, bool& seen) {
+    once(e, seen);
+    e.requireNoChildren();
+    Environment environment;
+    environment.intensity = e.nonNegativeFloat("intensity", environment.intensity);
+    environment.rotation = float(e.number("rotation", environment.rotation));
+    scene_.environment = environment;
+    environmentTexture_ = TextureUse{0, nullptr, e.string("texture"), e.node()};
 }
 
 // Thesis 3.4.2: fov is the horizontal angle in degrees, f the focal distance in pixels;
@@ -273,6 +292,8 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
         textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
     if (const auto name = e.optionalString("metallic_roughness_texture"))
         textureUses_.push_back({index, &Material::metallicRoughnessTexture, *name, e.node()});
+    if (const auto name = e.optionalString("transmission_texture"))
+        textureUses_.push_back({index, &Material::transmissionTexture, *name, e.node()});
     readCutout(e, index, m);
     if (const auto name = e.optionalString("normal_texture"))
         textureUses_.push_back({index, &Material::normalTexture, *name, e.node()});
@@ -353,11 +374,17 @@ void SceneBuilder::readTexture(const XmlElement& e) {
 }
 
 void SceneBuilder::resolveTextures() {
-    for (const TextureUse& use : textureUses_) {
-        const auto it = textures_.find(use.name);
-        if (it == textures_.end()) file_.failAt(use.node, "unknown texture '" + use.name + "'");
-        scene_.materials[use.material].*use.slot = it->second.index;
-    }
+    for (const TextureUse& use : textureUses_) scene_.materials[use.material].*use.slot = textureNamed(use);
+    if (!environmentTexture_) return;
+    scene_.environment->texture = textureNamed(*environmentTexture_);
+    if (scene_.textures[scene_.environment->texture].kind != Texture::Kind::Image)
+        file_.failAt(environmentTexture_->node, "the environment's texture must be an image");
+}
+
+std::uint32_t SceneBuilder::textureNamed(const TextureUse& use) const {
+    const auto it = textures_.find(use.name);
+    if (it == textures_.end()) file_.failAt(use.node, "unknown texture '" + use.name + "'");
+    return it->second.index;
 }
 
 void SceneBuilder::readModel(const XmlElement& e) {

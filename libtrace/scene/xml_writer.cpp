@@ -207,6 +207,12 @@ void SceneXmlWriter::build(pugi::xml_document& doc) const {
     decl.append_attribute("version").set_value("1.0");
     pugi::xml_node root = doc.append_child("scene");
     setRgb(root.append_child("background"), scene_.background);
+    if (const std::optional<Environment>& sky = scene_.environment) {
+        pugi::xml_node node = root.append_child("environment");
+        node.append_attribute("texture").set_value(textureNames_.at(sky->texture).c_str());
+        if (sky->intensity != 1) setNumber(node, "intensity", sky->intensity);
+        if (sky->rotation != 0) setNumber(node, "rotation", sky->rotation);
+    }
     addCamera(root, scene_.camera, cameraNames_[0]);
     for (std::size_t i = 0; i < scene_.extraCameras.size(); ++i)
         addCamera(root, scene_.extraCameras[i], cameraNames_[i + 1]);
@@ -254,6 +260,8 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
                 .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
         if (m.alphaCutoff) setNumber(node, "alpha_cutoff", *m.alphaCutoff);
         if (m.alpha != 1) setNumber(node, "alpha", m.alpha);
+        if (m.transmissionTexture)
+            node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmissionTexture).c_str());
         if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
         if (m.normalTexture)
             node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalTexture).c_str());

@@ -29,8 +29,27 @@ corner=$(oiiotool "$WORK/sky-lit.exr" --cut 1x1+0+0 --printstats | awk '/Avg:/ {
 [[ "$corner" == "0.250000 0.500000 1.000000" ]] || fail "the sky's corner is $corner"
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --environment "$WORK/none.exr"
 
+# <environment> in the scene (rt extension): the image relative to the scene, times its intensity;
+# --environment takes its place
+mkdir -p "$WORK/skyscene/skies"
+cp "$WORK/sky.exr" "$WORK/skyscene/skies/blue.exr"
+oiiotool --pattern constant:color=1,0,0 16x8 3 -d float -o "$WORK/red.exr"
+sed 's|<scene>|<scene><environment texture="sky" intensity="2"/><textures><texture name="sky" file="skies/blue.exr"/></textures>|' \
+    "$scene" >"$WORK/skyscene/scene.xml"
+corner_of() { oiiotool "$1" --cut 1x1+0+0 --printstats | awk '/Avg:/ {print $3, $4, $5; exit}'; }
+"$RT_RENDER" "$WORK/skyscene/scene.xml" "${opts[@]}" --alpha off -f "$WORK/named.exr"
+[[ "$(corner_of "$WORK/named.exr")" == "0.500000 1.000000 2.000000" ]] || fail "the named sky's corner: $(corner_of "$WORK/named.exr")"
+"$RT_RENDER" "$WORK/skyscene/scene.xml" "${opts[@]}" --alpha off --environment "$WORK/red.exr" -f "$WORK/over.exr"
+[[ "$(corner_of "$WORK/over.exr")" == "1.000000 0.000000 0.000000" ]] || fail "--environment did not replace it"
+
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator bidirectional
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --max-bounces -1
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --clamp nan
-expect_exit 2 "$RT_RENDER" "$scene" -q --integrator path --aov Z -f "$WORK/aov.exr"
+
+# every AOV with the path tracer
+"$RT_RENDER" "$scene" "${opts[@]}" --aov all -f "$WORK/aov.exr"
+channels=$(iinfo -v "$WORK/aov.exr" | grep "channel list")
+for c in Z N.X Ng.X P.X albedo.R id.material cost.allTests variance.R; do
+    [[ $channels == *"$c"* ]] || fail "no $c in $channels"
+done
 echo "render_path: ok"

@@ -314,7 +314,8 @@ TEST(ImportGltf, AlphaModesBecomeCutouts) {
 }
 
 // KHR_materials_transmission, _ior and _volume make glass tinted by the base colour; without a
-// volume (or of thickness 0) it is thin-walled; the transmitted share no longer scatters.
+// volume (or of thickness 0) it is thin-walled; the transmitted share no longer scatters; a
+// transmission texture is kept.
 TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
     TempDir dir;
     GltfFixture f;
@@ -326,7 +327,7 @@ TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
         R"( {"name": "sheet", "pbrMetallicRoughness": {"metallicFactor": 0},)"
         R"( "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0.5}}},)"
         R"( {"name": "paper", "pbrMetallicRoughness": {"metallicFactor": 0}, "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1,)"
-        R"( "transmissionTexture": {"index": 0}}}}])";
+        R"( "transmissionTexture": {"index": 0}}}}], "textures": [{"source": 0}], "images": [{"uri": "paper.png"}])";
     const std::string one = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
     const Material glass = importScene(dir.write("glass.gltf", one)).scene.materials.at(0);
     EXPECT_EQ(glass.transmission.weight, 1.0f);
@@ -345,7 +346,9 @@ TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
     EXPECT_FLOAT_EQ(sheet.diffuse, 0.45f);
     const std::string three = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 2)");
     const Material paper = importScene(dir.write("paper.gltf", three)).scene.materials.at(0);
-    EXPECT_EQ(paper.transmission.weight, 0.5f) << "a transmission texture is taken as mid-grey";
+    EXPECT_EQ(paper.transmission.weight, 1.0f) << "the renderers follow the texture per hit";
+    ASSERT_TRUE(paper.transmissionTexture);
+    EXPECT_FLOAT_EQ(paper.diffuse, 0.45f) << "the Phong coefficients take a transmission texture as mid-grey";
     EXPECT_THROW(importScene(dir.write(
                      "bad.gltf", replaceOnce(one, R"("transmissionFactor": 1)", R"("transmissionFactor": "all")"))),
                  InputError);

@@ -3,12 +3,14 @@
 #include "render/aov.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "accel/build.h"
 #include "accel/naive.h"
 #include "core/error.h"
 #include "inspect/ray_statistics.h"
 #include "render/camera_rays.h"
+#include "render/path_tracer.h"
 #include "render/renderer.h"
 #include "render_test_scenes.h"
 #include "test_util.h"
@@ -161,4 +163,70 @@ TEST(RenderAov, ListsByName) {
     EXPECT_EQ(parseAovList("cost,Z"), (std::vector<Aov>{Aov::Z, Aov::Cost}));
     EXPECT_EQ(parseAovList("all").size(), aovLayers().size());
     EXPECT_THROW(parseAovList("depth"), InputError);
+}
+
+// The path tracer's AOVs are its camera rays' hits, as the Whitted tracer's are: on the plane
+// at z = 5 the point lies on the plane at its distance, the normal faces the camera, the
+// albedo is the plane's colour, the cost of a camera ray two tests of the naive list (one path
+// a pixel, so that the distance is the point's).
+TEST(RenderAovPath, PlaneAtAKnownDistance) {
+    const Scene s = planeAtFive();
+    const NaiveAccelerator accel(s.primitives);
+    RenderSettings settings = test::picture(8, 6);
+    settings.integrator = Integrator::Path;
+    const Framebuffer image = renderAovs(s, accel, settings);
+    for (const PixelAovs& a : image.aovs()) {
+        EXPECT_NEAR(a.p[2], 5, 1e-5);
+        EXPECT_NEAR(a.z, std::sqrt(a.p[0] * a.p[0] + a.p[1] * a.p[1] + 25), 1e-4);
+        EXPECT_EQ(a.n[2], -1);
+        EXPECT_EQ(std::abs(a.ng[2]), 1);
+        EXPECT_EQ(a.albedo, Color(0.2f, 0.4f, 0.6f));
+        EXPECT_EQ(a.material, 0u);
+        EXPECT_LT(a.primitive, 2u);
+        EXPECT_EQ(a.tests, 2);
+        EXPECT_GT(a.allTests, a.tests) << "next-event shadow rays and bounces";
+    }
+}
+
+namespace {
+
+bool sameBits(const PixelAovs& a, const PixelAovs& b) { return std::memcmp(&a, &b, sizeof(PixelAovs)) == 0; }
+
+}  // namespace
+
+// Every layer has the same bits for one thread or two, in a region, and as PathTracer::pixel
+// takes the pixel's samples in one loop (the renderer takes one per pass).
+TEST(RenderAovPath, SameBitsForAnyThreadCountRegionAndPasses) {
+    const Scene s = test::spheresOnFloor();
+    const std::unique_ptr<Accelerator> kd = buildAccelerator(s.primitives, AccelSettings{});
+    RenderSettings one = test::picture(40, 30);
+    one.integrator = Integrator::Path;
+    one.pixelSamples = 3;
+    one.threads = 1;
+    const Framebuffer whole = renderAovs(s, *kd, one);
+    RenderSettings two = one;
+    two.threads = 2;
+    const Framebuffer parallel = renderAovs(s, *kd, two);
+    two.region = PixelWindow{5, 3, 37, 29};
+    const Framebuffer region = renderAovs(s, *kd, two);
+    RenderSettings withAovs = one;
+    withAovs.aovs = parseAovList("all");
+    const PathTracer tracer(s, *kd, withAovs);
+    int hits = 0;
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) {
+            const std::size_t i = std::size_t(y * 40 + x);
+            ASSERT_TRUE(sameBits(whole.aovs()[i], parallel.aovs()[i])) << x << "," << y;
+            if (x >= 5 && x < 37 && y >= 3 && y < 29) {
+                ASSERT_TRUE(sameBits(whole.aovs()[i], region.aovs()[std::size_t((y - 3) * 32 + x - 5)]))
+                    << x << "," << y;
+            }
+            RenderCounters counters;
+            float coverage;
+            PixelAovs inOneLoop;
+            tracer.pixel(x, y, counters, coverage, &inOneLoop);
+            ASSERT_TRUE(sameBits(whole.aovs()[i], inOneLoop)) << x << "," << y;
+            hits += whole.aovs()[i].primitive != kNoId;
+        }
+    EXPECT_GT(hits, 100);
 }

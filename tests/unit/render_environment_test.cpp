@@ -32,7 +32,7 @@ private:
 
 Scene withEnvironmentTexture(Scene s) {
     s.textures.push_back({.name = "environment", .file = "sky.exr"});
-    s.environment = std::uint32_t(s.textures.size() - 1);
+    s.environment = Environment{.texture = std::uint32_t(s.textures.size() - 1)};
     return s;
 }
 
@@ -111,4 +111,29 @@ TEST(EnvironmentLight, ImportanceSamplingAgreesWithUniformSamplingWithLessVarian
     const double exact = (1000 - 0.1) * sun.y * kPi * std::pow(std::sin(sunRadius), 2) + 0.1 * kPi;
     EXPECT_NEAR(mean[0], exact, 0.005 * exact);
     EXPECT_LT(variance[0], 0.01 * variance[1]);
+}
+
+// <environment intensity rotation>: turned 90 degrees about +y, the image's centre (-z) lights
+// from -x, times the intensity; its samples go where the turned sun is, with the density pdf() gives.
+TEST(EnvironmentLight, RotationTurnsTheImageAndIntensityScalesIt) {
+    Scene scene = withEnvironmentTexture(Scene{});
+    scene.environment->intensity = 3;
+    scene.environment->rotation = 90;
+    const Vec3 imageSun{0, 0, -1};  // the image's centre
+    const FunctionTextures texture(scene, [imageSun](float s, float t) {
+        const bool inSun = dot(equirectangularDirection(s, t), imageSun) > Real(0.99);
+        return inSun ? Color{100, 100, 100} : Color{0.5f, 0.25f, 1};
+    });
+    const EnvironmentLight light(scene, &texture);
+    EXPECT_EQ(light.radiance({-1, 0, 0}), (Color{300, 300, 300}));
+    EXPECT_EQ(light.radiance({0, 0, -1}), (Color{1.5f, 0.75f, 3}));
+    int towardsSun = 0;
+    for (int i = 0; i < 256; ++i) {
+        SobolSampler sampler(3, 4, std::uint32_t(i), 0);
+        const auto [u1, u2] = sampler.next2D();
+        const EnvironmentSample sample = light.sample(u1, u2);
+        towardsSun += sample.direction.x < Real(-0.98);
+        EXPECT_NEAR(light.pdf(sample.direction), sample.pdf, 1e-3 * sample.pdf);
+    }
+    EXPECT_GT(towardsSun, 128) << "the sun holds 60 % of the light";
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "accel/naive.h"
+#include "render/camera_rays.h"
 #include "render/dielectric_bsdf.h"
 #include "render/refraction.h"
 #include "render/renderer.h"
@@ -138,4 +139,48 @@ TEST(PathTracerGlass, SameBitsForAnyThreadCount) {
     RenderSettings two = one;
     two.threads = 2;
     EXPECT_EQ(test::renderPath(s, one).pixels(), test::renderPath(s, two).pixels());
+}
+
+// KHR_materials_transmission's transmissionTexture: a smooth black sheet of glass of ior 1 (light goes
+// straight through, nothing is reflected) with transmission 0.5 times a checker's red channel, in
+// front of a white sky. Where the checker is 1 both integrators show half the sky, where it is 0
+// nothing: the pixels measured, away from the cells' edges.
+TEST(PathTracerGlass, TransmissionTextureScalesTheTransmissionPerHit) {
+    Scene s;
+    s.background = {1, 1, 1};
+    s.camera.fovDegrees = 20;  // the sheet at z = 5.5 shows about two cells across
+    s.textures.push_back({.name = "checker", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 1, 1}});
+    Material sheet = test::pbr({0, 0, 0}, 0, 0, 0);
+    sheet.transmission = {.weight = 0.5f, .ior = 1, .thin = true};
+    sheet.transmissionTexture = 0;
+    const auto m = test::addMaterial(s, sheet);
+    test::addQuad(s, {-100, -100, 5.5}, {100, -100, 5.5}, {100, 100, 5.5}, {-100, 100, 5.5}, m);
+    s.flatten();
+    const int size = 16;
+    const CameraRays camera(s.camera, size, size);
+    // the checker's red where the ray through (x, y) meets the sheet; -1 near a cell's edge
+    const auto checkerRed = [&](Real x, Real y) {
+        const Vec3 d = camera.at(x, y).direction;
+        const Vec3 p = d * (Real(5.5) / d.z);
+        if (std::abs(p.x - std::round(p.x)) < 0.1 || std::abs(p.y - std::round(p.y)) < 0.1) return -1;
+        return (int(std::floor(p.x)) + int(std::floor(p.y)) + 5) % 2 == 0 ? 1 : 0;
+    };
+    for (const Integrator integrator : {Integrator::Whitted, Integrator::Path}) {
+        RenderSettings settings = test::pathPicture(size, 64);
+        settings.integrator = integrator;
+        settings.pixelSamples = integrator == Integrator::Path ? 64 : 1;
+        const Framebuffer image = test::renderPath(s, settings);
+        int clear = 0, opaque = 0;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const int red = checkerRed(x, y);  // the pixel's corner and its far corner agree
+                if (red < 0 || red != checkerRed(x + 1, y + 1)) continue;
+                const float want = 0.5f * float(red);
+                EXPECT_NEAR(image.at(x, y).g, want, 0.02)
+                    << x << "," << y << (red ? " clear" : " opaque") << " path " << (integrator == Integrator::Path);
+                (red ? clear : opaque) += 1;
+            }
+        EXPECT_GT(clear, 10);
+        EXPECT_GT(opaque, 10);
+    }
 }

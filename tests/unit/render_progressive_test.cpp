@@ -85,6 +85,7 @@ TEST(RenderProgressive, AStoppedPassIsDroppedWhole) {
     const NaiveAccelerator accel(s.primitives);
     RenderSettings settings = pathPicture(70, 40, 6);  // three blocks across, two down
     settings.threads = 1;
+    settings.aovs = parseAovList("all");
     std::atomic<bool> stop{false};
     const std::uint64_t pixels = 70 * 40;
     RenderStats stats;
@@ -93,7 +94,11 @@ TEST(RenderProgressive, AStoppedPassIsDroppedWhole) {
         nullptr, RenderWatch{{}, &stop});
     EXPECT_EQ(stats.samplesPerPixel, 2);
     settings.pixelSamples = 2;
-    expectSameBits(stopped, test::renderNaive(s, settings).image);
+    const Framebuffer twoPasses = test::renderNaive(s, settings).image;
+    expectSameBits(stopped, twoPasses);
+    ASSERT_EQ(stopped.aovs().size(), twoPasses.aovs().size());
+    EXPECT_EQ(std::memcmp(stopped.aovs().data(), twoPasses.aovs().data(), sizeof(PixelAovs) * stopped.aovs().size()), 0)
+        << "the AOVs of the third pass are dropped too";
 }
 
 // A limit that has passed before the first pixel: nothing whole, in either integrator.
@@ -125,7 +130,13 @@ TEST(RenderProgressive, PassesAreCountedInTheMemoryEstimate) {
     const std::uint64_t path = estimateRenderMemory(settings, 0, true).image;
     settings.integrator = Integrator::Whitted;
     EXPECT_EQ(path - estimateRenderMemory(settings, 0, true).image, 100u * 100u * kPathPassBytesPerPixel);
-    EXPECT_GE(kPathPassBytesPerPixel, sizeof(PixelEstimate) + sizeof(Color) + sizeof(bool));
+    EXPECT_GE(kPathPassBytesPerPixel, 2 * sizeof(PixelEstimate));
+    EXPECT_GE(kPathAovPassBytesPerPixel, 2 * sizeof(AovSums));
+    settings.aovs = {Aov::Variance};
+    const std::uint64_t withAovs = estimateRenderMemory(settings, 0, true).image;
+    settings.integrator = Integrator::Path;
+    EXPECT_EQ(estimateRenderMemory(settings, 0, true).image - withAovs,
+              100u * 100u * (kPathPassBytesPerPixel + kPathAovPassBytesPerPixel));
 }
 
 TEST(PixelEstimate, WelfordGivesTheSampleVarianceOverN) {
@@ -169,14 +180,6 @@ TEST(RenderVariance, FallsAsOneOverTheSamples) {
     // The AOV does not change the colour.
     settings.aovs.clear();
     expectSameBits(many.image, test::renderNaive(s, settings).image);
-}
-
-TEST(RenderVariance, OnlyVarianceWithThePathTracer) {
-    RenderSettings settings = pathPicture(4, 4, 1);
-    settings.aovs = {Aov::Variance};
-    EXPECT_NO_THROW(validate(settings));
-    settings.aovs = {Aov::Z, Aov::Variance};
-    EXPECT_THROW(validate(settings), InputError);
 }
 
 // The estimate's counts come from the probe alone (no time cap here): they grow with the

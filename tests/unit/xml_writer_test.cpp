@@ -399,3 +399,40 @@ TEST(XmlLoader, BadTransmissionValuesAreErrors) {
     EXPECT_EQ(error("attenuation_distance=\"-1\""),
               "s.xml:1: <material> attribute 'attenuation_distance' must be positive");
 }
+
+// The path tracer's sky (rt extension): an image <texture> named by <environment>, with its
+// intensity and rotation, survives a save and a load; a scene without one writes none.
+TEST(XmlWriter, EnvironmentRoundTrips) {
+    const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
+      <environment texture="sky" intensity="2.5" rotation="-90"/>
+      <textures><texture name="checks" type="checker"/><texture name="sky" file="skies/sky.exr"/></textures>
+      </scene>)";
+    const Scene first = loadSceneXmlFromString(xml, "<stdin>", "/scenes");
+    ASSERT_TRUE(first.environment);
+    EXPECT_EQ(first.environment->texture, 1u);
+    EXPECT_EQ(first.textures[1].path, "/scenes/skies/sky.exr") << "relative to the scene";
+    const Scene back = loadSceneXmlFromString(savedToStdout(first), "<stdin>", "/scenes");
+    ASSERT_TRUE(back.environment);
+    EXPECT_EQ(back.textures.at(back.environment->texture).path, "/scenes/skies/sky.exr");
+    EXPECT_EQ(back.environment->intensity, 2.5f);
+    EXPECT_EQ(back.environment->rotation, -90.0f);
+    Scene none;
+    EXPECT_EQ(savedToStdout(none).find("environment"), std::string::npos);
+}
+
+TEST(XmlLoader, BadEnvironmentsAreErrors) {
+    const auto error = [&](const std::string& body) {
+        return inputErrorOf([&] {
+            loadSceneXmlFromString("<scene><camera><origin z=\"-5\"/><destination/></camera>\n" + body + "</scene>",
+                                   "s.xml", ".");
+        });
+    };
+    EXPECT_EQ(error("<environment texture=\"sky\"/>"), "s.xml:2: unknown texture 'sky'");
+    EXPECT_EQ(error("<environment texture=\"c\"/><textures><texture name=\"c\" type=\"checker\"/></textures>"),
+              "s.xml:2: the environment's texture must be an image");
+    EXPECT_EQ(error("<environment texture=\"s\" intensity=\"-1\"/>"),
+              "s.xml:2: <environment> attribute 'intensity' must not be negative");
+    EXPECT_EQ(error("<environment/>"), "s.xml:2: <environment> needs attribute 'texture'");
+    EXPECT_EQ(error("<environment texture=\"a\"/><environment texture=\"a\"/>"),
+              "s.xml:2: a second <environment> in <scene>");
+}
