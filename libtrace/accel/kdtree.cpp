@@ -68,7 +68,10 @@ FloatBox toFloatBox(const Aabb& b, const Aabb& voxel) {
 class KdSplitter {
 public:
     KdSplitter(const Primitives& prims, const KdSettings& settings)
-        : prims_(prims), settings_(settings), maxDepth_(kdMaxDepth(settings, prims.size())) {}
+        : prims_(prims),
+          settings_(settings),
+          maxDepth_(kdMaxDepth(settings, prims.size())),
+          rootArea_(roundOutToFloat(prims.bounds()).surfaceArea()) {}
 
     std::optional<Partition<KdNode>> operator()(KdNode& node) const {
         const std::size_t n = node.primitives.size();
@@ -77,12 +80,17 @@ public:
         if (sah.degenerate()) return std::nullopt;
         const SahSplit best = findSplit(node, sah);
         if (best.axis < 0 || best.cost >= sah.leafCost(n)) return std::nullopt;  // no plane beats the leaf
+        if (gain(node, sah.leafCost(n) - best.cost) < settings_.minimumGain) return std::nullopt;
         Partition<KdNode> parts = partition(node, best);
         if (!shareBudget(node.referenceBudget, parts.below, parts.above)) return std::nullopt;
         return parts;
     }
 
 private:
+    // What splitting `node` saves a ray entering the root, by the SAH, when the split costs
+    // `saving` less than the leaf (the node's area is not 0, so neither is the root's).
+    double gain(const KdNode& node, double saving) const { return saving * node.voxel.surfaceArea() / rootArea_; }
+
     SahSplit findSplit(KdNode& node, const SahModel& sah) const {
         const std::size_t n = node.primitives.size();
         if (settings_.splitMethod == KdSplitMethod::Sample)
@@ -204,6 +212,7 @@ private:
     const Primitives& prims_;
     const KdSettings& settings_;
     int maxDepth_;
+    double rootArea_;
 };
 
 // C_I is a triangle's cost, and the SAH uses the mean over the scene's primitives of each
@@ -224,7 +233,7 @@ KdNode makeRoot(const Primitives& prims) {
     root.referenceBudget = kReferenceBudgetPerPrimitive * n;
     root.primitives.resize(n);
     root.boxes.resize(n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kTaskPrimitives)
     for (std::int64_t id = 0; id < std::int64_t(n); ++id) {
         root.primitives[id] = std::uint32_t(id);
         root.boxes[id] = toFloatBox(prims.bounds(std::uint32_t(id)), root.voxel);

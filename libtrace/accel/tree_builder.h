@@ -62,11 +62,14 @@ void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split, Par
     out.append(above);
 }
 
+// A tree too small for a task is built without starting the threads: on a busy machine,
+// waiting for them to be scheduled took longer than a 1,000-primitive build (tens of ms).
 template <typename BuildNode, typename SplitFunction>
 FlatTree buildFlatTree(BuildNode root, const SplitFunction& split) {
     FlatTree tree;
     ParallelErrors errors;
-#pragma omp parallel
+    const bool parallel = root.primitives.size() >= kTaskPrimitives;
+#pragma omp parallel if (parallel)
 #pragma omp single
     errors.capture([&] { buildSubtree(std::move(root), tree, split, errors); });
     errors.rethrowIfAny();
