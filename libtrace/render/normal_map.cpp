@@ -50,6 +50,7 @@ SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit,
     if (images && differential != RayDifferential{})
         setUvDerivatives(scene.primitives, ray.direction, hit, differential, s);
     applyNormalMap(scene, scene.materialOf(hit.prim), hit, images, s);
+    s.shadingNormal = keepReflectionAbove(s.shadingNormal, s.geometricNormal, -ray.direction);
     return s;
 }
 

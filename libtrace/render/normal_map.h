@@ -20,7 +20,9 @@ void applyNormalMap(const Scene& scene, const Material& m, const Hit& hit, const
                     SurfacePoint& s);
 
 // The surface at `hit` as shading sees it: surfaceAt with the texture coordinates' derivatives
-// for the ray's differential (none: zero, textures read unfiltered) and the material's normal map applied.
+// for the ray's differential (none: zero, textures read unfiltered) and the material's normal map applied,
+// the shading normal then kept from mirroring the ray into the surface (keepReflectionAbove): both
+// integrators shade with it.
 SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images,
                              const RayDifferential& differential = {});
 

@@ -26,8 +26,8 @@ Real powerHeuristic(Real pdf, Real otherPdf) {
 
 float maxComponent(const Color& c) { return std::max({c.r, c.g, c.b}); }
 
-// The frame of the shading normal, unless the viewer is below it (an interpolated normal can
-// face away from a grazing ray): then the geometric normal's.
+// The frame of the shading normal, unless the viewer is below it (after keepReflectionAbove only
+// a shading normal turned below the surface can be): then the geometric normal's.
 ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
     return ShadingFrame(dot(toViewer, s.shadingNormal) > 0 ? s.shadingNormal : s.geometricNormal);
 }

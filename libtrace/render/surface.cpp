@@ -74,4 +74,22 @@ Vec3 offsetToSmoothSurface(const Vec3& p, const Triangle& tri, const Vec3 (&norm
     return moved;
 }
 
+Vec3 keepReflectionAbove(const Vec3& n, const Vec3& ng, const Vec3& toViewer) {
+    const Real iz = dot(toViewer, ng);
+    const Real least = std::min(Real(0.9) * iz, Real(0.01));
+    if (2 * dot(n, toViewer) * dot(n, ng) - iz >= least) return n;  // the mirror direction's height
+    // In the plane of ng and n, n' = x sin(a) + ng cos(a) mirrors the view to the height
+    // ix sin(2a) + iz cos(2a) = r cos(2a - phi), ix the viewer's component along x and
+    // phi = atan2(ix, iz): the largest angle a (the least turn back from n) where it is `least`.
+    const Vec3 across = n - ng * dot(n, ng);
+    const Real width = length(across);
+    if (!(width > 0)) return ng;
+    const Vec3 x = across / width;
+    const Real ix = dot(toViewer, x);
+    const Real r = std::hypot(ix, iz);
+    if (!(r > 0)) return ng;
+    const Real a = (std::atan2(ix, iz) + std::acos(std::min(least / r, Real(1)))) / 2;
+    return x * std::sin(a) + ng * std::cos(a);
+}
+
 }  // namespace rt

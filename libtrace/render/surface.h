@@ -39,4 +39,13 @@ SurfacePoint surfaceAt(const Primitives& primitives, const Ray& ray, const Hit& 
 // b1 and b2 are the weights of p1 and p2, as Hit::u and Hit::v.
 Vec3 offsetToSmoothSurface(const Vec3& p, const Triangle& tri, const Vec3 (&normals)[3], Real b1, Real b2);
 
+// The shading normal n turned towards the geometric normal ng (unit, on the viewer's side) just
+// enough that the mirror direction of `toViewer` about it leaves the surface, at least as steeply
+// as min(0.9 cos, 0.01) for the viewer's cos against ng; n itself when it does already, as a flat
+// surface's (n = ng) always does. A normal map's steep slopes otherwise mirror the view into the
+// surface, where a path finds nothing and a mirror shows black rings. The idea, the threshold and
+// the plane of the turn are Blender Cycles' (ensure_valid_reflection in its kernel); the angle of
+// the turn is solved in closed form here.
+Vec3 keepReflectionAbove(const Vec3& n, const Vec3& ng, const Vec3& toViewer);
+
 }  // namespace rt

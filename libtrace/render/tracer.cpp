@@ -177,7 +177,8 @@ Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material&
                          SampleRng& rng, RenderCounters& counters, Real cone) const {
     const Vec3 origin = s.point + s.geometricNormal * epsilon_;
     Vec3 r = mirror(dir, s.shadingNormal);
-    if (dot(r, s.geometricNormal) <= 0) r = mirror(r, s.geometricNormal);  // a shading normal can send it inside
+    // keepReflectionAbove keeps r out of the surface but for rounding at grazing incidence
+    if (dot(r, s.geometricNormal) <= 0) r = mirror(r, s.geometricNormal);
     return lobe({origin, r}, s.geometricNormal, glossySpread(scene_, m, s, images_), depth, inBundle, rng, counters,
                 cone);
 }

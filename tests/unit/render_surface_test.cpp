@@ -157,3 +157,53 @@ TEST(Surface, SmoothSphereMeshShadesLikeTheAnalyticSphere) {
     EXPECT_GT(compared, 3000);
     EXPECT_LE(worst, 2.0f / 255) << "over " << compared << " pixels";
 }
+
+namespace {
+
+// How far above the surface (along ng) the mirror direction of toViewer about n points.
+Real reflectionHeight(const Vec3& n, const Vec3& ng, const Vec3& toViewer) {
+    return dot(n * (2 * dot(n, toViewer)) - toViewer, ng);
+}
+
+Vec3 tiltedFromZ(Real degrees, Real towardsX = 1) {
+    const Real a = degrees * kPi / 180;
+    return {towardsX * std::sin(a), 0, std::cos(a)};
+}
+
+}  // namespace
+
+// Issue 18 (NormalTangentMirrorTest's black rings): a shading normal tilted so far that the view
+// mirrors into the surface is turned back towards the geometric normal just far enough that the
+// mirror direction clears it by min(0.9 cos, 0.01), in the plane of the two normals.
+TEST(Surface, AShadingNormalThatMirrorsTheViewInsideIsTurnedBackJustEnough) {
+    const Vec3 ng{0, 0, 1};
+    struct Case {
+        Vec3 n, toViewer;
+    };
+    // head-on under a 60-degree slope; 80 degrees off the normal under a slope of 10 away
+    // from the viewer; a normal map's texel below the surface
+    for (const Case& c : {Case{tiltedFromZ(60), ng}, Case{tiltedFromZ(10), tiltedFromZ(80, -1)},
+                          Case{normalize(Vec3{1, 0, -0.2}), tiltedFromZ(30)}}) {
+        ASSERT_LT(reflectionHeight(c.n, ng, c.toViewer), 0) << "the case sends the reflection inside";
+        const Vec3 bent = keepReflectionAbove(c.n, ng, c.toViewer);
+        const Real least = std::min(Real(0.9) * dot(c.toViewer, ng), Real(0.01));
+        EXPECT_NEAR(reflectionHeight(bent, ng, c.toViewer), least, 1e-5);
+        EXPECT_NEAR(length(bent), 1, 1e-5);
+        EXPECT_NEAR(bent.y, 0, 1e-6) << "in the plane of the two normals";
+        EXPECT_GT(bent.x, 0) << "turned towards ng, not past it";
+        EXPECT_GT(dot(bent, ng), dot(c.n, ng)) << "turned towards ng";
+        EXPECT_GT(dot(bent, c.toViewer), 0) << "the viewer is above the turned normal";
+    }
+}
+
+// Where the mirror direction already leaves the surface the shading normal stays as it is, bit
+// for bit: flat surfaces (the thesis's scenes, n = ng) at any angle, and gentle slopes.
+TEST(Surface, AShadingNormalThatMirrorsTheViewOutsideIsKept) {
+    const Vec3 ng{0, 0, 1};
+    for (const Real viewer : {0.0, 45.0, 89.0, 89.999})
+        EXPECT_EQ(keepReflectionAbove(ng, ng, tiltedFromZ(viewer)), ng) << viewer << " degrees";
+    for (const Vec3& n : {tiltedFromZ(30), tiltedFromZ(60), tiltedFromZ(10, -1)}) {
+        ASSERT_GT(reflectionHeight(n, ng, tiltedFromZ(50)), 0.01) << "the case's reflection leaves the surface";
+        EXPECT_EQ(keepReflectionAbove(n, ng, tiltedFromZ(50)), n);
+    }
+}
