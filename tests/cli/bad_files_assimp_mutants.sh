@@ -8,7 +8,7 @@ need_shared_models
 MUTANTS="$RT_SHARED_DIR/models/hostile/assimp-mutants"
 [ -d "$MUTANTS" ] || fail "no $MUTANTS"
 sanitized=false
-ldd "$RT_CONVERT" | grep -q 'lib[at]san' && sanitized=true
+{ built_with "$RT_CONVERT" asan || built_with "$RT_CONVERT" tsan; } && sanitized=true
 
 # check TOOL FILE command...: exit 2, one error line naming FILE, in time and memory.
 check() {

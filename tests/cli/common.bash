@@ -13,6 +13,10 @@ expect_exit() {
     [ "$got" = "$want" ] || { cat "$WORK/stderr" >&2; fail "'$*' exited $got, expected $want"; }
 }
 
+# built_with BINARY SANITIZER: whether BINARY links the sanitizer's runtime (asan, tsan). The whole
+# ldd output is read first: `ldd | grep -q` fails at random under pipefail when grep stops reading early.
+built_with() { [[ "$(ldd "$1")" == *"lib$2"* ]]; }
+
 # need_shared_models: for a test that reads $RT_SHARED_DIR/models, which the repository does not
 # hold. Without them the test skips (exit 77, SKIP_RETURN_CODE in tests/CMakeLists.txt), or fails
 # when RT_REQUIRE_SHARED_MODELS=1 (CI, where they are present).

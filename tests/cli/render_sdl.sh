@@ -6,7 +6,7 @@ scene="$RT_SOURCE_DIR/scenes/demo.xml"
 # Under ASan (the asan preset), SDL's video driver leaks from libraries it loads and unloads
 # again (240 bytes, stacks ending in an "<unknown module>" that no suppression can name): leak
 # checking is off for this test alone; ASan's and UBSan's other checks stay on.
-if ldd "$RT_RENDER" | grep -q 'libasan'; then export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"; fi
+if built_with "$RT_RENDER" asan; then export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"; fi
 
 "$RT_RENDER" --version >"$WORK/version.txt"
 if ! grep -q "^outputs:.* sdl" "$WORK/version.txt"; then

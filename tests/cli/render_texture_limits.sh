@@ -35,7 +35,7 @@ PY
 # once instead of filling the machine): exit 0 and a warning with TEXT. Not under ASan, whose
 # shadow memory needs terabytes of address space (the release stage keeps the bound).
 address_space=2000000
-ldd "$RT_RENDER" | grep -q 'libasan' && address_space=unlimited
+built_with "$RT_RENDER" asan && address_space=unlimited
 render_warns() {
     local status=0
     (ulimit -v $address_space; exec "$RT_RENDER" "$WORK/square.gltf" -x 32 -y 24 -o null --progress none) 2>"$WORK/stderr" ||
