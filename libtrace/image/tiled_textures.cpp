@@ -6,7 +6,9 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -57,6 +59,21 @@ fs::path temporaryIn(const fs::path& folder, const std::string& name) {
                      std::to_string(serial++) + ".tx");
 }
 
+// Throws unless `copy` reads back as a tiled file with every MIP level down to 1 x 1: OpenImageIO's
+// writers can report success for a file a full disk cut short, and a short copy renamed into the
+// cache would be read by every later render.
+void checkWholeCopy(const fs::path& copy) {
+    auto in = OIIO::ImageInput::open(copy.string());
+    if (!in) throw std::runtime_error("the copy does not read back: " + OIIO::geterror());
+    int levels = 0;
+    while (in->seek_subimage(0, levels)) ++levels;
+    const OIIO::ImageSpec& top = in->spec(0, 0);
+    const int expected = 1 + int(std::floor(std::log2(std::max(top.width, top.height))));
+    if (top.tile_width == 0 || levels < expected)
+        throw std::runtime_error("the copy is incomplete (" + std::to_string(levels) + " of " +
+                                 std::to_string(expected) + " MIP levels)");
+}
+
 // Writes the tiled, MIP-mapped texture of `source` to `target`; throws saying why it cannot.
 void makeCopy(const TextureSource& source, const fs::path& target) {
     std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
@@ -72,6 +89,7 @@ void makeCopy(const TextureSource& source, const fs::path& target) {
     config.attribute("maketx:fileformatname", "tiff");
     if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, picture, target.string(), config))
         throw std::runtime_error(OIIO::geterror());
+    checkWholeCopy(target);
 }
 
 }  // namespace
