@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "image/exr_header.h"
 #include "image/tiled_textures.h"
 
 namespace rt {
@@ -58,6 +59,18 @@ std::optional<std::string> refusal(const OIIO::ImageSpec& spec) {
     if (spec.tile_width == 0 && decodedBytes(spec) > kMaxUntiledTextureBytes)
         return "is " + size + ", more than the 1 GiB an untiled image may take";
     return std::nullopt;
+}
+
+// Why `t`'s bytes must not reach OpenImageIO at all, if they must not (exr_header.h).
+std::optional<std::string> headerProblem(const Texture& t) {
+    if (!t.embedded) return exrFileHeaderProblem(t.path);
+    const std::vector<std::uint8_t>& bytes = *t.embedded;
+    const ByteReader read = [&](std::uint64_t offset, std::size_t count, std::uint8_t* out) {
+        if (offset > bytes.size() || count > bytes.size() - offset) return false;
+        std::copy_n(bytes.begin() + std::ptrdiff_t(offset), count, out);
+        return true;
+    };
+    return exrHeaderProblem(read, bytes.size());
 }
 
 // Texture systems outlive the TextureFiles that use them. OpenImageIO 2.4 keeps a texture
@@ -138,6 +151,11 @@ struct TextureFiles::Impl {
     Entry open(const Texture& t, std::size_t index, std::vector<std::string>& warnings) {
         Entry e;
         if (t.kind != Texture::Kind::Image) return e;
+        if (const std::optional<std::string> why = headerProblem(t)) {
+            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + ": " +
+                               *why + ": white is used");
+            return e;
+        }
         const OIIO::ustring file = t.embedded ? addEmbedded(t, index) : OIIO::ustring(t.path);
         const OIIO::ImageSpec* spec = system->imagespec(file);
         if (!spec) {
