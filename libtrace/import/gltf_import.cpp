@@ -120,7 +120,18 @@ tinygltf::Model loadGltf(const std::string& name, bool binary, const FileAccess&
     tinygltf::Model gltf;
     std::string error, warning;
     report.format = binary ? "glTF 2.0 binary (.glb)" : "glTF 2.0";
-    if (!load(loader, gltf, error, warning)) throw InputError(name + ": " + firstLine(error));
+    bool loaded = false;
+    try {
+        loaded = load(loader, gltf, error, warning);
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) {
+        // tinygltf 2.8 indexes with at() where the file may not hold what it declares: a .glb
+        // whose buffer 0 has byteLength 0 while its BIN chunk holds data threw std::out_of_range
+        // (found by fuzz_gltf_import).
+        throw InputError(name + ": tinygltf cannot read it (" + firstLine(e.what()) + ")");
+    }
+    if (!loaded) throw InputError(name + ": " + firstLine(error));
     for (std::size_t start = 0; start < warning.size();) {
         const std::size_t end = std::min(warning.find('\n', start), warning.size());
         if (end > start) report.notes.push_back("tinygltf: " + firstLine(warning.substr(start, end - start)));

@@ -548,11 +548,8 @@ std::vector<std::uint8_t> quadBuffer(const std::vector<std::uint8_t>& image) {
     return bytes;
 }
 
-// A .glb (glTF 2.0 binary: header, JSON chunk, BIN chunk) of the quad with the PNG in a bufferView.
-std::string glbWithEmbeddedPng() {
-    std::vector<std::uint8_t> bin = quadBuffer(checkerPng());
-    std::string json = texturedQuadJson(R"({"byteLength": )" + std::to_string(bin.size()) + "}",
-                                        R"({"bufferView": 3, "mimeType": "image/png", "name": "checker"})", bin.size());
+// A .glb (glTF 2.0 binary: header, JSON chunk, BIN chunk) of `json` and `bin`.
+std::string glbOf(std::string json, std::vector<std::uint8_t> bin) {
     while (json.size() % 4) json += ' ';
     while (bin.size() % 4) bin.push_back(0);
     std::string glb;
@@ -569,6 +566,14 @@ std::string glbWithEmbeddedPng() {
     u32(0x004E4942);  // BIN
     glb.append(bin.begin(), bin.end());
     return glb;
+}
+
+// The quad with the PNG in a bufferView, as a .glb.
+std::string glbWithEmbeddedPng() {
+    const std::vector<std::uint8_t> bin = quadBuffer(checkerPng());
+    return glbOf(texturedQuadJson(R"({"byteLength": )" + std::to_string(bin.size()) + "}",
+                                  R"({"bufferView": 3, "mimeType": "image/png", "name": "checker"})", bin.size()),
+                 bin);
 }
 
 // Images in a .glb's binary chunk and in data: URIs are kept as their encoded bytes
@@ -593,6 +598,24 @@ TEST(ImportGltf, EmbeddedImagesAreKeptAsTheirBytes) {
     ASSERT_TRUE(dataUri.scene.textures[0].embedded);
     EXPECT_EQ(*dataUri.scene.textures[0].embedded, checkerPng());
     EXPECT_EQ(dataUri.scene.textures[0].file, "image0.png");
+}
+
+// tinygltf throws std::out_of_range for a .glb whose buffer 0 declares byteLength 0 beside a BIN
+// chunk of data (fuzz/corpus/gltf_import/glb_buffer_of_length_0): an input error naming the file,
+// not an exception that ends rt-convert with exit 1 (or, in the fuzzer, std::terminate).
+TEST(ImportGltf, AGlbWhoseBufferDeclaresNoBytesIsAnInputError) {
+    TempDir dir;
+    const std::vector<std::uint8_t> bin = quadBuffer(checkerPng());
+    const std::string path = dir.write(
+        "empty-buffer.glb",
+        glbOf(texturedQuadJson(R"({"byteLength": 0})", R"({"bufferView": 3, "mimeType": "image/png"})", bin.size()),
+              bin));
+    try {
+        importScene(path);
+        FAIL() << "imported";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("empty-buffer.glb"), std::string::npos) << e.what();
+    }
 }
 
 // A bufferView that reaches past its buffer is an error, not a read outside it.
