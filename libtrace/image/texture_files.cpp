@@ -38,8 +38,12 @@ OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
 // read a tile at a time within the cache, whatever their size.
 constexpr double kMaxUntiledTextureBytes = double(std::uint64_t(1) << 30);
 
+// Pixels as stored or as displayed, whichever is more: OpenImageIO makes the MIP levels of an
+// untiled image at its display window's size, and a 64 x 64 EXR displayed at 257 x 16,795,137
+// asked for 2 GB in one allocation (fuzz_image_texture).
 double decodedBytes(const OIIO::ImageSpec& spec) {
-    return double(spec.width) * spec.height * spec.depth * spec.nchannels * spec.format.size();
+    const double pixels = std::max(double(spec.width) * spec.height, double(spec.full_width) * spec.full_height);
+    return pixels * spec.depth * spec.nchannels * spec.format.size();
 }
 
 // The spec of `file` as stored: the cache's own calls a whole untiled image one tile.
@@ -47,6 +51,12 @@ OIIO::ImageSpec nativeSpec(OIIO::ImageCache& cache, OIIO::ustring file) {
     OIIO::ImageSpec spec;
     cache.get_imagespec(file, spec, 0, 0, /*native=*/true);
     return spec;
+}
+
+// " displayed at W x H" where the display window is not the data window (an EXR), else empty.
+std::string displayedSize(const OIIO::ImageSpec& spec) {
+    if (spec.full_width == spec.width && spec.full_height == spec.height) return "";
+    return " displayed at " + std::to_string(spec.full_width) + " x " + std::to_string(spec.full_height);
 }
 
 // Why a file stored as `spec` must not be looked up, if it must not: an image of no pixels (a TGA header saying
@@ -57,7 +67,7 @@ std::optional<std::string> refusal(const OIIO::ImageSpec& spec) {
     if (spec.width < 1 || spec.height < 1 || spec.depth < 1 || spec.nchannels < 1)
         return "is " + size + " of " + std::to_string(spec.nchannels) + " channels: no pixels";
     if (spec.tile_width == 0 && decodedBytes(spec) > kMaxUntiledTextureBytes)
-        return "is " + size + ", more than the 1 GiB an untiled image may take";
+        return "is " + size + displayedSize(spec) + ", more than the 1 GiB an untiled image may take";
     return std::nullopt;
 }
 

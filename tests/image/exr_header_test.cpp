@@ -27,7 +27,8 @@ std::vector<std::uint8_t> writeExr(const std::string& path) {
 }
 
 void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes) {
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 // The bytes with the "comments" attribute's size field set to `declared` (little-endian).

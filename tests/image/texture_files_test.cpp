@@ -235,6 +235,24 @@ TEST(TextureFiles, AMissingPictureIsAWarningAndWhite) {
     EXPECT_EQ(images.lookup(0, {0.5f, 0.5f}), (Color{1, 1, 1}));
 }
 
+// OpenImageIO makes an untiled image's MIP levels at its display window's size: a 4 x 4 EXR
+// displayed at 257 x 16,795,137 (found by fuzz_image_texture) asked for 2 GB at the first lookup.
+TEST(TextureFiles, AnUntiledPictureOfAHugeDisplayWindowIsAWarningAndWhite) {
+    const std::string path = testing::TempDir() + "/huge-display-window.exr";
+    OIIO::ImageSpec spec(4, 4, 4, OIIO::TypeDesc::HALF);
+    spec.full_width = 257;
+    spec.full_height = 16795137;
+    ASSERT_TRUE(OIIO::ImageBuf(spec).write(path));
+    Scene scene;
+    scene.textures.push_back({.name = "tall", .path = path});
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("4 x 4 pixels displayed at 257 x 16795137, more than the 1 GiB"), std::string::npos)
+        << warnings[0];
+    EXPECT_EQ(images.lookup(0, {0.5f, 0.5f, 0.01f, 0, 0, 0.01f}), (Color{1, 1, 1}));
+}
+
 // ---- Tiled copies (image/tiled_textures.h) -------------------------------------------------
 
 namespace {
