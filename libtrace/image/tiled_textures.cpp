@@ -10,10 +10,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -66,9 +68,12 @@ std::string copyName(const TextureSource& source) {
 constexpr std::chrono::minutes kStaleAfter{10};
 
 // The copy at `path`, locked shared (the lock is what keeps other renders from removing it) and
-// touched; none if there is none, or if it was removed between being opened and locked.
+// touched; none if there is none, or if it was removed between being opened and locked. Throws
+// if it cannot be opened for another reason (no more file descriptors: one is held per copy).
 std::optional<TiledCopy> openCopy(const fs::path& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 && errno != ENOENT)
+        throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
     if (fd < 0) return std::nullopt;
     struct stat st {};
     // A file system without locks: the copy is used all the same, unprotected.
