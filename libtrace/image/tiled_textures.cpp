@@ -72,7 +72,7 @@ constexpr std::chrono::minutes kStaleAfter{10};
 // if it cannot be opened for another reason (no more file descriptors: one is held per copy).
 std::optional<TiledCopy> openCopy(const fs::path& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0 && errno != ENOENT)
+    if (fd < 0 && errno != ENOENT && errno != ENOTDIR)  // ENOTDIR: a folder under a file, said below
         throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
     if (fd < 0) return std::nullopt;
     struct stat st {};
