@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -20,23 +21,25 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 
 #include "core/error.h"
-#include "core/text.h"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
 
+constexpr std::string_view kTemporaryMarker = ".rt-tmp-";
+
 // ".name.rt-tmp-": how every temporary of `target` begins.
 std::string temporaryPrefix(const fs::path& target) {
     std::string prefix = ".";  // built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string
     prefix += target.stem().string();
-    return prefix + ".rt-tmp-";
+    return prefix + std::string(kTemporaryMarker);
 }
 
 // "dir/.name.rt-tmp-PID-N.ext": hidden, unique per process, same extension as the target
@@ -49,15 +52,22 @@ std::string temporaryPathFor(const std::string& path) {
     return (p.parent_path() / name).string();
 }
 
+// The process id in `name` if it is named as temporaryPathFor names temporaries, for any target.
+std::optional<pid_t> temporaryOwner(const std::string& name) {
+    const std::size_t at = name.rfind(kTemporaryMarker);
+    if (!name.starts_with('.') || at == std::string::npos) return std::nullopt;
+    const char *digits = name.data() + at + kTemporaryMarker.size(), *end = name.data() + name.size();
+    long pid = 0;
+    const auto [next, error] = std::from_chars(digits, end, pid);
+    if (error != std::errc() || pid <= 0 || pid > std::numeric_limits<pid_t>::max() || next == end || *next != '-')
+        return std::nullopt;
+    return pid_t(pid);
+}
+
 // The process id in `name` if it is a temporary that temporaryPathFor made for `target`.
 std::optional<pid_t> temporaryOwner(const std::string& name, const fs::path& target) {
-    const std::string prefix = temporaryPrefix(target), suffix = target.extension().string();
-    if (name.size() <= prefix.size() + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix))
-        return std::nullopt;
-    const std::string id = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());  // "PID-N"
-    const auto pidAndNumber = parseSeparated<long, 2>(id, "-");
-    if (!pidAndNumber || (*pidAndNumber)[0] <= 0) return std::nullopt;
-    return pid_t((*pidAndNumber)[0]);
+    if (!name.starts_with(temporaryPrefix(target)) || !name.ends_with(target.extension().string())) return std::nullopt;
+    return temporaryOwner(name);
 }
 
 // Removes a temporary file or folder and everything in it, ignoring errors (it may not exist).
@@ -78,6 +88,17 @@ void removeStaleTemporaries(const std::string& path) {
         const std::optional<pid_t> owner = temporaryOwner(it->path().filename().string(), target);
         if (owner && !processRuns(*owner)) removeQuietly(it->path());
     }
+}
+
+// When `p`, a file or a folder, or anything directly in it last changed; the far future if it
+// cannot be read (it is then not taken for stale).
+fs::file_time_type lastChange(const fs::path& p) {
+    std::error_code ec;
+    fs::file_time_type newest = fs::last_write_time(p, ec);
+    if (ec) return fs::file_time_type::max();
+    for (fs::directory_iterator it(p, ec), end; !ec && it != end; it.increment(ec))
+        newest = std::max(newest, fs::last_write_time(it->path(), ec));
+    return newest;
 }
 
 // ---- Temporaries removed on SIGINT and SIGTERM -------------------------------------------
@@ -253,26 +274,6 @@ void publishThroughTemporary(const std::string& path,
     }
 }
 
-// Holds an exclusive flock on `folder` (a directory) while it lives: writers publishing into
-// the same folder take turns, and no lock file is left behind.
-class FolderLock {
-public:
-    explicit FolderLock(const fs::path& folder, const std::string& target) {
-        fd_ = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-        if (fd_ < 0 || ::flock(fd_, LOCK_EX) != 0) {
-            const int error = errno;
-            if (fd_ >= 0) ::close(fd_);
-            throw cannotWrite(target, error);
-        }
-    }
-    ~FolderLock() { ::close(fd_); }  // closing releases the lock
-    FolderLock(const FolderLock&) = delete;
-    FolderLock& operator=(const FolderLock&) = delete;
-
-private:
-    int fd_ = -1;
-};
-
 // Puts `temp` in the place of `folder`; afterwards `temp` holds the old contents (or nothing).
 // RENAME_EXCHANGE swaps both at once, so `folder` is never missing, even if the process is
 // killed; file systems without it get two renames through `aside`.
@@ -301,6 +302,52 @@ void putTheOldFolderBack(const fs::path& temp, const fs::path& folder) noexcept 
 }
 
 }  // namespace
+
+ExclusiveLock::ExclusiveLock(const std::string& path, const std::string& target) {
+    std::error_code ec;
+    const bool folder = fs::is_directory(path, ec);
+    fd_ = folder ? ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)
+                 : ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (fd_ < 0 && errno == EACCES && !folder)  // another user's lock file: locks on a local disk all the same
+        fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0 || ::flock(fd_, LOCK_EX) != 0) {
+        const int error = errno;
+        if (fd_ >= 0) ::close(fd_);
+        throw cannotWrite(target, error);
+    }
+}
+
+ExclusiveLock::~ExclusiveLock() { ::close(fd_); }
+
+struct TemporaryFolder::Registration {
+    explicit Registration(const std::string& folder) : live(folder, LiveKind::Folder) {}
+    LiveTemporary live;
+};
+
+TemporaryFolder::TemporaryFolder(const std::string& path)
+    : path_(path), folder_(temporaryPathFor(path)), live_(std::make_unique<Registration>(folder_)) {
+    std::error_code ec;
+    if (!fs::create_directory(folder_, ec)) throw cannotWrite(path, ec ? ec.value() : EEXIST);
+}
+
+TemporaryFolder::~TemporaryFolder() { removeQuietly(folder_); }
+
+std::string TemporaryFolder::file() const { return (fs::path(folder_) / fs::path(path_).filename()).string(); }
+
+void TemporaryFolder::commit() const {
+    syncTemporary(path_, file(), std::nullopt);
+    testWriteDelay();
+    renameOver(file(), path_);
+}
+
+void removeStaleTemporariesIn(const std::string& folder, std::chrono::seconds unchangedFor) {
+    const fs::file_time_type before = fs::file_time_type::clock::now() - unchangedFor;
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::optional<pid_t> owner = temporaryOwner(it->path().filename().string());
+        if (owner && !processRuns(*owner) && lastChange(it->path()) < before) removeQuietly(it->path());
+    }
+}
 
 void noteWorkInProgress(const char* who, const char* unit, std::uint64_t done, std::uint64_t total) {
     workTotal.store(0);  // nothing is said while the fields change
@@ -380,7 +427,8 @@ void commitFileAndFolderAtomically(const std::string& path, const std::string& f
         testWriteDelay();
         // Published as one unit: writers of the same scene take turns here, so each one's
         // file is renamed right after its own folder, never beside another run's half.
-        const FolderLock lock(fs::path(path).parent_path(), path);
+        const fs::path parent = fs::path(path).parent_path();
+        const ExclusiveLock lock(parent.empty() ? "." : parent.string(), path);
         exchangeFolders(tempFolder, folder, temporaryPathFor(folder));
         try {
             renameOver(temp, path);

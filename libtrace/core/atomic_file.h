@@ -15,8 +15,10 @@
 // before the rename, so tests/cli/render_atomic.sh can kill a process in the middle of a write.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 
@@ -54,5 +56,50 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 // Throws std::runtime_error if `folder` exists but is not a folder, or cannot be replaced.
 void commitFileAndFolderAtomically(const std::string& path, const std::string& folder,
                                    const std::function<bool(const std::string&, const std::string&)>& write);
+
+// Holds an exclusive flock on `path` while it lives: a folder, or a lock file (created if
+// missing, opened for writing, so that the lock also holds on NFS, where Linux emulates flock
+// with a whole-file byte-range lock). Processes taking the same lock take turns. Throws
+// std::runtime_error naming `target` (what the lock protects) if the lock cannot be taken.
+class ExclusiveLock {
+public:
+    ExclusiveLock(const std::string& path, const std::string& target);
+    ~ExclusiveLock();  // closing releases the lock
+    ExclusiveLock(const ExclusiveLock&) = delete;
+    ExclusiveLock& operator=(const ExclusiveLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+// For a file that a library writes by name, making temporaries of its own beside that name
+// (OpenImageIO's make_texture does): a new hidden folder beside `path`, named as the temporaries
+// above ("folder/.name.rt-tmp-PID-N.ext/"), in which file() is written. commit() syncs that file
+// and renames it to `path`. The folder and whatever is in it are removed when this object dies,
+// and on SIGINT and SIGTERM (removeTemporariesOnSignals). Throws std::runtime_error naming `path`
+// if the folder cannot be made.
+class TemporaryFolder {
+public:
+    explicit TemporaryFolder(const std::string& path);
+    ~TemporaryFolder();
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+
+    // Where the file is to be written: the folder and the target's file name.
+    std::string file() const;
+    // Makes file() durable (fsync) and renames it to the target; throws naming the target.
+    void commit() const;
+
+private:
+    struct Registration;  // the folder in the table the signal handlers empty
+    std::string path_, folder_;
+    std::unique_ptr<Registration> live_;
+};
+
+// Removes from `folder` the temporaries (files or folders named as above, for any target) left by
+// processes that no longer run on this machine and in which nothing changed for `unchangedFor`:
+// for a folder that several machines may share (a cache), where a process id of another machine
+// says nothing, and whose targets are not known in advance. Errors are ignored.
+void removeStaleTemporariesIn(const std::string& folder, std::chrono::seconds unchangedFor);
 
 }  // namespace rt

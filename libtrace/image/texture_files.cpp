@@ -132,6 +132,8 @@ struct TextureFiles::Impl {
     };
     OIIO::TextureSystem* system = nullptr;
     std::string txCache;  // tiled_textures.h; "off" once a copy could not be made
+    std::uint64_t txCacheBytes = 0;
+    std::vector<TiledCopy> copies;  // in use: no other render removes them while this one runs
     std::vector<Entry> entries;
     // Readers of the embedded images and their bytes, alive as long as the system, which may reopen them.
     std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> memoryReaders;
@@ -203,10 +205,12 @@ struct TextureFiles::Impl {
         if (txCacheOff(txCache) || (spec.tile_width > 0 && levels > 1) || decodedBytes(spec) > kMaxUntiledTextureBytes)
             return file;
         try {
-            const OIIO::ustring copy(tiledCopy(txCache, {t.path, t.embedded, t.file}));
-            if (!system->imagespec(copy))
-                throw std::runtime_error("cannot read " + copy.string() + ": " + system->geterror());
-            return copy;
+            TiledCopy copy = tiledCopy(txCache, {t.path, t.embedded, t.file}, txCacheBytes);
+            const OIIO::ustring path(copy.path());
+            if (!system->imagespec(path))
+                throw std::runtime_error("cannot read " + path.string() + ": " + system->geterror());
+            copies.push_back(std::move(copy));
+            return path;
         } catch (const std::exception& e) {
             warnings.push_back("texture '" + t.name + "': no tiled copy (" + e.what() +
                                "): textures are read as they are, slower and beyond --texture-cache");
@@ -242,6 +246,7 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
     impl_->system = TextureSystemPool::take();
     impl_->system->attribute("max_memory_MB", cache.megabytes);
     impl_->txCache = cache.txCache;
+    impl_->txCacheBytes = std::uint64_t(cache.txCacheMegabytes * 1024 * 1024);
     impl_->system->attribute("automip", 1);
     for (std::size_t i = 0; i < scene.textures.size(); ++i)
         impl_->entries.push_back(impl_->open(scene.textures[i], i, warnings));

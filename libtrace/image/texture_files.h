@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "image/tiled_textures.h"
 #include "render/texture.h"
 #include "scene/scene.h"
 
@@ -21,6 +22,7 @@ namespace rt {
 struct TextureCacheSettings {
     float megabytes = 256;        // OpenImageIO's texture cache (rt-render --texture-cache)
     std::string txCache = "off";  // the folder of tiled copies (rt-render --tx-cache); "off": sources as they are
+    double txCacheMegabytes = kDefaultTxCacheMegabytes;  // the bound on its size (rt-render --tx-cache-size)
 };
 
 class TextureFiles : public ImageTextures {

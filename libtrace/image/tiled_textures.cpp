@@ -4,16 +4,26 @@
 #include <OpenImageIO/hash.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
+#include <vector>
+
+#include "core/atomic_file.h"
 
 namespace rt {
 
@@ -52,11 +62,78 @@ std::string copyName(const TextureSource& source) {
     return stem + "-" + hex(OIIO::farmhash::Fingerprint64(identity(source))) + ".tx";
 }
 
-// A name no other writer uses in `folder`: this process's id and a counter.
-fs::path temporaryIn(const fs::path& folder, const std::string& name) {
-    static std::atomic<unsigned> serial{0};
-    return folder / ("." + fs::path(name).stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                     std::to_string(serial++) + ".tx");
+// Temporaries of makers that no longer run on this machine and in which nothing changed for this
+// long are removed: a folder shared by several machines holds other machines' live ones too, and
+// their process ids say nothing here. No copy takes that long to make.
+constexpr std::chrono::minutes kStaleAfter{10};
+
+// The copy at `path`, locked shared (the lock is what keeps other renders from removing it) and
+// touched; none if there is none, or if it was removed between being opened and locked. Throws
+// if it cannot be opened for another reason (no more file descriptors: one is held per copy).
+std::optional<TiledCopy> openCopy(const fs::path& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 && errno != ENOENT && errno != ENOTDIR)  // ENOTDIR: a folder under a file, said below
+        throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
+    if (fd < 0) return std::nullopt;
+    struct stat st {};
+    // A file system without locks: the copy is used all the same, unprotected.
+    const bool locked = ::flock(fd, LOCK_SH) == 0;
+    if (locked && (::fstat(fd, &st) != 0 || st.st_nlink == 0)) {
+        ::close(fd);
+        return std::nullopt;
+    }
+    // The access time ranks the copies for removal (the modification time says when it was made).
+    // It fails on another user's copy without write access: that copy is used all the same.
+    const timespec useNow[2] = {{0, UTIME_NOW}, {0, UTIME_OMIT}};
+    ::futimens(fd, useNow);
+    return TiledCopy(path.string(), fd);
+}
+
+struct CachedCopy {
+    fs::path path;
+    std::uintmax_t bytes = 0;
+    timespec lastUse{};
+};
+
+// The copies in `folder` (not the hidden temporaries and lock file), least recently used first.
+std::vector<CachedCopy> copiesIn(const fs::path& folder) {
+    std::vector<CachedCopy> copies;
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        struct stat st {};
+        if (name.starts_with('.') || !name.ends_with(".tx") || ::stat(it->path().c_str(), &st) != 0 ||
+            !S_ISREG(st.st_mode))
+            continue;
+        copies.push_back({it->path(), std::uintmax_t(st.st_size), st.st_atim});
+    }
+    std::sort(copies.begin(), copies.end(), [](const CachedCopy& a, const CachedCopy& b) {
+        return std::pair(a.lastUse.tv_sec, a.lastUse.tv_nsec) < std::pair(b.lastUse.tv_sec, b.lastUse.tv_nsec);
+    });
+    return copies;
+}
+
+// Removes the copy at `path` unless a render uses it (holds a shared lock on it); true if removed.
+// A render that opened it just before waits for this lock, then sees it unlinked and makes it again.
+bool removeUnlessInUse(const fs::path& path) {
+    int fd = ::open(path.c_str(), O_RDWR | O_CLOEXEC);  // for writing: NFS locks exclusively only so
+    if (fd < 0) fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool removed = ::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::unlink(path.c_str()) == 0;
+    ::close(fd);
+    return removed;
+}
+
+// Removes the least recently used copies in `folder` until they and `incoming` more bytes fit in
+// `maxBytes`, or none but copies in use are left.
+void makeRoom(const fs::path& folder, std::uintmax_t incoming, std::uint64_t maxBytes) {
+    const std::vector<CachedCopy> copies = copiesIn(folder);
+    std::uintmax_t total = incoming;
+    for (const CachedCopy& c : copies) total += c.bytes;
+    for (const CachedCopy& c : copies) {
+        if (total <= maxBytes) return;
+        if (removeUnlessInUse(c.path)) total -= c.bytes;
+    }
 }
 
 // Throws unless `copy` reads back as a tiled file with every MIP level down to 1 x 1: OpenImageIO's
@@ -75,7 +152,7 @@ void checkWholeCopy(const fs::path& copy) {
 }
 
 // Writes the tiled, MIP-mapped texture of `source` to `target`; throws saying why it cannot.
-void makeCopy(const TextureSource& source, const fs::path& target) {
+void makeCopy(const TextureSource& source, const std::string& target) {
     std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
     if (source.bytes)
         memory = std::make_unique<OIIO::Filesystem::IOMemReader>(source.bytes->data(), source.bytes->size());
@@ -87,7 +164,7 @@ void makeCopy(const TextureSource& source, const fs::path& target) {
     config.attribute("maketx:compute_average", 0);  // nor their average
     config.attribute("maketx:forcefloat", 0);       // the levels made in the source's type: a quarter the memory
     config.attribute("maketx:fileformatname", "tiff");
-    if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, picture, target.string(), config))
+    if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, picture, target, config))
         throw std::runtime_error(OIIO::geterror());
     checkWholeCopy(target);
 }
@@ -104,21 +181,31 @@ std::string defaultTxCache() {
 
 bool txCacheOff(const std::string& txCache) { return txCache.empty() || txCache == "off"; }
 
-std::string tiledCopy(const std::string& folder, const TextureSource& source) {
+TiledCopy::~TiledCopy() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
+}
+
+TiledCopy tiledCopy(const std::string& folder, const TextureSource& source, std::uint64_t maxBytes) {
     const fs::path target = fs::path(folder) / copyName(source);
-    if (fs::exists(target)) return target.string();
+    if (std::optional<TiledCopy> existing = openCopy(target)) return std::move(*existing);
     std::error_code error;
     fs::create_directories(folder, error);
     if (error) throw std::runtime_error("cannot create " + folder + ": " + error.message());
-    const fs::path temporary = temporaryIn(folder, target.filename().string());
+    removeStaleTemporariesIn(folder, kStaleAfter);
     try {
-        makeCopy(source, temporary);
-        fs::rename(temporary, target);  // atomic: a concurrent render sees no copy or a whole one
+        // make_texture writes a temporary of its own beside the name it is given: both in here.
+        const TemporaryFolder temporary(target.string());
+        makeCopy(source, temporary.file());
+        const ExclusiveLock turn((fs::path(folder) / ".lock").string(), folder);
+        // Another render may have added the same copy meanwhile: it is used, this one dropped.
+        if (std::optional<TiledCopy> theirs = openCopy(target)) return std::move(*theirs);
+        makeRoom(folder, fs::file_size(temporary.file()), maxBytes);
+        temporary.commit();
+        if (std::optional<TiledCopy> ours = openCopy(target)) return std::move(*ours);
+        throw std::runtime_error("it is gone after being written");
     } catch (const std::exception& e) {
-        fs::remove(temporary, error);
         throw std::runtime_error("cannot write " + target.string() + ": " + e.what());
     }
-    return target.string();
 }
 
 }  // namespace rt

@@ -6,14 +6,21 @@
 // "Textures"). A copy is named by a hash of what it is made from: the source's absolute path,
 // size and modification time (or, for a picture embedded in a .glb or a data: URI, its bytes)
 // and the settings below, so that a changed source gets a new copy and an unchanged one is
-// reused. Copies are written under a temporary name and renamed: concurrent renders never read
-// half a file.
+// reused.
+//
+// Copies are made in a temporary folder (core/atomic_file.h: removed on SIGINT and SIGTERM, and
+// by a later render once stale) and renamed into the cache: renders never read half a copy. The
+// cache is bounded: before a new copy is added, the least recently used copies are removed until
+// all fit in the bound, except copies in use. A render holds a shared flock on every copy it uses
+// until it ends; a copy is removed only under an exclusive one, so no render loses a copy it may
+// still (re)open by name. Renders take turns to add copies (an exclusive flock on the folder's
+// ".lock" file); two making the same copy both succeed, the second using the first's.
 #pragma once
 
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rt {
@@ -26,6 +33,9 @@ std::string defaultTxCache();
 // Whether `txCache` (an option's or defaultTxCache's value) turns the copies off.
 bool txCacheOff(const std::string& txCache);
 
+// The bound on the tx cache's size, when --tx-cache-size does not say.
+constexpr double kDefaultTxCacheMegabytes = 2048;
+
 // A picture to copy: a file, or encoded bytes with the name whose extension tells the format.
 struct TextureSource {
     std::string path;  // a file; empty for embedded bytes
@@ -33,9 +43,29 @@ struct TextureSource {
     std::string name;  // the embedded picture's file name (its extension picks the reader)
 };
 
-// The tiled, MIP-mapped copy of `source` in `folder`: the path of the existing one, or of one
-// made now (the folder created if missing). Throws std::runtime_error saying why when the copy
-// can neither be found nor made (the folder not writable, the source unreadable).
-std::string tiledCopy(const std::string& folder, const TextureSource& source);
+// A copy in use: while this lives, it holds a shared flock on the file, so that no other render
+// removes it from the cache.
+class TiledCopy {
+public:
+    TiledCopy(std::string path, int fd) : path_(std::move(path)), fd_(fd) {}
+    TiledCopy(TiledCopy&& other) noexcept : path_(std::move(other.path_)), fd_(std::exchange(other.fd_, -1)) {}
+    TiledCopy& operator=(TiledCopy&&) = delete;
+    TiledCopy(const TiledCopy&) = delete;
+    ~TiledCopy();
+
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+    int fd_;
+};
+
+// The tiled, MIP-mapped copy of `source` in `folder`: the existing one, touched (its access
+// time, by which copies are ranked for removal, set to now), or one made now (the folder created
+// if missing), for which older copies are removed until the folder's copies fit in `maxBytes`.
+// Throws std::runtime_error saying why when the copy can neither be found nor made (the folder
+// not writable, the source unreadable).
+TiledCopy tiledCopy(const std::string& folder, const TextureSource& source,
+                    std::uint64_t maxBytes = std::uint64_t(kDefaultTxCacheMegabytes * 1024 * 1024));
 
 }  // namespace rt

@@ -268,7 +268,8 @@ std::string freshFolder(const std::string& name) {
 std::vector<std::filesystem::path> copiesIn(const std::string& folder) {
     std::vector<std::filesystem::path> copies;
     if (std::filesystem::is_directory(folder))
-        for (const auto& entry : std::filesystem::directory_iterator(folder)) copies.push_back(entry.path());
+        for (const auto& entry : std::filesystem::directory_iterator(folder))
+            if (!entry.path().filename().string().starts_with(".")) copies.push_back(entry.path());  // not .lock
     std::sort(copies.begin(), copies.end());
     return copies;
 }

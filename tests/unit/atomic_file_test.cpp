@@ -163,6 +163,21 @@ TEST_F(AtomicFile, PrepareCreatesMissingFoldersAndRejectsWhatCannotBeWritten) {
     prepareOutputFile("-");
 }
 
+TEST_F(AtomicFile, ATemporaryFolderPublishesItsFileAndLeavesNothingElse) {
+    const std::string path = (dir / "copy.tx").string();
+    {
+        const TemporaryFolder temporary(path);
+        const fs::path file = temporary.file();
+        EXPECT_EQ(file.filename(), "copy.tx");
+        EXPECT_TRUE(file.parent_path().filename().string().starts_with(".copy.rt-tmp-")) << file;
+        std::ofstream(file) << "made";
+        std::ofstream(file.string() + ".temp") << "a library's own temporary";
+        temporary.commit();
+        EXPECT_EQ(slurp(path), "made");
+    }
+    EXPECT_EQ(entries(), 1u);
+}
+
 TEST_F(AtomicFile, StaleTemporariesOfDeadProcessesAreRemoved) {
     // PID 2^22 + 1 is above Linux's largest PID, so no process runs under it.
     const fs::path dead = dir / ".a.rt-tmp-4194305-0.png";

@@ -325,7 +325,7 @@ int renderAll(RenderOptions o) {
     scene.dropDescription();
     checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
     const TextureFiles images(scene, scene.warnings,  // before the warnings are shown: it adds its own
-                              {o.textureCacheMb, o.txCache.value_or(defaultTxCache())});
+                              {o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb});
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;

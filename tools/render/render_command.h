@@ -10,6 +10,7 @@
 #include "accel/settings.h"
 #include "core/vec3.h"
 #include "image/image_output.h"
+#include "image/tiled_textures.h"
 #include "import/import.h"
 #include "progress.h"
 #include "render/render_settings.h"
@@ -55,6 +56,7 @@ struct RenderOptions {
     std::optional<std::string> environment;  // --environment FILE: the path tracer's sky image
     float textureCacheMb = 256;              // --texture-cache MB: OpenImageIO's texture cache
     std::optional<std::string> txCache;      // --tx-cache DIR|off: tiled texture copies; default rt::defaultTxCache()
+    double txCacheMb = kDefaultTxCacheMegabytes;  // --tx-cache-size MB: the bound on the tx cache's size
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.

@@ -63,6 +63,12 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
                    "Folder for the tiled, MIP-mapped copies of PNG, JPEG and other untiled textures, made once; off: "
                    "read them as they are [default: $RT_TX_CACHE, else $XDG_CACHE_HOME/rt/tx or ~/.cache/rt/tx]")
         ->group(group);
+    app.add_option("--tx-cache-size", o.txCacheMb,
+                   "Bound on the tx cache, in MB: the least recently used copies not in use are removed to keep "
+                   "within it")
+        ->check(rt::tool::numberIn(1.0, 1e9))
+        ->capture_default_str()
+        ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
     app.add_option("--time-limit", o.render.timeLimitSeconds,
                    "Stop after this many seconds: the path tracer writes its whole passes, else nothing (exit 3)")
