@@ -91,7 +91,7 @@ public:
     // Visits every node in pre-order (a node before its children, the lower child first).
     virtual void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const = 0;
 
-    // Hits the filter rejects are skipped by both queries (cut-outs, geometry/hit_filter.h);
+    // Hits the filter rejects are skipped by both queries (cut-outs and back faces, geometry/hit_filter.h);
     // none (the default) accepts every hit at no cost. The filter must outlive the queries.
     void setHitFilter(const HitFilter* filter) { filter_ = filter; }
 

@@ -123,7 +123,7 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
 
 // Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
 // triangles, each only if nearer than the nearest so far (a lane before it may have come nearer)
-// and, in a scene with cut-outs, only if the hit filter accepts it.
+// and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;

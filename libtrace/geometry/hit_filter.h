@@ -1,8 +1,9 @@
-// A test a candidate hit must pass before an accelerator accepts it: cut-out materials
-// (render/cutout.h) reject hits where their opacity is below the cut-off, so rays of both
-// queries (nearest hit and shadow rays) pass through leaves and fences as if the masked part
-// were not there. It is defined here, outside accel/, so that the accelerators only call it.
-// Scenes without cut-outs set no filter, and the leaf loops then run without it.
+// A test a candidate hit must pass before an accelerator accepts it: the scene's materials
+// (render/material_filter.h) reject hits where a cut-out's opacity is below the cut-off and
+// hits on the back of a single-sided surface, so rays of both queries (nearest hit and shadow
+// rays) pass through leaves, fences and back faces as if they were not there. It is defined
+// here, outside accel/, so that the accelerators only call it. Scenes without such materials
+// set no filter, and the leaf loops then run without it.
 #pragma once
 
 #include "geometry/primitives.h"

@@ -370,13 +370,17 @@ private:
         if (index < -1 || index >= int(gltf_.materials.size()))
             fail("material " + std::to_string(index) + " does not exist (the file has " +
                  std::to_string(gltf_.materials.size()) + ")");
-        Material m;  // a primitive without material: rt's plain white diffuse default (docs/conversion.md)
+        // A primitive without material: rt's plain white diffuse default (docs/conversion.md),
+        // single-sided as glTF's default material is.
+        Material m;
         m.name = "default";
+        m.doubleSided = false;
         if (index >= 0) {
             const tinygltf::Material& gm = gltf_.materials[std::size_t(index)];
             const std::string what = "material " + std::to_string(index);
             m = phongFromMetallicRoughness(metallicRoughness(gm, what));
             m.name = gm.name;
+            m.doubleSided = gm.doubleSided;  // false, as glTF's default, when the file leaves it out
             m.colorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture, what + " baseColorTexture");
             m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");

@@ -11,17 +11,25 @@ namespace rt {
 
 namespace {
 
-// Triangle `i`'s values from one of a model's per-corner arrays.
+// Whether `xf` turns a right-handed frame into a left-handed one (a negative determinant).
+bool mirrors(const Transform& xf) {
+    return dot(cross(xf.vector({1, 0, 0}), xf.vector({0, 1, 0})), xf.vector({0, 0, 1})) < 0;
+}
+
+// Triangle `i`'s values from one of a model's per-corner arrays, corners p1 and p2 swapped
+// when `reversed` (the triangle's winding is).
 template <class T>
-T cornerValues(const std::vector<float>& from, std::size_t i) {
+T cornerValues(const std::vector<float>& from, std::size_t i, bool reversed = false) {
     T to;
     std::copy_n(from.begin() + std::ptrdiff_t(i * to.values.size()), to.values.size(), to.values.begin());
+    const std::size_t n = to.values.size() / 3;  // floats per corner
+    if (reversed) std::swap_ranges(to.values.begin() + n, to.values.begin() + 2 * n, to.values.begin() + 2 * n);
     return to;
 }
 
 // The normals of triangle `i` placed by `xf` (inverse transpose, renormalised); zeros stay zeros.
-CornerNormals placedNormals(const Model& model, std::size_t i, const Transform& xf) {
-    CornerNormals n = cornerValues<CornerNormals>(model.vertexNormals, i);
+CornerNormals placedNormals(const Model& model, std::size_t i, const Transform& xf, bool reversed) {
+    CornerNormals n = cornerValues<CornerNormals>(model.vertexNormals, i, reversed);
     for (int c = 0; c < 3; ++c) {
         const Vec3 placed = xf.normal(n.corner(c));
         const Real len = length(placed);
@@ -34,44 +42,51 @@ CornerNormals placedNormals(const Model& model, std::size_t i, const Transform& 
 // The file's tangents of triangle `i` placed by `xf`, or none where they are zero (to be
 // generated). A mirroring transform turns the bitangent w * cross(n, t) the other way, as it
 // does the image's up direction: w changes sign.
-std::optional<CornerTangents> placedTangents(const Model& model, std::size_t i, const Transform& xf) {
-    CornerTangents t = cornerValues<CornerTangents>(model.vertexTangents, i);
-    const bool mirrors = dot(cross(xf.vector({1, 0, 0}), xf.vector({0, 1, 0})), xf.vector({0, 0, 1})) < 0;
+std::optional<CornerTangents> placedTangents(const Model& model, std::size_t i, const Transform& xf, bool reversed) {
+    CornerTangents t = cornerValues<CornerTangents>(model.vertexTangents, i, reversed);
+    const bool mirrored = mirrors(xf);
     for (int c = 0; c < 3; ++c) {
         float* corner = &t.values[4 * std::size_t(c)];
         const Vec3 placed = xf.vector({corner[0], corner[1], corner[2]});
         const Real len = length(placed);
         if (!(len > 0) || corner[3] == 0) return std::nullopt;
         for (int a = 0; a < 3; ++a) corner[a] = float(placed[a] / len);
-        corner[3] = (corner[3] < 0) != mirrors ? -1.0f : 1.0f;
+        corner[3] = (corner[3] < 0) != mirrored ? -1.0f : 1.0f;
     }
     return t;
 }
 
 // Gives the triangle just added as number `index` the model's shading data for its triangle `i`.
-void addShading(const Model& model, std::size_t i, const Transform& xf, std::size_t index, TriangleShading& to) {
-    if (!model.vertexNormals.empty()) to.normals.set(index, placedNormals(model, i, xf));
-    if (!model.vertexUvs.empty()) to.uvs.set(index, cornerValues<CornerUvs>(model.vertexUvs, i));
-    if (!model.vertexColors.empty()) to.colors.set(index, cornerValues<CornerColors>(model.vertexColors, i));
+void addShading(const Model& model, std::size_t i, const Transform& xf, bool reversed, std::size_t index,
+                TriangleShading& to) {
+    if (!model.vertexNormals.empty()) to.normals.set(index, placedNormals(model, i, xf, reversed));
+    if (!model.vertexUvs.empty()) to.uvs.set(index, cornerValues<CornerUvs>(model.vertexUvs, i, reversed));
+    if (!model.vertexColors.empty()) to.colors.set(index, cornerValues<CornerColors>(model.vertexColors, i, reversed));
     if (!model.vertexTangents.empty())
-        if (const std::optional<CornerTangents> t = placedTangents(model, i, xf)) to.tangents.set(index, *t);
+        if (const std::optional<CornerTangents> t = placedTangents(model, i, xf, reversed)) to.tangents.set(index, *t);
 }
 
 // Adds one instance of a model to `out`. A sphere under a non-uniform scale would be
 // an ellipsoid, which the renderer has no primitive for: its radius takes the largest
-// stretch of the transform.
-std::size_t addInstance(const Model& model, const Instance& inst, Primitives& out) {
+// stretch of the transform. A mirroring transform turns the triangles' winding round; for a
+// single-sided material, whose front the winding tells, the corners p1 and p2 are swapped to
+// keep the model's front in front (as glTF orients a mesh under a negative determinant).
+// Two-sided materials keep the corners as they are, so their scenes render as before.
+std::size_t addInstance(const Model& model, const Instance& inst, bool singleSided, Primitives& out) {
     std::size_t dropped = 0;
     const Transform& xf = inst.transform;
+    const bool reversed = singleSided && mirrors(xf);
+    const int second = reversed ? 6 : 3, third = reversed ? 3 : 6;  // offsets of the corners placed as p1, p2
     const std::vector<float>& v = model.triangleVertices;
     for (std::size_t i = 0; i < model.triangleCount(); ++i) {
         const float* c = &v[9 * i];
-        const Triangle t{xf.point({c[0], c[1], c[2]}), xf.point({c[3], c[4], c[5]}), xf.point({c[6], c[7], c[8]})};
+        const Triangle t{xf.point({c[0], c[1], c[2]}), xf.point({c[second], c[second + 1], c[second + 2]}),
+                         xf.point({c[third], c[third + 1], c[third + 2]})};
         if (t.degenerate()) {
             ++dropped;
             continue;
         }
-        addShading(model, i, xf, out.count<Triangle>(), out.triangleShading());
+        addShading(model, i, xf, reversed, out.count<Triangle>(), out.triangleShading());
         out.add<Triangle>(t, inst.material);
     }
     const std::vector<float>& s = model.sphereData;
@@ -95,7 +110,10 @@ std::size_t Scene::flatten() {
     primitives.reserve<Triangle>(triangles);
     primitives.append(looseObjects);
     std::size_t dropped = 0;
-    for (const Instance& inst : instances) dropped += addInstance(models[inst.model], inst, primitives);
+    for (const Instance& inst : instances) {
+        const bool singleSided = inst.material < materials.size() && !materials[inst.material].doubleSided;
+        dropped += addInstance(models[inst.model], inst, singleSided, primitives);
+    }
     if (std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.normalTexture; }))
         generateTangents(primitives,
                          [&](std::uint32_t m) { return m < materials.size() && materials[m].normalTexture; });

@@ -84,6 +84,10 @@ struct Material {
     std::optional<std::uint32_t> normalTexture{};
     float normalScale = 1;
     Transmission transmission{};  // rt extension: glass (scene/transmission.h)
+    // rt extension, glTF's doubleSided: false makes the material single-sided, and every ray
+    // passes through its back (render/material_filter.h). The front is the side from which a
+    // triangle's corners run counter-clockwise in its model's own space, or a sphere's outside.
+    bool doubleSided = true;
 };
 
 // A model loaded once and instanced many times (thesis 3.4.3). Geometry is kept in

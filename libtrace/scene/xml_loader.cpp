@@ -36,9 +36,7 @@ Transmission readTransmission(const XmlElement& e) {
     if (t.weight > 1) e.fail("<material> transmission must be between 0 and 1");
     t.color = e.color("transmission_color", t.color);
     if (e.has("ior")) t.ior = float(e.positive("ior"));
-    const std::string thin = e.optionalString("thin").value_or("false");
-    if (thin != "true" && thin != "false") e.fail("<material> thin must be true or false");
-    t.thin = thin == "true";
+    t.thin = e.boolean("thin", t.thin);
     t.attenuationColor = e.color("attenuation_color", t.attenuationColor);
     if (e.has("attenuation_distance")) t.attenuationDistance = float(e.positive("attenuation_distance"));
     return t;
@@ -187,7 +185,8 @@ void SceneBuilder::readList(const XmlElement& list) {
                                      "ior",
                                      "thin",
                                      "attenuation_color",
-                                     "attenuation_distance"}));
+                                     "attenuation_distance",
+                                     "double_sided"}));
         else if (tag == "textures")
             readTexture(XmlElement(file_, item,
                                    {"name", "type", "file", "wrap", "wrap_s", "wrap_t", "offset", "scale", "rotation",
@@ -298,6 +297,7 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     if (const auto name = e.optionalString("normal_texture"))
         textureUses_.push_back({index, &Material::normalTexture, *name, e.node()});
     m.normalScale = float(e.number("normal_scale", m.normalScale));
+    m.doubleSided = e.boolean("double_sided", m.doubleSided);
     scene_.materials.push_back(std::move(m));
 }
 

@@ -103,6 +103,13 @@ std::optional<std::string> XmlElement::optionalString(const char* attribute) con
     return std::string(a.value());
 }
 
+bool XmlElement::boolean(const char* attribute, bool fallback) const {
+    const std::optional<std::string> text = optionalString(attribute);
+    if (!text) return fallback;
+    if (*text != "true" && *text != "false") fail(tag() + " " + attribute + " must be true or false");
+    return *text == "true";
+}
+
 Real XmlElement::parseNumber(const char* attribute, std::string_view text) const {
     std::string_view s = trim(text);
     if (s.size() > 1 && s.front() == '+') s.remove_prefix(1);  // from_chars takes no '+'

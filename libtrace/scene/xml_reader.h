@@ -60,6 +60,8 @@ public:
     bool has(const char* attribute) const { return bool(node_.attribute(attribute)); }
     std::string string(const char* attribute) const;  // required
     std::optional<std::string> optionalString(const char* attribute) const;
+    // "true" or "false"; anything else is an error.
+    bool boolean(const char* attribute, bool fallback) const;
 
     // Finite decimal numbers ("1", "-0.5", "2e3"); NaN and infinities are errors.
     Real number(const char* attribute) const;  // required

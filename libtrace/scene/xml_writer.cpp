@@ -267,6 +267,7 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalTexture).c_str());
         if (m.normalScale != 1) setNumber(node, "normal_scale", m.normalScale);
         setTransmission(node, m.transmission);
+        if (!m.doubleSided) node.append_attribute("double_sided").set_value("false");
     }
 }
 

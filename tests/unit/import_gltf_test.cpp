@@ -313,6 +313,25 @@ TEST(ImportGltf, AlphaModesBecomeCutouts) {
     EXPECT_FALSE(material("").scene.materials[0].alphaCutoff);
 }
 
+// doubleSided is kept: true two-sided; false, or left out (glTF's default), single-sided, as is
+// the default material of a primitive without one.
+TEST(ImportGltf, DoubleSidedIsKeptAndSingleSidedIsTheDefault) {
+    TempDir dir;
+    GltfFixture f;
+    f.extra = R"(, "materials": [{"name": "both", "doubleSided": true}, {"name": "front", "doubleSided": false},)"
+              R"( {"name": "unsaid"}])";
+    const auto materialOf = [&](const std::string& primitiveMaterial) {
+        const std::string json = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4)" + primitiveMaterial);
+        return importScene(dir.write("m.gltf", json)).scene.materials.at(0);
+    };
+    EXPECT_TRUE(materialOf(R"(, "material": 0)").doubleSided);
+    EXPECT_FALSE(materialOf(R"(, "material": 1)").doubleSided);
+    EXPECT_FALSE(materialOf(R"(, "material": 2)").doubleSided);
+    const Material fallback = materialOf("");
+    EXPECT_EQ(fallback.name, "default");
+    EXPECT_FALSE(fallback.doubleSided);
+}
+
 // KHR_materials_transmission, _ior and _volume make glass tinted by the base colour; without a
 // volume (or of thickness 0) it is thin-walled; the transmitted share no longer scatters; a
 // transmission texture is kept.

@@ -383,6 +383,35 @@ TEST(XmlWriter, TransmissionRoundTripsAndOpaqueMaterialsWriteNone) {
         EXPECT_EQ(plain.find(attribute), std::string::npos) << attribute;
 }
 
+// A single-sided material (rt extension, glTF's doubleSided false) survives a save and a load;
+// a two-sided one, the default and every thesis material, writes nothing.
+TEST(XmlWriter, SingleSidedMaterialsRoundTripAndTwoSidedWriteNothing) {
+    const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
+      <materials>
+        <material name="leaf" double_sided="false"/>
+        <material name="both" double_sided="true"/>
+        <material name="thesis"/>
+      </materials></scene>)";
+    const Scene first = loadSceneXmlFromString(xml, "<stdin>", ".");
+    ASSERT_EQ(first.materials.size(), 3u);
+    EXPECT_FALSE(first.materials[0].doubleSided);
+    EXPECT_TRUE(first.materials[1].doubleSided);
+    EXPECT_TRUE(first.materials[2].doubleSided);
+    const std::string saved = savedToStdout(first);
+    EXPECT_EQ(saved.find("double_sided"), saved.rfind("double_sided")) << "written once, for the leaf:\n" << saved;
+    const Scene back = loadSceneXmlFromString(saved, "<stdin>", ".");
+    ASSERT_EQ(back.materials.size(), 3u);
+    EXPECT_FALSE(back.materials[0].doubleSided);
+    EXPECT_TRUE(back.materials[1].doubleSided);
+    EXPECT_TRUE(back.materials[2].doubleSided);
+    EXPECT_EQ(inputErrorOf([&] {
+                  loadSceneXmlFromString(R"(<scene><camera><origin z="-5"/><destination/></camera>
+                      <materials><material name="m" double_sided="no"/></materials></scene>)",
+                                         "s.xml", ".");
+              }),
+              "s.xml:2: <material> double_sided must be true or false");
+}
+
 TEST(XmlLoader, BadTransmissionValuesAreErrors) {
     const auto error = [&](const std::string& attributes) {
         return inputErrorOf([&] {

@@ -18,8 +18,8 @@
 #include "image/tiled_textures.h"
 #include "import/load_scene.h"
 #include "progress.h"
-#include "render/cutout.h"
 #include "render/environment_light.h"
+#include "render/material_filter.h"
 #include "render/memory_estimate.h"
 #include "render/renderer.h"
 #include "render/tiles.h"
@@ -330,8 +330,8 @@ int renderAll(RenderOptions o) {
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;
     const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);  // once for every frame
-    const std::unique_ptr<CutoutFilter> cutouts = cutoutFilter(scene, &images);
-    accel->setHitFilter(cutouts.get());
+    const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, &images);  // cut-outs, single-sided
+    accel->setHitFilter(filter.get());
     const TreeReport tree{o.accel, accel->stats(), std::uint32_t(scene.primitives.size()), {}, {}};
     const AccelStats& accelStats = tree.stats;
     stats.treeNodes = accelStats.nodes;
