@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Image textures: speed against the same scenes untextured, and memory against the texture cache.
 #
-#   bench/textures.sh [build-dir]     (default: build/release; models from $RT_SHARED_DIR or ../shared)
+#   bench/textures.sh [build-dir] [speed]   (default: build/release; models from $RT_SHARED_DIR or ../shared;
+#                                            speed: the speed table alone)
 #
 # Speed: textured models of ../shared rendered straight from the model file, and the same scene
 # converted to XML with every texture attribute taken out (same geometry, lights and materials);
@@ -51,6 +52,7 @@ for model in glb/Duck/Duck.glb gltf/Suzanne/Suzanne.gltf gltf/LightsPunctualLamp
     awk -v m="$model" -v t="$textured" -v p="$plain" -v c="$(awk -v a="$first" -v b="$later" 'BEGIN { print a - b }')" \
         'BEGIN { printf "%-48s %9.3fs %9.3fs %7.2fx %7.2fs\n", m, t, p, p / t, c }'
 done
+[[ ${2:-} == speed ]] && exit 0
 
 # rss_kb of one run
 peak_kb() {

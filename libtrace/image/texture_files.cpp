@@ -115,6 +115,12 @@ private:
     std::vector<OIIO::TextureSystem*> idle_;
 };
 
+// The most probes along a ray cone's footprint (TextureOpt::anisotropic) after a bounce: fewer
+// than a camera ray's 32, for lookups whose colour is mostly weighted down by a reflection; 4
+// keeps a checker seen in a mirror as close to the supersampled one as a camera ray's view
+// (trilinear, one probe, did not: TextureFiles.ACheckerSeenInAMirrorIsFilteredToo).
+constexpr int kConeProbes = 4;
+
 // The sRGB transfer function, inverted (IEC 61966-2-1).
 float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
@@ -140,12 +146,14 @@ struct TextureFiles::Impl {
     std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> embeddedBytes;
 
     // The first three channels at `at` as stored (a grey image's one in all three), filtered
-    // over the footprint its derivatives give (mip-mapped, anisotropic: OpenImageIO's default);
-    // `c` is left as it is when the image cannot be read.
+    // over the footprint its derivatives give (mip-mapped, anisotropic: OpenImageIO's default,
+    // up to 32 probes on each of two levels; a ray cone's footprint takes at most
+    // kConeProbes, render/ray_differential.h); `c` is left as it is when the image cannot be read.
     bool sample(const Entry& e, const TexCoord& at, Color& c) const {
         if (e.file.empty()) return false;
         float rgb[3] = {c.r, c.g, c.b};
         OIIO::TextureOpt options = e.options;  // per call: the system may write to it
+        if (at.isotropic) options.anisotropic = kConeProbes;
         if (!system->texture(e.handle, nullptr, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy, e.channels,
                              rgb))
             return false;

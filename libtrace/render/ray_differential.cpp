@@ -11,7 +11,7 @@ namespace rt {
 RayDifferential RayDifferential::cone(const Vec3& d, Real radius, Real spread) {
     Vec3 a, b;
     orthonormalBasis(d, a, b);
-    return {a * radius, a * spread, b * radius, b * spread};
+    return {a * radius, a * spread, b * radius, b * spread, true};
 }
 
 Real RayDifferential::radiusAt(Real t) const {
@@ -60,6 +60,7 @@ void setUvDerivatives(const Primitives& primitives, const Vec3& d, const Hit& hi
     s.dvdx = float(x.dv);
     s.dudy = float(y.du);
     s.dvdy = float(y.dv);
+    s.isotropic = diff.isotropic;
 }
 
 }  // namespace rt

@@ -15,6 +15,9 @@
 // the whole path. That is exact for flat mirrors; the curvature of a mirror or a lens, which
 // narrows or widens the pencil of rays, is not followed (a convex mirror's reflection is filtered
 // less than it should be), and glossy lobes do not widen it (their jittered rays average).
+// A cone's lookups take fewer probes along the footprint than a camera ray's (image/
+// texture_files.cpp, kConeProbes): a surface seen at a very grazing angle in a mirror blurs a
+// little more across, for a cheaper lookup.
 #pragma once
 
 #include "core/vec3.h"
@@ -28,6 +31,8 @@ namespace rt {
 // textures are read unfiltered.
 struct RayDifferential {
     Vec3 originX, directionX, originY, directionY;
+    // A cone (after a bounce), round across the ray: its lookups take fewer probes (TexCoord::isotropic).
+    bool isotropic = false;
     constexpr bool operator==(const RayDifferential&) const = default;
 
     // A cone around the unit direction d: radius `radius` at the origin, growing by `spread` per unit distance.

@@ -21,6 +21,7 @@ struct SurfacePoint {
     Real u = 0, v = 0;      // texture coordinates
     // Their change from one pixel to the next (render/ray_differential.h); zero: read unfiltered.
     float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
+    bool isotropic = false;  // the footprint is a ray cone's (RayDifferential::isotropic)
 };
 
 // How far secondary rays start off a surface, scaled to the size of the scene: the error of a

@@ -39,6 +39,7 @@ TexCoord UvTransform::operator()(const SurfacePoint& s) const {
     c.dtdx = dx[1];
     c.dsdy = dy[0];
     c.dtdy = dy[1];
+    c.isotropic = s.isotropic;
     return c;
 }
 
@@ -73,7 +74,9 @@ Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s,
 }
 
 Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
-    return m.emissionTexture ? m.emission * textureColor(scene, *m.emissionTexture, s, images) : m.emission;
+    // Under a black factor the texture cannot matter: not read.
+    if (!m.emissionTexture || m.emission == Color{}) return m.emission;
+    return m.emission * textureColor(scene, *m.emissionTexture, s, images);
 }
 
 float transmissionAt(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {

@@ -18,6 +18,7 @@ namespace rt {
 struct TexCoord {
     float s = 0, t = 0;
     float dsdx = 0, dtdx = 0, dsdy = 0, dtdy = 0;
+    bool isotropic = false;  // a ray cone's footprint (RayDifferential::isotropic): fewer probes
 };
 
 // A texture's coordinate transform, as KHR_texture_transform defines it: scaled, then rotated,

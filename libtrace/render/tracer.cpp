@@ -81,6 +81,11 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
     Hit hit;
     RayCounters& work = depth == 0 ? counters.camera : counters.reflection;
     if (!accel_.intersect(ray, kInfinity, hit, work)) return scene_.background;
+    return shadeHit(ray, hit, depth, inBundle, rng, counters, differential);
+}
+
+Color Tracer::shadeHit(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
+                       RenderCounters& counters, const RayDifferential& differential) const {
     return shade(ray, hit, shadedSurfaceAt(scene_, ray, hit, images_, differential), depth, inBundle, rng, counters,
                  differential.radiusAt(hit.t));
 }
@@ -179,15 +184,20 @@ Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material&
     Vec3 r = mirror(dir, s.shadingNormal);
     // keepReflectionAbove keeps r out of the surface but for rounding at grazing incidence
     if (dot(r, s.geometricNormal) <= 0) r = mirror(r, s.geometricNormal);
-    return lobe({origin, r}, s.geometricNormal, glossySpread(scene_, m, s, images_), depth, inBundle, rng, counters,
-                cone);
+    return lobe({origin, r}, s.geometricNormal, m, s, true, depth, inBundle, rng, counters, cone);
 }
 
-Color Tracer::lobe(const Ray& axis, const Vec3& side, float sigma, int depth, bool inBundle, SampleRng& rng,
-                   RenderCounters& counters, Real cone) const {
-    if (!settings_.glossyReflections || !(sigma > 0)) {
+Color Tracer::lobe(const Ray& axis, const Vec3& side, const Material& m, const SurfacePoint& s, bool rough, int depth,
+                   bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const {
+    const auto spread = [&] { return rough ? glossySpread(scene_, m, s, images_) : 0.0f; };
+    const float sigma = settings_.glossyReflections ? spread() : 0;
+    if (!(sigma > 0)) {
         ++counters.reflection.rays;
-        return trace(axis, depth + 1, inBundle, rng, counters, secondary(axis.direction, cone, 2 * sigma));
+        Hit hit;
+        if (!accel_.intersect(axis, kInfinity, hit, counters.reflection)) return scene_.background;
+        // Its footprint widens instead, by a sigma read only for a ray that hits something.
+        const float widen = 2 * (settings_.glossyReflections ? sigma : spread());
+        return shadeHit(axis, hit, depth + 1, inBundle, rng, counters, secondary(axis.direction, cone, widen));
     }
     // Directions around the axis, offset in the plane across it by a 2-D normal distribution
     // with this sigma (about the angle in radians, for small sigmas).
@@ -213,8 +223,7 @@ Color Tracer::transmitted(const SurfacePoint& s, const Material& m, float weight
     if (split.reflected >= 1) return {};  // total internal reflection
     const Transmission& t = m.transmission;
     const Ray through{s.point - s.geometricNormal * epsilon_, split.direction};
-    const float sigma = t.thin ? 0 : glossySpread(scene_, m, s, images_);
-    return lobe(through, -s.geometricNormal, sigma, depth, inBundle, rng, counters, cone) * t.color *
+    return lobe(through, -s.geometricNormal, m, s, !t.thin, depth, inBundle, rng, counters, cone) * t.color *
            (weight * (1 - split.reflected));
 }
 

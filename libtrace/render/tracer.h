@@ -57,11 +57,16 @@ private:
                      RenderCounters& counters) const;
     Color reflection(const SurfacePoint& s, const Vec3& dir, const Material& m, int depth, bool inBundle,
                      SampleRng& rng, RenderCounters& counters, Real cone) const;
-    // What comes along `axis` from a lobe of width sigma (glossySpread) on the side `side`
-    // faces: with distributed ray tracing the mean of a bundle of rays jittered around it
-    // (thesis 2.6.2), else the one ray, whose texture footprint widens by 2 sigma instead.
-    Color lobe(const Ray& axis, const Vec3& side, float sigma, int depth, bool inBundle, SampleRng& rng,
-               RenderCounters& counters, Real cone) const;
+    // What comes along `axis` from the glossy lobe of material m at s, of width sigma
+    // (glossySpread; 0 unless `rough`), on the side `side` faces: with distributed ray tracing
+    // the mean of a bundle of rays jittered around it (thesis 2.6.2), else the one ray, whose
+    // texture footprint widens by 2 sigma instead. sigma may take a texture lookup: the one
+    // ray reads it only if it hits something.
+    Color lobe(const Ray& axis, const Vec3& side, const Material& m, const SurfacePoint& s, bool rough, int depth,
+               bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const;
+    // The colour of `hit`, found by `ray`, whose footprint is `differential`.
+    Color shadeHit(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
+                   const RayDifferential& differential) const;
     // What a shadow ray of unit direction lets through over `distance`: black when blocked.
     Color transmittance(const Ray& ray, Real distance, RenderCounters& counters) const;
     // The colour the transmitted ray of `split` brings through material m, whose transmission is

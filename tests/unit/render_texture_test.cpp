@@ -72,3 +72,60 @@ TEST(Tracer, AnEmitterIsSeenInAMirrorWithoutLights) {
     EXPECT_EQ(tracer.trace({{0, 0, -2}, {0, 0, 1}}, 0, false, rng, c), (Color{1, 0.5f, 0.25f}));
     EXPECT_EQ(tracer.trace({{0, 0, -2}, {0, 0, -1}}, 0, false, rng, c), (Color{1, 0.5f, 0.25f}));  // directly
 }
+
+namespace {
+
+// Every texel mid grey; counts the lookups of colour (lookup) and of data (data).
+class CountingTextures : public ImageTextures {
+public:
+    using ImageTextures::ImageTextures;
+    Color lookup(std::uint32_t, const TexCoord&) const override {
+        ++colors;
+        return {0.5f, 0.5f, 0.5f};
+    }
+    Color data(std::uint32_t, const TexCoord&) const override {
+        ++datas;
+        return {0.5f, 0.5f, 0.5f};
+    }
+    float alpha(std::uint32_t, float, float, bool) const override { return 1; }
+    bool hasAlpha(std::uint32_t, bool) const override { return false; }
+    mutable int colors = 0, datas = 0;
+};
+
+// The counted lookups of a 4 x 4 render of `scene`, one thread.
+CountingTextures countLookups(const Scene& scene) {
+    const NaiveAccelerator accel(scene.primitives);
+    CountingTextures images(scene);
+    const Tracer tracer(scene, accel, test::picture(4, 4), &images);
+    RenderCounters c;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) tracer.pixel(x, y, c);
+    return images;
+}
+
+}  // namespace
+
+// The roughness only widens the footprint of the one mirror ray (no distributed ray tracing):
+// a ray that leaves the scene reads none, the lookups of a textured glTF material's reflection.
+TEST(Tracer, AMirrorRayThatLeavesTheSceneReadsNoRoughnessTexture) {
+    Scene s;
+    s.camera.origin = {0, 0, -2};
+    s.camera.destination = {0, 0, 0};
+    s.camera.fovDegrees = 60;
+    s.textures.push_back({.name = "colour", .path = "colour.png"});
+    s.textures.push_back({.name = "roughness", .path = "roughness.png"});
+    Material m{.name = "metal", .reflection = 0.5f, .colorTexture = 0};
+    m.metallicRoughness = MetallicRoughnessFactors{.metallic = 1, .roughness = 1};
+    m.metallicRoughnessTexture = 1;
+    const auto metal = test::addMaterial(s, m);
+    test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, metal);
+    Scene facing = s;  // the same with a wall behind the camera, where the mirror rays land
+    test::addQuad(facing, {-9, -9, -5}, {-9, 9, -5}, {9, 9, -5}, {9, -9, -5}, metal);
+    s.flatten();
+    facing.flatten();
+    const CountingTextures alone = countLookups(s);
+    EXPECT_EQ(alone.colors, 16);
+    EXPECT_EQ(alone.datas, 0);
+    const CountingTextures walled = countLookups(facing);
+    EXPECT_GT(walled.datas, 0);
+}
