@@ -4,7 +4,7 @@
 //   build/release/bench/bench_thesis_frame --benchmark_filter=/threads:1/
 // Table 4.5 (bench/thesis_tables.sh) builds it with eight compilers and flag sets, so it compiles
 // only what the frame runs (bench/CMakeLists.txt): not the importers, OpenImageIO and XML code that
-// reading a scene file brings, which took about 70 % of each build's CPU time and are not what the
+// reading a scene file brings, which took two thirds of each build's CPU time and are not what the
 // table measures. The scene is the one `rt-convert --generate` writes: the rays, pixels and
 // instructions of the frame are those of bench_render on that file.
 #include <cstdlib>
