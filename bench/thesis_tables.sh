@@ -56,16 +56,12 @@ if (( tables )); then
         cmake --preset "$preset" >/dev/null
         cmake --build --preset "$preset" --target rt-render rt-convert >/dev/null
     done
-else
-    scenes=(ships)  # Table 4.5's only scene
-    cmake --preset release >/dev/null
-    cmake --build --preset release --target rt-convert >/dev/null
+    for s in "${scenes[@]}"; do
+        build/release/tools/convert/rt-convert --generate "$s" -o "$work/$s.xml" -q
+    done
 fi
 render_d=build/release/tools/render/rt-render
 render_f=build/release-float/tools/render/rt-render
-for s in "${scenes[@]}"; do
-    build/release/tools/convert/rt-convert --generate "$s" -o "$work/$s.xml" -q
-done
 
 # measure RENDERER SCENE ARGS...: the mean of the -b line's fields over the runs, as
 # "build render total objects lights nodes tests runs".
@@ -168,20 +164,21 @@ tables() {
 }
 
 # Table 4.5: the ships render built by g++-12 and clang++-14 at -O2, -O3 and -O3 -march=native
-# with geometry in double, and at -O3 in float: eight builds of bench_render (bench/render.cpp, the libraries
-# and one file; rt-render's own sources are not needed), each in build/compilers-NAME, through
-# ccache. bench_render renders in one process again and again and reports the CPU time of each
-# frame: ships renders in 0.05 s, and a process of rt-render spends 0.3 s more on starting
-# OpenImageIO and loading, which would hide the compilers' difference (thesis 4.5 measured 2 s).
+# with geometry in double, and at -O3 in float: eight builds of bench_thesis_frame
+# (bench/thesis_frame.cpp and the ray-tracing layers: no importers, OpenImageIO or tools), each in
+# build/compilers-NAME, through ccache. It makes ships in memory, renders it in one process again
+# and again and reports the CPU time of each frame: ships renders in 0.05 s, and a process of
+# rt-render spends 0.3 s more on starting OpenImageIO and loading, which would hide the compilers'
+# difference (thesis 4.5 measured 2 s).
 compiler_flags=("-O3" "-O2" "-O3 -march=native")  # -O3 first: CMake's Release, the project's own build
-float_flags=("-O3")  # float is the thesis's question (4.4, 4.5) at the default flags; a build not in ccache is ~100 s on two cores
+float_flags=("-O3")  # float is the thesis's question (4.4, 4.5) at the default flags; a build not in ccache is ~35 s on two cores
 
-# compiler_build CXX FLAGS REAL: configures and builds bench_render; prints its path.
+# compiler_build CXX FLAGS REAL: configures and builds bench_thesis_frame; prints its path.
 compiler_build() {
     local cxx="$1" flags="$2" real="$3"
     local dir="build/compilers-${cxx}${flags// /}-$real"  # two levels deep, as build/release: ccache shares
     # ccache hashes the compiler's name: g++-12 by the presets' name c++ where that is the same
-    # compiler, so that the -O3 builds are the release presets' objects from the cache.
+    # compiler, so that the -O3 double build is the release preset's bench_thesis_frame from the cache.
     # The full path: CMake takes a bare name for a change of compiler and starts the build afresh.
     cxx="$(command -v "$cxx")"
     [[ "$(realpath "$cxx")" == "$(realpath "$(command -v c++)")" ]] && cxx="$(command -v c++)"
@@ -189,18 +186,18 @@ compiler_build() {
         -DCMAKE_CXX_FLAGS_RELEASE="$flags -DNDEBUG" -DRT_REAL="$real" -DRT_BUILD_TESTS=OFF -DRT_BUILD_BENCH=ON \
         >/dev/null
     local TIMEFORMAT="thesis_tables: built $dir in %0R s (CPU %0U + %0S s)"
-    time cmake --build "$dir" --target bench_render >/dev/null
-    echo "$dir/bench/bench_render"
+    time cmake --build "$dir" --target bench_thesis_frame >/dev/null
+    echo "$dir/bench/bench_thesis_frame"
 }
 
 # frame_seconds BENCH: the mean CPU time of one ships frame, one thread, over --runs repetitions.
 frame_seconds() {
-    RT_BENCH_SCENE="$work/ships.xml" RT_BENCH_ACCEL=kd "$1" --benchmark_filter=/threads:1/ \
+    RT_BENCH_THESIS_SCENE=ships RT_BENCH_ACCEL=kd "$1" --benchmark_filter=/threads:1/ \
         --benchmark_repetitions="$runs" --benchmark_min_time=0.5 --benchmark_report_aggregates_only=true \
         --benchmark_format=json 2>/dev/null |
         python3 -c 'import json, sys
 b = {x["aggregate_name"]: x for x in json.load(sys.stdin)["benchmarks"] if x.get("run_type") == "aggregate"}
-print("%.4f" % (b["mean"]["cpu_time"] / 1000))'  # the unit is ms (bench/render.cpp)
+print("%.4f" % (b["mean"]["cpu_time"] / 1000))'  # the unit is ms (bench/render_frames.h)
 }
 
 # spread REAL: the slowest over the fastest of compiler_table's t[*/REAL] cells.
@@ -224,7 +221,7 @@ compiler_table() {
         done
     done
     log "compilers: the builds and their measurements took $((SECONDS - start)) s"
-    echo "#### Table 4.5: compilers, ships, KD, one thread, CPU seconds per frame (mean of $runs repetitions of bench_render)"
+    echo "#### Table 4.5: compilers, ships, KD, one thread, CPU seconds per frame (mean of $runs repetitions of bench_thesis_frame)"
     echo
     echo "| compiler | flags | double | float | F / D |"
     echo "|---|---|---:|---:|---:|"
