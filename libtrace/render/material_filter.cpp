@@ -34,7 +34,7 @@ MaterialFilter::MaterialFilter(const Scene& scene, const ImageTextures* images) 
 
 bool MaterialFilter::accepts(const Ray& ray, const Hit& hit) const {
     const std::uint32_t id = scene_.primitives.material(hit.prim);
-    const std::uint8_t tests = id < tests_.size() ? tests_[id] : kNone;
+    const std::uint8_t tests = id < tests_.size() ? tests_[id] : std::uint8_t(kNone);
     if (tests == kNone) return true;
     if ((tests & kBackFace) && fromBehind(scene_.primitives, ray, hit)) return false;
     return !(tests & kCutout) || opaqueAt(scene_, scene_.materials[id], hit, images_);
