@@ -103,11 +103,7 @@ TEST(Cutout, TheShadowOfACutoutQuadHasTheMasksShape) {
     const CameraRays camera(scene.camera, settings.width, settings.height);
     int compared = 0, agree = 0;
     std::vector<Framebuffer> pictures;
-    for (AccelKind kind : {AccelKind::Naive, AccelKind::Bsp, AccelKind::Kd}) {
-        AccelSettings accelSettings;
-        accelSettings.kind = kind;
-        const std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, accelSettings);
-        accel->setHitFilter(filter.get());
+    for (const std::unique_ptr<Accelerator>& accel : test::everyAccelerator(scene.primitives, filter.get())) {
         RenderStats stats;
         pictures.push_back(render(scene, *accel, settings, stats, {}, &images));
     }

@@ -44,11 +44,7 @@ const Vec3 kBehind{0, 0, -5};
 Framebuffer renderEveryTree(const Scene& scene, const RenderSettings& settings) {
     const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, nullptr);
     std::vector<Framebuffer> pictures;
-    for (AccelKind kind : {AccelKind::Naive, AccelKind::Bsp, AccelKind::Kd}) {
-        AccelSettings accelSettings;
-        accelSettings.kind = kind;
-        const std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, accelSettings);
-        accel->setHitFilter(filter.get());
+    for (const std::unique_ptr<Accelerator>& accel : test::everyAccelerator(scene.primitives, filter.get())) {
         RenderStats stats;
         pictures.push_back(render(scene, *accel, settings, stats));
     }
@@ -85,11 +81,7 @@ TEST(SingleSided, ShadowRaysPassThroughTheBackOnly) {
     const Scene scene = sheetBeforeBackdrop(false, kFront);
     const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, nullptr);
     ASSERT_TRUE(filter);
-    for (AccelKind kind : {AccelKind::Naive, AccelKind::Bsp, AccelKind::Kd}) {
-        AccelSettings accelSettings;
-        accelSettings.kind = kind;
-        const std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, accelSettings);
-        accel->setHitFilter(filter.get());
+    for (const std::unique_ptr<Accelerator>& accel : test::everyAccelerator(scene.primitives, filter.get())) {
         RayCounters counters;
         EXPECT_FALSE(accel->occluded({{0.2, 0.1, -1}, {0, 0, 1}}, 2, counters)) << "from behind";
         EXPECT_TRUE(accel->occluded({{0.2, 0.1, 1}, {0, 0, -1}}, 2, counters)) << "from the front";

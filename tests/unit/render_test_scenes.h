@@ -4,7 +4,10 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <memory>
+#include <vector>
 
+#include "accel/build.h"
 #include "accel/naive.h"
 #include "render/render_settings.h"
 #include "render/renderer.h"
@@ -130,6 +133,19 @@ inline Scene cylindersAndCones() {
     s.looseObjects.add<Cone>({{{2.3, 0.3, -0.2}, {1.6, 1.2, 0.4}, 0.6, 0.3}}, 3);      // tilted frustum, glossy
     s.flatten();
     return s;
+}
+
+// The naive list, the BSP and the KD tree over `prims`, each with `filter` (may be null): the
+// three every agreement test compares.
+inline std::vector<std::unique_ptr<Accelerator>> everyAccelerator(const Primitives& prims, const HitFilter* filter) {
+    std::vector<std::unique_ptr<Accelerator>> accels;
+    for (AccelKind kind : {AccelKind::Naive, AccelKind::Bsp, AccelKind::Kd}) {
+        AccelSettings settings;
+        settings.kind = kind;
+        accels.push_back(buildAccelerator(prims, settings));
+        accels.back()->setHitFilter(filter);
+    }
+    return accels;
 }
 
 }  // namespace rt::test
