@@ -135,6 +135,10 @@ struct TextureFiles::Impl {
         int channels = 0;
         int alphaChannel = -1;  // none
         bool srgb = false;
+        // Every channel of a picture of one colour (constantTexels): its lookups return it without
+        // asking OpenImageIO, which filters the same texels to the same value at some thousand
+        // instructions a lookup. Empty for any other picture.
+        std::vector<float> constant;
     };
     OIIO::TextureSystem* system = nullptr;
     std::string txCache;  // tiled_textures.h; "off" once a copy could not be made
@@ -152,14 +156,21 @@ struct TextureFiles::Impl {
     bool sample(const Entry& e, const TexCoord& at, Color& c) const {
         if (e.file.empty()) return false;
         float rgb[3] = {c.r, c.g, c.b};
-        OIIO::TextureOpt options = e.options;  // per call: the system may write to it
-        if (at.isotropic) options.anisotropic = kConeProbes;
-        if (!system->texture(e.handle, nullptr, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy, e.channels,
-                             rgb))
+        if (!e.constant.empty())
+            std::copy_n(e.constant.begin(), e.channels, rgb);
+        else if (!filter(e, at, rgb))
             return false;
         if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
         c = {rgb[0], rgb[1], rgb[2]};
         return true;
+    }
+
+    // OpenImageIO's lookup of e's first `e.channels` channels into `rgb`.
+    bool filter(const Entry& e, const TexCoord& at, float* rgb) const {
+        OIIO::TextureOpt options = e.options;  // per call: the system may write to it
+        if (at.isotropic) options.anisotropic = kConeProbes;
+        return system->texture(e.handle, nullptr, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy, e.channels,
+                               rgb);
     }
 
     // The channel alpha() reads (a mask without alpha: its first), or -1 for none.
@@ -195,11 +206,27 @@ struct TextureFiles::Impl {
         e.channels = std::min(spec->nchannels, 3);
         e.alphaChannel = spec->alpha_channel >= 0 ? spec->alpha_channel : spec->nchannels == 2 ? 1 : -1;
         e.srgb = !spec->format.is_floating_point();
+        e.constant = constantTexels(e.handle, *spec);
         e.options.swrap = wrapOf(t.wrapS);
         e.options.twrap = wrapOf(t.wrapT);
         // Bilinear: OpenImageIO's default (smart bicubic) blurs a magnified texture with a B-spline.
         e.options.interpmode = OIIO::TextureOpt::InterpBilinear;
         return e;
+    }
+
+    // Every channel of the picture `handle` (stored as `spec`) if it is of one colour, as a texel
+    // reads (OpenImageIO's filter of equal texels gave it within rounding in the last bit): told by
+    // the mark its tiled copy carries (oiio:ConstantColor, by make_texture's constant_color_detect),
+    // whose own values are rounded to six digits. Empty for any other picture.
+    std::vector<float> constantTexels(OIIO::TextureSystem::TextureHandle* handle, const OIIO::ImageSpec& spec) {
+        std::vector<float> texel(spec.nchannels);
+        OIIO::TextureOpt options;
+        if (!system->get_texture_info(handle, nullptr, 0, OIIO::ustring("constantcolor"),
+                                      OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, spec.nchannels), texel.data()) ||
+            !system->get_texels(handle, nullptr, options, 0, spec.x, spec.x + 1, spec.y, spec.y + 1, spec.z, spec.z + 1,
+                                0, spec.nchannels, OIIO::TypeFloat, texel.data()))
+            return {};
+        return texel;
     }
 
     // The file the lookups read for `file`, the source of `t` stored as `spec`: a tiled, MIP-mapped
@@ -246,7 +273,9 @@ struct TextureFiles::Impl {
 };
 
 bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
-    return impl_->alphaChannel(impl_->entries[index], mask) >= 0;
+    const Impl::Entry& e = impl_->entries[index];
+    const int channel = impl_->alphaChannel(e, mask);
+    return channel >= 0 && (e.constant.empty() || e.constant[channel] != 1);
 }
 
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureCacheSettings& cache)
@@ -279,10 +308,13 @@ float TextureFiles::alpha(std::uint32_t index, float s, float t, bool mask) cons
     const Impl::Entry& e = impl_->entries[index];
     const int channel = impl_->alphaChannel(e, mask);
     if (channel < 0) return 1;
+    if (!e.constant.empty()) return e.constant[channel];
     float a = 1;
     OIIO::TextureOpt options = e.options;
     options.firstchannel = channel;
-    // Read during traversal, where rays carry no differentials: the finest level.
+    // Read during traversal, where rays carry no differentials: the finest level, one bilinear
+    // probe, which OpenImageIO's no-MIP mode reaches without the footprint's set-up.
+    options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
     if (!impl_->system->texture(e.handle, nullptr, options, s, t, 0, 0, 0, 0, 1, &a)) return 1;
     return a;
 }

@@ -32,9 +32,13 @@ namespace fs = std::filesystem;
 namespace {
 
 // What a copy is made with; part of its name, so that changing anything here makes new copies.
-// Tiles of 64 x 64 texels, zip-compressed, MIP levels by make_texture's bilinear resampling, in
-// the source's own pixel type (8-bit stays 8-bit: sRGB decoding is done after filtering, as before).
-constexpr const char* kCopySettings = "rt tx 1: 64x64 zip, OpenImageIO " OIIO_VERSION_STRING;
+// Tiles of 64 x 64 texels, uncompressed (inflating zip tiles took 8-15 % of a textured render,
+// docs/benchmarks.md), MIP levels by make_texture's bilinear resampling, in the source's own pixel
+// type (8-bit stays 8-bit: sRGB decoding is done after filtering, as before). A picture of one
+// colour becomes one small level marked with it (oiio:ConstantColor), whose lookups then need no
+// filter (image/texture_files.cpp).
+constexpr const char* kCopySettings =
+    "rt tx 2: 64x64 uncompressed, constant colour marked, OpenImageIO " OIIO_VERSION_STRING;
 
 std::string hex(std::uint64_t v) {
     char text[17];
@@ -164,6 +168,10 @@ void makeCopy(const TextureSource& source, const std::string& target) {
     config.attribute("maketx:compute_average", 0);  // nor their average
     config.attribute("maketx:forcefloat", 0);       // the levels made in the source's type: a quarter the memory
     config.attribute("maketx:fileformatname", "tiff");
+    config.attribute("maketx:constant_color_detect", 1);
+    config.attribute("compression", "none");
+    // OpenImageIO believes a file's oiio:ConstantColor only where its Software tag says OpenImageIO made it.
+    picture.specmod().attribute("Software", std::string("OpenImageIO ") + OIIO_VERSION_STRING + " : " + kCopySettings);
     if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, picture, target, config))
         throw std::runtime_error(OIIO::geterror());
     checkWholeCopy(target);

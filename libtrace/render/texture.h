@@ -51,7 +51,8 @@ public:
     // gives its first channel if `mask` (a greyscale mask, as OBJ's map_d), else 1. Not
     // colour-decoded. Thread-safe.
     virtual float alpha(std::uint32_t index, float s, float t, bool mask) const = 0;
-    // Whether the image has what alpha(index, ..., mask) reads; without it alpha is 1 everywhere.
+    // Whether alpha(index, ..., mask) can be other than 1: the image has what it reads, and that is
+    // not 1 everywhere (a picture of one colour, opaque).
     virtual bool hasAlpha(std::uint32_t index, bool mask) const = 0;
     const UvTransform& uvTransform(std::uint32_t index) const { return transforms_[index]; }
 

@@ -198,3 +198,19 @@ TEST(TextureFiles, AlphaIsTheAlphaChannelOrTheGreyOfAMask) {
     EXPECT_FALSE(images.hasAlpha(2, false));
     for (const char* name : {"alpha4", "alpha1", "alpha3"}) std::filesystem::remove(dir + "/" + name + ".png");
 }
+
+// Cut-outs read the finest level with one bilinear probe (no MIP footprint: traversal has no
+// differentials): across the edge of a cell the alpha blends the two nearest texels.
+TEST(TextureFiles, AlphaBlendsTheTwoNearestTexelsOfTheFinestLevel) {
+    const std::string path = testing::TempDir() + "/alpha-blend.png";
+    writeMask(path, 4);
+    Scene scene;
+    scene.textures.push_back({.name = "mask", .path = path});
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings);
+    const float row = 0.5f / kSize;  // a row of texel centres; texel kCell - 1 is opaque, texel kCell clear
+    EXPECT_EQ(images.alpha(0, float(kCell) / kSize, row, false), 0.5f);
+    EXPECT_EQ(images.alpha(0, (kCell + 0.25f) / kSize, row, false), 0.25f);  // a quarter of the way past the edge
+    EXPECT_EQ(images.alpha(0, (kCell - 0.25f) / kSize, row, false), 0.75f);
+    std::filesystem::remove(path);
+}

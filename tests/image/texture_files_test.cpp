@@ -339,6 +339,8 @@ TEST(TextureFiles, AnUntiledPictureIsReadThroughATiledCopyMadeOnceAndReused) {
     ASSERT_TRUE(copy.init_spec(copies[0].string(), 0, 0));
     EXPECT_GT(copy.spec().tile_width, 0);
     EXPECT_EQ(copy.nmiplevels(), 5);  // 16, 8, 4, 2 and 1 texels a side
+    // Uncompressed: a tile read inflates nothing (docs/benchmarks.md, "Textures").
+    EXPECT_EQ(copy.spec().get_string_attribute("compression"), "none");
     // Dated in the past, so that a rewrite within the clock's resolution would show too.
     const auto past = std::filesystem::last_write_time(copies[0]) - std::chrono::hours(1);
     std::filesystem::last_write_time(copies[0], past);
@@ -426,4 +428,37 @@ TEST(TextureFiles, ATiledCopyRendersAsTheSourceReadAsItIs) {
     const double rms = test::rmsDifference(asItIs, throughTheCopy);
     EXPECT_LT(rms, 0.01) << "RMS difference";
     std::filesystem::remove(path);
+}
+
+// A picture of one colour is answered from its copy's one texel (marked by constant_color_detect),
+// without OpenImageIO's filter: the values of the picture read as it is, at any footprint; and
+// opaque, it cuts nothing out.
+TEST(TextureFiles, APictureOfOneColourLooksUpAsBeforeAndOpaqueHasNoAlpha) {
+    const std::string folder = freshFolder("tx-constant"), dir = testing::TempDir();
+    Scene scene;
+    for (const float alpha : {1.0f, 0.4f}) {
+        OIIO::ImageBuf picture(OIIO::ImageSpec(kSize, kSize, 4, OIIO::TypeDesc::UINT8));
+        OIIO::ImageBufAlgo::fill(picture, {0.3f, 0.6f, 0.9f, alpha});
+        const std::string path = dir + "/tx-constant" + std::to_string(scene.textures.size()) + ".png";
+        ASSERT_TRUE(picture.write(path));
+        scene.textures.push_back({.name = path, .path = path});
+    }
+    std::vector<std::string> warnings;
+    const TextureFiles copied(scene, warnings, {.txCache = folder}), asItIs(scene, warnings, {.txCache = "off"});
+    EXPECT_TRUE(warnings.empty());
+    for (std::uint32_t i : {0u, 1u})
+        for (const TexCoord& at : {TexCoord{0.1f, 0.7f}, TexCoord{0.5f, 0.5f, 0.2f, 0.01f, -0.03f, 0.1f},
+                                   TexCoord{0.9f, 0.2f, 0.01f, 0.0f, 0.0f, 0.01f, true}}) {
+            // OpenImageIO's filter of equal texels adds rounding error in the last bits.
+            const Color a = copied.lookup(i, at), b = asItIs.lookup(i, at), c = copied.data(i, at),
+                        d = asItIs.data(i, at);
+            for (const auto& [got, want] :
+                 {std::pair(a.r, b.r), {a.g, b.g}, {a.b, b.b}, {c.r, d.r}, {c.g, d.g}, {c.b, d.b}})
+                EXPECT_NEAR(got, want, 1e-6f);
+            EXPECT_NEAR(copied.alpha(i, at.s, at.t, false), asItIs.alpha(i, at.s, at.t, false), 1e-6f);
+        }
+    EXPECT_FALSE(copied.hasAlpha(0, false));
+    EXPECT_TRUE(asItIs.hasAlpha(0, false));  // not known to be opaque: a PNG carries no such mark
+    EXPECT_TRUE(copied.hasAlpha(1, false));
+    for (const Texture& t : scene.textures) std::filesystem::remove(t.path);
 }
