@@ -198,7 +198,7 @@ TEST(KdTree, SameTreeForAnyNumberOfThreads) {
 // events carried from the root, the sort of each axis. Clusters of every kind under large
 // triangles across the scene, so that the large nodes clip hundreds of primitives; built
 // with binning at the top, with the exact sweep from the root, and with sampling.
-TEST(KdTree, TopLevelsOnSeveralThreadsGiveTheTreeOfOneThread) {
+TEST(KdTree, SameTreeForAnyNumberOfThreadsInTheTopLevels) {
     Primitives prims = generateScene({26000, 5000, Placement::Clustered, 21, 1500, 1500}).primitives;
     std::mt19937 gen(22);
     std::uniform_real_distribution<double> coordinate(-1, 1);
