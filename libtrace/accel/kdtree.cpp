@@ -104,7 +104,8 @@ private:
         return best;
     }
 
-    // The three axes on three threads in a large node (a root below binningMinimum).
+    // The three axes on three threads in a large node (a root that carries events, when
+    // binningMinimum is above its size).
     static void sortEvents(KdNode& node) {
         forEachChunk(nodeChunks(3, 1, node.boxes.size()), [&](std::size_t, std::size_t begin, std::size_t end) {
             for (std::size_t axis = begin; axis < end; ++axis) {

@@ -70,7 +70,7 @@ void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split) {
 // A node of kTaskPrimitives references or more builds its lower child as a task and its upper
 // one itself. Nobody waits for the task: in libgomp a thread waiting at a taskwait runs only
 // the tasks its own task made, so a thread whose subtree was done sat idle while the other
-// still had subtrees queued (the tree scene's build took 8 % less on two threads than on one).
+// still had subtrees queued (for up to a third of a second in the tree scene's build).
 // The threads wait at the end of the parallel region, where they run any task. An exception
 // (out of memory) is captured in `errors` and abandons the build.
 template <typename BuildNode, typename SplitFunction>
