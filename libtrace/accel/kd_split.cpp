@@ -4,6 +4,8 @@
 #include <bit>
 #include <utility>
 
+#include "accel/build_chunks.h"
+
 namespace rt {
 
 void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vector<SplitEvent>& events) {
@@ -161,56 +163,103 @@ private:
     std::vector<float> planes_;
 };
 
-// Offers every plane of `planes` on `axis` to `best`, with the boxes below, above and in it
-// counted in one pass over the boxes.
-void considerPlanes(const std::vector<FloatBox>& boxes, int axis, const EvenPlanes& planes, const SahModel& sah,
-                    SahSplit& best) {
-    const std::size_t n = boxes.size(), m = planes.size();
-    std::vector<std::size_t> starts(m + 1, 0);  // starts[k]: boxes whose first plane above lo is k
-    std::vector<std::size_t> ends(m + 1, 0);    // ends[k]: boxes whose first plane with hi <= plane is k
-    std::vector<std::size_t> planars(m, 0);     // planars[k]: boxes lying in plane k
-    for (const FloatBox& b : boxes) {
+// How many boxes start, end and lie in each plane of one axis's EvenPlanes: starts[k] counts
+// the boxes whose first plane above their lower bound is k, ends[k] those whose first plane at
+// or above their upper bound is k, planars[k] those lying in plane k.
+struct PlaneCounts {
+    std::vector<std::size_t> starts, ends, planars;
+
+    explicit PlaneCounts(std::size_t planes) : starts(planes + 1, 0), ends(planes + 1, 0), planars(planes, 0) {}
+
+    void add(const FloatBox& b, int axis, const EvenPlanes& planes) {
         ++starts[planes.atOrBelow(b.lo[axis])];
         const std::size_t end = planes.below(b.hi[axis]);
         ++ends[end];
-        if (b.planar(axis) && end != m && planes[end] == b.lo[axis]) ++planars[end];
+        if (b.planar(axis) && end != planes.size() && planes[end] == b.lo[axis]) ++planars[end];
     }
-    std::size_t started = 0, ended = 0;
-    for (std::size_t k = 0; k < m; ++k) {
-        started += starts[k];
-        ended += ends[k];
-        sah.consider(axis, planes[k], started, n - ended, planars[k], best);
+    void add(const PlaneCounts& o) {
+        for (std::size_t k = 0; k < starts.size(); ++k) starts[k] += o.starts[k];
+        for (std::size_t k = 0; k < ends.size(); ++k) ends[k] += o.ends[k];
+        for (std::size_t k = 0; k < planars.size(); ++k) planars[k] += o.planars[k];
     }
+};
+
+struct AxisPlanes {
+    int axis;
+    EvenPlanes planes;
+};
+
+// Offers every plane of `axes` to `best`, axis by axis in order, with the boxes below, above
+// and in it counted in one pass over the boxes (in chunks on all threads in a large node: the
+// counts are integers, so their sum is the same in any order).
+SahSplit bestOfPlanes(const std::vector<FloatBox>& boxes, const std::vector<AxisPlanes>& axes, const SahModel& sah) {
+    const std::size_t n = boxes.size();
+    const Chunks chunks = nodeChunks(n);
+    std::vector<std::vector<PlaneCounts>> counts(chunks.count());  // per chunk, per axis
+    forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
+        for (const AxisPlanes& a : axes) counts[c].emplace_back(a.planes.size());
+        for (std::size_t i = begin; i < end; ++i)
+            for (std::size_t a = 0; a < axes.size(); ++a) counts[c][a].add(boxes[i], axes[a].axis, axes[a].planes);
+    });
+    for (std::size_t c = 1; c < counts.size(); ++c)
+        for (std::size_t a = 0; a < axes.size(); ++a) counts[0][a].add(counts[c][a]);
+    SahSplit best;
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        const PlaneCounts& count = counts[0][a];
+        std::size_t started = 0, ended = 0;
+        for (std::size_t k = 0; k < axes[a].planes.size(); ++k) {
+            started += count.starts[k];
+            ended += count.ends[k];
+            sah.consider(axes[a].axis, axes[a].planes[k], started, n - ended, count.planars[k], best);
+        }
+    }
+    return best;
+}
+
+// The lowest lower and highest upper bound of the boxes on each axis (empty: lo > hi).
+FloatBox extentOf(const std::vector<FloatBox>& boxes) {
+    const Chunks chunks = nodeChunks(boxes.size());
+    std::vector<FloatBox> extents(chunks.count());
+    forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
+        FloatBox& e = extents[c];
+        for (int axis = 0; axis < 3; ++axis) {
+            e.lo[axis] = std::numeric_limits<float>::infinity();
+            e.hi[axis] = -e.lo[axis];
+        }
+        for (std::size_t i = begin; i < end; ++i) {
+            for (int axis = 0; axis < 3; ++axis) {
+                e.lo[axis] = std::min(e.lo[axis], boxes[i].lo[axis]);
+                e.hi[axis] = std::max(e.hi[axis], boxes[i].hi[axis]);
+            }
+        }
+    });
+    FloatBox extent = extents[0];
+    for (const FloatBox& e : extents) {
+        for (int axis = 0; axis < 3; ++axis) {
+            extent.lo[axis] = std::min(extent.lo[axis], e.lo[axis]);
+            extent.hi[axis] = std::max(extent.hi[axis], e.hi[axis]);
+        }
+    }
+    return extent;
 }
 
 }  // namespace
 
 SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples, const SahModel& sah) {
-    SahSplit best;
+    std::vector<AxisPlanes> axes;
     for (int axis = 0; axis < 3; ++axis)
-        considerPlanes(boxes, axis, EvenPlanes(voxel.lo[axis], voxel.diagonal()[axis], samples + 1, 1, samples), sah,
-                       best);
-    return best;
+        axes.push_back({axis, EvenPlanes(voxel.lo[axis], voxel.diagonal()[axis], samples + 1, 1, samples)});
+    return bestOfPlanes(boxes, axes, sah);
 }
 
 SahSplit findSplitByBinning(const std::vector<FloatBox>& boxes, int bins, const SahModel& sah) {
-    FloatBox extent;
-    for (int axis = 0; axis < 3; ++axis) {
-        extent.lo[axis] = std::numeric_limits<float>::infinity();
-        extent.hi[axis] = -extent.lo[axis];
-    }
-    for (const FloatBox& b : boxes) {
-        for (int axis = 0; axis < 3; ++axis) {
-            extent.lo[axis] = std::min(extent.lo[axis], b.lo[axis]);
-            extent.hi[axis] = std::max(extent.hi[axis], b.hi[axis]);
-        }
-    }
-    SahSplit best;
+    const FloatBox extent = extentOf(boxes);
+    std::vector<AxisPlanes> axes;
     for (int axis = 0; axis < 3; ++axis) {
         const double lo = extent.lo[axis], hi = extent.hi[axis];
-        if (lo <= hi) considerPlanes(boxes, axis, EvenPlanes(lo, hi - lo, bins, 0, bins), sah, best);
+        if (lo <= hi) axes.push_back({axis, EvenPlanes(lo, hi - lo, bins, 0, bins)});
     }
-    return best;
+    return bestOfPlanes(boxes, axes, sah);
 }
 
 }  // namespace rt

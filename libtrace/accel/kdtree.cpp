@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "accel/kd_split.h"
 #include "accel/tree_builder.h"
@@ -103,13 +104,17 @@ private:
         return best;
     }
 
+    // The three axes on three threads in a large node (a root that carries events, when
+    // binningMinimum is above its size).
     static void sortEvents(KdNode& node) {
-        for (int axis = 0; axis < 3; ++axis) {
-            std::vector<SplitEvent>& events = node.events[axis];
-            events.reserve(2 * node.boxes.size());
-            addEventsByType(node.boxes, axis, events);  // spares radixSortEvents its type pass
-            radixSortEvents(events);
-        }
+        forEachChunk(nodeChunks(3, 1, node.boxes.size()), [&](std::size_t, std::size_t begin, std::size_t end) {
+            for (std::size_t axis = begin; axis < end; ++axis) {
+                std::vector<SplitEvent>& events = node.events[axis];
+                events.reserve(2 * node.boxes.size());
+                addEventsByType(node.boxes, int(axis), events);  // spares radixSortEvents its type pass
+                radixSortEvents(events);
+            }
+        });
     }
 
     // Sorts the node's primitives to the two sides. One that straddles the plane is
@@ -125,34 +130,14 @@ private:
         below.voxel.hi[axis] = above.voxel.lo[axis] = split.pos;
         below.depth = above.depth = node.depth + 1;
 
-        constexpr std::uint32_t kNone = ~0u;
-        const std::size_t n = node.primitives.size();
-        for (KdNode* child : {&below, &above}) {
-            child->primitives.reserve(n);
-            child->boxes.reserve(n);
-        }
         // Each primitive's place in its one child, (index << 1) | isAbove, or kNone if it
         // straddles. One array, looked up once per event in the events' (random) primitive
         // order: at the top levels it does not fit in the caches.
+        const std::size_t n = node.primitives.size();
         std::vector<std::uint32_t> place(n, kNone);
-        std::vector<std::uint32_t> straddling;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const FloatBox& box = node.boxes[i];
-            const bool b = box.below(axis, split.pos, split.planarBelow);
-            const bool a = box.above(axis, split.pos, split.planarBelow);
-            if (b && a) {
-                straddling.push_back(i);
-            } else if (b) {
-                place[i] = add(below, node.primitives[i], box) << 1;
-            } else {
-                place[i] = add(above, node.primitives[i], box) << 1 | 1;
-            }
-        }
+        const std::vector<std::uint32_t> straddling = sortToSides(node, split, parts, place);
         const std::size_t belowKept = below.primitives.size(), aboveKept = above.primitives.size();
-        for (std::uint32_t i : straddling) {
-            addClipped(below, node.primitives[i]);
-            addClipped(above, node.primitives[i]);
-        }
+        addClipped(node, straddling, below, above);
         if (carriesEvents(settings_, n)) {
             for (int a = 0; a < 3; ++a) {
                 std::vector<SplitEvent>& belowEvents = below.events[a];
@@ -175,6 +160,90 @@ private:
         return parts;
     }
 
+    static constexpr std::uint32_t kNone = ~0u;
+
+    // Puts each primitive that lies on one side of the plane into that child, in the node's
+    // order, and records its place there (see partition); returns the straddling ones, in
+    // order. A large node is sorted in chunks on all threads and gathered in chunk order, so
+    // the children are the same for any thread count.
+    static std::vector<std::uint32_t> sortToSides(const KdNode& node, const SahSplit& split, Partition<KdNode>& parts,
+                                                  std::vector<std::uint32_t>& place) {
+        struct Sides {
+            std::vector<std::uint32_t> below, above, straddling;  // indices into the node
+        };
+        const Chunks chunks = nodeChunks(node.primitives.size());
+        std::vector<Sides> sides(chunks.count());
+        forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const FloatBox& box = node.boxes[i];
+                const bool b = box.below(split.axis, split.pos, split.planarBelow);
+                const bool a = box.above(split.axis, split.pos, split.planarBelow);
+                (b && a ? sides[c].straddling : b ? sides[c].below : sides[c].above).push_back(std::uint32_t(i));
+            }
+        });
+        std::vector<std::uint32_t> straddling;
+        std::vector<std::size_t> belowAt, aboveAt;  // where each chunk's primitives start in the children
+        std::size_t belowCount = 0, aboveCount = 0;
+        for (const Sides& chunk : sides) {
+            belowAt.push_back(std::exchange(belowCount, belowCount + chunk.below.size()));
+            aboveAt.push_back(std::exchange(aboveCount, aboveCount + chunk.above.size()));
+            straddling.insert(straddling.end(), chunk.straddling.begin(), chunk.straddling.end());
+        }
+        resize(parts.below, belowCount, straddling.size());
+        resize(parts.above, aboveCount, straddling.size());
+        forEachChunk(chunks, [&](std::size_t c, std::size_t, std::size_t) {
+            copyTo(node, sides[c].below, parts.below, belowAt[c], 0, place);
+            copyTo(node, sides[c].above, parts.above, aboveAt[c], 1, place);
+        });
+        return straddling;
+    }
+
+    // Sizes a child for `kept` primitives, with room for `clipped` more.
+    static void resize(KdNode& child, std::size_t kept, std::size_t clipped) {
+        child.primitives.reserve(kept + clipped);
+        child.boxes.reserve(kept + clipped);
+        child.primitives.resize(kept);
+        child.boxes.resize(kept);
+    }
+
+    // Copies the node's primitives `indices` to the child from `at` on, recording their places.
+    static void copyTo(const KdNode& node, const std::vector<std::uint32_t>& indices, KdNode& child, std::size_t at,
+                       std::uint32_t isAbove, std::vector<std::uint32_t>& place) {
+        for (const std::uint32_t i : indices) {
+            child.primitives[at] = node.primitives[i];
+            child.boxes[at] = node.boxes[i];
+            place[i] = std::uint32_t(at) << 1 | isAbove;
+            ++at;
+        }
+    }
+
+    // Perfect splits: each straddling primitive's own extent inside each child's voxel, added
+    // in order unless it misses the voxel (rounding). Clipped in chunks on all threads in a
+    // large node: a clip costs a few hundred nanoseconds.
+    void addClipped(const KdNode& node, const std::vector<std::uint32_t>& straddling, KdNode& below,
+                    KdNode& above) const {
+        struct Clipped {
+            Aabb below, above;
+        };
+        std::vector<Clipped> clipped(straddling.size());
+        forEachChunk(nodeChunks(straddling.size(), 256, node.primitives.size()),
+                     [&](std::size_t, std::size_t begin, std::size_t end) {
+                         for (std::size_t i = begin; i < end; ++i) {
+                             const std::uint32_t id = node.primitives[straddling[i]];
+                             clipped[i] = {clipTo(id, below.voxel), clipTo(id, above.voxel)};
+                         }
+                     });
+        for (std::size_t i = 0; i < straddling.size(); ++i) {
+            const std::uint32_t id = node.primitives[straddling[i]];
+            if (!clipped[i].below.empty()) add(below, id, toFloatBox(clipped[i].below, below.voxel));
+            if (!clipped[i].above.empty()) add(above, id, toFloatBox(clipped[i].above, above.voxel));
+        }
+    }
+
+    Aabb clipTo(std::uint32_t id, const Aabb& voxel) const {
+        return prims_.visit(id, [&](const auto& p) { return clippedBounds(p, voxel); });
+    }
+
     // Gives each child its share of the parent's budget, or returns false when the children's
     // references alone exceed it (the parent becomes a leaf).
     static bool shareBudget(double budget, KdNode& below, KdNode& above) {
@@ -189,12 +258,6 @@ private:
         child.primitives.push_back(id);
         child.boxes.push_back(box);
         return std::uint32_t(child.primitives.size() - 1);
-    }
-
-    // Perfect split: the primitive's own extent inside the child's voxel.
-    void addClipped(KdNode& child, std::uint32_t id) const {
-        const Aabb clipped = prims_.visit(id, [&](const auto& p) { return clippedBounds(p, child.voxel); });
-        if (!clipped.empty()) add(child, id, toFloatBox(clipped, child.voxel));
     }
 
     // A child's events on `axis` are the parent's events of the primitives that went to

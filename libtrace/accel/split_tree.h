@@ -98,7 +98,12 @@ public:
     void setBuildSeconds(double seconds) { stats_.buildSeconds = seconds; }
 
 private:
+    // Where a leaf's records start: in leaves_, blocks_ and otherIds_.
+    struct LeafSizes {
+        std::size_t leaves = 0, blocks = 0, others = 0;
+    };
     void layOutLeaves(const FlatTree& tree);
+    void layOutLeaf(const FlatTree& tree, SplitNode& node, LeafSizes& at);
     template <typename LeafVisitor>
     void traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
                   const LeafVisitor& visitLeaf) const;

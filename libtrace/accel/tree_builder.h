@@ -7,9 +7,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <utility>
 
+#include "accel/build_chunks.h"
 #include "accel/split_tree.h"
 #include "core/aabb.h"
 #include "core/parallel_errors.h"
@@ -25,54 +27,93 @@ struct Partition {
     BuildNode below, above;
 };
 
-// Below this many primitive references a subtree is built by the thread that reached it.
-constexpr std::size_t kTaskPrimitives = 16384;
+// A subtree as the parallel build leaves it: built whole by one thread into `flat`, or, for a
+// node of kTaskPrimitives references or more, its plane and its two children, each built by a
+// task of its own. Laid out in pre-order (appendTo) once every task has finished.
+struct SubtreePieces {
+    FlatTree flat;
+    int axis = 0;
+    float split = 0;
+    std::unique_ptr<SubtreePieces> below, above;  // set for a node split into tasks
+
+    void appendTo(FlatTree& out) const {
+        if (!below) {
+            out.append(flat);
+            return;
+        }
+        const std::size_t self = out.nodes.size();
+        out.nodes.push_back(SplitNode::leaf(0, 0));  // placeholder until the above child's index is known
+        below->appendTo(out);
+        out.nodes[self] = SplitNode::inner(axis, split, std::uint32_t(out.nodes.size()));
+        above->appendTo(out);
+    }
+};
 
 // `split(node)` returns the partition of `node`, or nullopt for a leaf of node.primitives.
-// A subtree below kTaskPrimitives spawns no task (a child never holds more references than
-// its parent), so exceptions there unwind to the nearest task, which captures them in `errors`.
+// One thread builds the whole subtree: a subtree below kTaskPrimitives, and a child never
+// holds more references than its parent.
 template <typename BuildNode, typename SplitFunction>
-void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split, ParallelErrors& errors) {
-    if (errors.failed()) return;  // another task failed: the tree is abandoned
+void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split) {
     std::optional<Partition<BuildNode>> parts = split(node);
     if (!parts) {
         out.addLeaf(node.primitives);
         return;
     }
-    const bool parallel = node.primitives.size() >= kTaskPrimitives;
     node = BuildNode();  // the children hold what they need; free the parent before recursing
-    if (!parallel) {
-        const std::size_t self = out.nodes.size();
-        out.nodes.push_back(SplitNode::leaf(0, 0));  // placeholder until the above child's index is known
-        buildSubtree(std::move(parts->below), out, split, errors);
-        out.nodes[self] = SplitNode::inner(parts->axis, parts->split, std::uint32_t(out.nodes.size()));
-        buildSubtree(std::move(parts->above), out, split, errors);
+    const std::size_t self = out.nodes.size();
+    out.nodes.push_back(SplitNode::leaf(0, 0));  // placeholder until the above child's index is known
+    buildSubtree(std::move(parts->below), out, split);
+    out.nodes[self] = SplitNode::inner(parts->axis, parts->split, std::uint32_t(out.nodes.size()));
+    buildSubtree(std::move(parts->above), out, split);
+}
+
+// A node of kTaskPrimitives references or more builds its lower child as a task and its upper
+// one itself. Nobody waits for the task: in libgomp a thread waiting at a taskwait runs only
+// the tasks its own task made, so a thread whose subtree was done sat idle while the other
+// still had subtrees queued (for up to a third of a second in the tree scene's build).
+// The threads wait at the end of the parallel region, where they run any task. An exception
+// (out of memory) is captured in `errors` and abandons the build.
+template <typename BuildNode, typename SplitFunction>
+void buildPieces(BuildNode node, SubtreePieces& out, const SplitFunction& split, ParallelErrors& errors) {
+    if (errors.failed()) return;  // another task failed: the tree is abandoned
+    if (node.primitives.size() < kTaskPrimitives) {
+        buildSubtree(std::move(node), out.flat, split);
         return;
     }
-    // Nothing may unwind past the taskwait while the task still uses `below` and `parts`.
-    FlatTree below, above;
-#pragma omp task default(shared)
-    errors.capture([&] { buildSubtree(std::move(parts->below), below, split, errors); });
-    errors.capture([&] { buildSubtree(std::move(parts->above), above, split, errors); });
-#pragma omp taskwait
-    if (errors.failed()) return;
-    out.nodes.push_back(
-        SplitNode::inner(parts->axis, parts->split, std::uint32_t(out.nodes.size() + 1 + below.nodes.size())));
-    out.append(below);
-    out.append(above);
+    std::optional<Partition<BuildNode>> parts = split(node);
+    if (!parts) {
+        out.flat.addLeaf(node.primitives);
+        return;
+    }
+    node = BuildNode();
+    out.axis = parts->axis;
+    out.split = parts->split;
+    out.below = std::make_unique<SubtreePieces>();
+    out.above = std::make_unique<SubtreePieces>();
+    // The task outlives this call: it owns its node and reaches the rest through pointers to
+    // what lives until the parallel region ends.
+    auto belowNode = std::make_shared<BuildNode>(std::move(parts->below));
+    SubtreePieces* belowPieces = out.below.get();
+    const SplitFunction* splitter = &split;
+    ParallelErrors* failures = &errors;
+#pragma omp task default(none) firstprivate(belowNode, belowPieces, splitter, failures)
+    failures->capture([&] { buildPieces(std::move(*belowNode), *belowPieces, *splitter, *failures); });
+    buildPieces(std::move(parts->above), *out.above, split, errors);
 }
 
 // A tree too small for a task is built without starting the threads: on a busy machine,
 // waiting for them to be scheduled took longer than a 1,000-primitive build (tens of ms).
 template <typename BuildNode, typename SplitFunction>
 FlatTree buildFlatTree(BuildNode root, const SplitFunction& split) {
-    FlatTree tree;
+    SubtreePieces pieces;
     ParallelErrors errors;
     const bool parallel = root.primitives.size() >= kTaskPrimitives;
 #pragma omp parallel if (parallel)
 #pragma omp single
-    errors.capture([&] { buildSubtree(std::move(root), tree, split, errors); });
+    errors.capture([&] { buildPieces(std::move(root), pieces, split, errors); });
     errors.rethrowIfAny();
+    FlatTree tree;
+    pieces.appendTo(tree);
     return tree;
 }
 

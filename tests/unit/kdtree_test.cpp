@@ -7,6 +7,7 @@
 #include <random>
 #include <sstream>
 
+#include "accel/build_chunks.h"
 #include "accel/kd_split.h"
 #include "geometry/triangle_block.h"
 #include "scene/generate.h"
@@ -190,6 +191,34 @@ TEST(KdTree, SameTreeForAnyNumberOfThreads) {
     const std::string three = dump(*buildKdTree(prims, KdSettings{}));
     omp_set_num_threads(threads);
     EXPECT_EQ(one, three);
+}
+
+// The top levels' passes run in chunks on all threads (accel/build_chunks.h): the binning's
+// counts, the sorting to the children, the clipping of straddling primitives and, with
+// events carried from the root, the sort of each axis. Clusters of every kind under large
+// triangles across the scene, so that the large nodes clip hundreds of primitives; built
+// with binning at the top, with the exact sweep from the root, and with sampling.
+TEST(KdTree, SameTreeForAnyNumberOfThreadsInTheTopLevels) {
+    Primitives prims = generateScene({26000, 5000, Placement::Clustered, 21, 1500, 1500}).primitives;
+    std::mt19937 gen(22);
+    std::uniform_real_distribution<double> coordinate(-1, 1);
+    const auto point = [&] { return Vec3(coordinate(gen), coordinate(gen), coordinate(gen)); };
+    for (int i = 0; i < 150; ++i) prims.add<Triangle>({point(), point(), point()}, 0);
+    ASSERT_GE(prims.size(), 2 * kTaskPrimitives);  // the root and its children work in chunks
+    KdSettings sweepFromTheRoot;
+    sweepFromTheRoot.binningMinimum = prims.size() + 1;
+    const int threads = omp_get_max_threads();
+    for (const KdSettings& settings : {KdSettings{}, sweepFromTheRoot, withMethod(KdSplitMethod::Sample)}) {
+        omp_set_num_threads(1);
+        const std::string one = dump(*buildKdTree(prims, settings));
+        for (const int n : {2, 3}) {
+            omp_set_num_threads(n);
+            EXPECT_EQ(one, dump(*buildKdTree(prims, settings)))
+                << n << " threads, " << kdSplitMethodName(settings.splitMethod) << ", binning from "
+                << settings.binningMinimum;
+        }
+    }
+    omp_set_num_threads(threads);
 }
 
 TEST(KdTree, DepthLimitGrowsWithLogN) {
