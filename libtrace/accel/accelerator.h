@@ -36,6 +36,7 @@ struct AccelStats {
     std::string name;
     std::uint64_t primitives = 0;  // that the structure was built over
     double buildSeconds = 0;
+    int buildThreads = 1;  // that the build ran on
     std::uint64_t nodes = 0;
     std::uint64_t leaves = 0;
     std::uint64_t emptyLeaves = 0;

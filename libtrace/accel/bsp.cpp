@@ -82,7 +82,7 @@ std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSett
     FlatTree flat = buildFlatTree(std::move(root), BspSplitter(prims, settings));
     // The BSP has no costs of its own: it is reported with the KD tree's defaults.
     auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat), "bsp", sahCosts(KdSettings{}));
-    tree->setBuildSeconds(stopwatch.seconds());
+    tree->setBuildTime(stopwatch.seconds(), buildThreads(prims.size()));
     return tree;
 }
 

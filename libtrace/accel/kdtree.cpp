@@ -315,7 +315,7 @@ std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettin
     auto tree =
         std::make_unique<SplitTree>(prims, bounds, std::move(flat),
                                     std::string("kd-") + kdSplitMethodName(settings.splitMethod), sahCosts(settings));
-    tree->setBuildSeconds(stopwatch.seconds());
+    tree->setBuildTime(stopwatch.seconds(), buildThreads(prims.size()));
     return tree;
 }
 

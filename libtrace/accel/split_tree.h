@@ -95,7 +95,10 @@ public:
     AccelStats stats() const override { return stats_; }
     void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const override;
 
-    void setBuildSeconds(double seconds) { stats_.buildSeconds = seconds; }
+    void setBuildTime(double seconds, int threads) {
+        stats_.buildSeconds = seconds;
+        stats_.buildThreads = threads;
+    }
 
 private:
     // Where a leaf's records start: in leaves_, blocks_ and otherIds_.

@@ -5,6 +5,8 @@
 // in any task (out of memory) abandons the build and is rethrown by buildFlatTree.
 #pragma once
 
+#include <omp.h>
+
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -101,14 +103,17 @@ void buildPieces(BuildNode node, SubtreePieces& out, const SplitFunction& split,
     buildPieces(std::move(parts->above), *out.above, split, errors);
 }
 
-// A tree too small for a task is built without starting the threads: on a busy machine,
-// waiting for them to be scheduled took longer than a 1,000-primitive build (tens of ms).
+// The threads a build over `primitives` runs on: OpenMP's (rt-render --threads sets it for the
+// whole process). A tree too small for a task is built without starting the threads: on a busy
+// machine, waiting for them to be scheduled took longer than a 1,000-primitive build (tens of ms).
+inline int buildThreads(std::size_t primitives) { return primitives >= kTaskPrimitives ? omp_get_max_threads() : 1; }
+
 template <typename BuildNode, typename SplitFunction>
 FlatTree buildFlatTree(BuildNode root, const SplitFunction& split) {
     SubtreePieces pieces;
     ParallelErrors errors;
-    const bool parallel = root.primitives.size() >= kTaskPrimitives;
-#pragma omp parallel if (parallel)
+    const int threads = buildThreads(root.primitives.size());
+#pragma omp parallel num_threads(threads) if (threads > 1)
 #pragma omp single
     errors.capture([&] { buildPieces(std::move(root), pieces, split, errors); });
     errors.rethrowIfAny();

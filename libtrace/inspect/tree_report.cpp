@@ -27,6 +27,7 @@ double bytesPerPrimitive(const TreeReport& t) {
 const std::vector<Statistic<TreeReport>>& treeStatistics() {
     static const std::vector<Statistic<TreeReport>> rows = {
         {"build time (s)", "buildSeconds", 3, [](const TreeReport& t) { return t.stats.buildSeconds; }},
+        {"build threads", "buildThreads", 0, [](const TreeReport& t) { return double(t.stats.buildThreads); }},
         {"nodes", "nodes", 0, [](const TreeReport& t) { return double(t.stats.nodes); }},
         {"leaves", "leaves", 0, [](const TreeReport& t) { return double(t.stats.leaves); }},
         {"empty leaves", "emptyLeaves", 0, [](const TreeReport& t) { return double(t.stats.emptyLeaves); }},

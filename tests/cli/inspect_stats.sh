@@ -89,4 +89,14 @@ compare_with_render -D s -r 4 -d 3 -x 64 -y 48
 [ "$(json_number shadowRays "$WORK/stdout")" = $((4 * hard)) ] || fail "-D s -r 4: not 4 shadow rays for each of $hard"
 compare_with_render -D b -r 3 -S 4 -d 2 -x 32 -y 24
 [ "$(json_number cameraRays "$WORK/stdout")" = $((4 * 32 * 24)) ] || fail "-S 4: not 4 camera rays per pixel"
+# --threads is the build's thread count too (1 below the 16,384 primitives from which it starts threads).
+awk 'BEGIN { for (i = 0; i < 130; ++i) for (j = 0; j < 130; ++j)
+    printf "    <sphere x=\"%d\" y=\"%d\" z=\"40\" r=\"0.3\" material=\"white\" />\n", i - 65, j - 65 }' |
+    scene "$WORK/grid.xml" 90
+for threads in 1 2; do
+    expect_exit 0 "$RT_INSPECT" --tree kd --json --threads $threads "$WORK/grid.xml"
+    [ "$(json_number buildThreads "$WORK/stdout")" = $threads ] || fail "--threads $threads: the build ran on $(json_number buildThreads "$WORK/stdout")"
+done
+expect_exit 0 "$RT_INSPECT" --tree kd --json --threads 2 "$WORK/one_sphere.xml"
+[ "$(json_number buildThreads "$WORK/stdout")" = 1 ] || fail "one sphere: the build should start no thread"
 echo "inspect_stats: ok"

@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include <omp.h>
+
 #include <cmath>
 
 #include "core/error.h"
@@ -49,7 +51,11 @@ CLI::Validator positiveNumber() {
 }
 
 CLI::Option* addThreadsOption(CLI::App& app, int& threads) {
-    return app.add_option("--threads", threads, "Threads (default 0: all cores)")->check(numberIn(0, kMaxThreads));
+    return app.add_option("--threads", threads, "Threads of the build and the render (default 0: all cores)")
+        ->check(numberIn(0, kMaxThreads))
+        ->each([](const std::string& n) {
+            if (std::stoi(n) > 0) omp_set_num_threads(std::stoi(n));
+        });
 }
 
 CLI::Option* addMaxInputOption(CLI::App& app) {

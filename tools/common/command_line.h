@@ -67,7 +67,8 @@ CLI::Validator positiveNumber();
 // typo (a negative number read as huge) is caught instead of starting thousands of threads.
 constexpr int kMaxThreads = 1024;
 
-// --threads N (0, the default, lets OpenMP use every core), checked as 0 to kMaxThreads.
+// --threads N (0, the default, lets OpenMP use every core), checked as 0 to kMaxThreads. N > 0 is
+// every parallel region's count from then on (the tree's build too), not only the render's.
 CLI::Option* addThreadsOption(CLI::App& app, int& threads);
 
 // --max-input MIB: the largest scene, model file or standard input read (scene/input_file.h).
