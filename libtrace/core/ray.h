@@ -9,6 +9,10 @@ namespace rt {
 struct Ray {
     Vec3 origin;
     Vec3 direction;
+    // A shadow ray, traced from a shaded point towards a light: a hit filter judges which side of
+    // a single-sided surface it meets as the light sees it (render/material_filter.h). Only the
+    // filter reads it, so rays in scenes without one cost nothing more.
+    bool shadow = false;
 
     constexpr Vec3 at(Real t) const { return origin + direction * t; }
 };

@@ -1,7 +1,9 @@
 // A test a candidate hit must pass before an accelerator accepts it: the scene's materials
 // (render/material_filter.h) reject hits where a cut-out's opacity is below the cut-off and
-// hits on the back of a single-sided surface, so rays of both queries (nearest hit and shadow
-// rays) pass through leaves, fences and back faces as if they were not there. It is defined
+// hits on the back of a single-sided surface as the ray's source sees it (a shadow ray's is the
+// light: Ray::shadow), so rays of both queries (nearest hit and any hit) pass through leaves,
+// fences and back faces as if they were not there. The ray, flag included, is all a filter
+// needs to know about the query: the accelerators pass it on unchanged. It is defined
 // here, outside accel/, so that the accelerators only call it. Scenes without such materials
 // set no filter, and the leaf loops then run without it.
 #pragma once

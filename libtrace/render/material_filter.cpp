@@ -13,10 +13,15 @@ bool cullsBackFaces(const Material& m) {
     return !m.doubleSided && !(m.transmission.passesLight() && !m.transmission.thin);
 }
 
-// Whether `ray` meets primitive `hit.prim` from behind its geometric normal. A ray along the
-// surface (cosine 0) sees its front.
-bool fromBehind(const Primitives& primitives, const Ray& ray, const Hit& hit) {
-    return dot(primitives.normal(hit.prim, ray.at(hit.t)), ray.direction) > 0;
+// Whether a single-sided primitive `hit.prim` shows its back to the source of `ray`. A camera,
+// reflection or refracted ray comes from its origin: the back is seen where the ray meets the
+// surface from behind its geometric normal. A shadow ray runs from the shaded point to the light,
+// which is at its far end: the light sees the back where the ray meets the front. So a surface
+// shadows where the light sees its front, as a rasteriser's shadow map with back faces culled
+// from the light. Edge-on (cosine 0) both see the front.
+bool showsItsBack(const Primitives& primitives, const Ray& ray, const Hit& hit) {
+    const Real cosine = dot(primitives.normal(hit.prim, ray.at(hit.t)), ray.direction);
+    return ray.shadow ? cosine < 0 : cosine > 0;
 }
 
 // The tests a material's hits take.
@@ -36,7 +41,7 @@ bool MaterialFilter::accepts(const Ray& ray, const Hit& hit) const {
     const std::uint32_t id = scene_.primitives.material(hit.prim);
     const std::uint8_t tests = id < tests_.size() ? tests_[id] : std::uint8_t(kNone);
     if (tests == kNone) return true;
-    if ((tests & kBackFace) && fromBehind(scene_.primitives, ray, hit)) return false;
+    if ((tests & kBackFace) && showsItsBack(scene_.primitives, ray, hit)) return false;
     return !(tests & kCutout) || opaqueAt(scene_, scene_.materials[id], hit, images_);
 }
 

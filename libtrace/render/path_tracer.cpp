@@ -170,8 +170,14 @@ Color PathTracer::directLight(const SurfacePoint& s, const SurfaceBsdf& bsdf, co
     // the shadow ray stops short of an area light's own surface
     const Real tMax =
         light->source == LightSample::Source::Triangle ? light->distance * (1 - Real(1e-4)) : light->distance;
+    // A shadow ray to one of the scene's lights (point, spot, directional) meets single-sided
+    // surfaces as the light sees them, as in the Whitted tracer (render/material_filter.h).
+    // Emitters and the environment are found by the BSDF's rays too, which see surfaces from
+    // their origin; the shadow rays to them keep that rule, so that both strategies MIS weighs
+    // see the same scene.
+    const Ray shadowRay{.origin = origin, .direction = light->direction, .shadow = light->delta()};
     ++counters.shadow.rays;
-    if (accel_.occluded({origin, light->direction}, tMax, counters.shadow)) return {};
+    if (accel_.occluded(shadowRay, tMax, counters.shadow)) return {};
     const Real weight = light->delta() ? 1 : powerHeuristic(light->pdf, bsdf.pdf(wo, wi));
     return f * arriving * float(weight / light->pdf);
 }

@@ -129,7 +129,7 @@ Color Tracer::visibility(const SurfacePoint& s, const Light& light, const Vec3& 
     const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
     if (light.type == Light::Type::Directional) {  // infinitely far: anything along the way shadows
         ++counters.shadow.rays;
-        return transmittance({origin, toLight}, kInfinity, counters);
+        return transmittance(origin, toLight, kInfinity, counters);
     }
     const bool area = settings_.softShadows && light.size > 0;
     const int samples = area && !inBundle ? settings_.distributedSamples : 1;
@@ -140,7 +140,7 @@ Color Tracer::visibility(const SurfacePoint& s, const Light& light, const Vec3& 
         const Vec3 d = target - origin;
         const Real distance = length(d);
         ++counters.shadow.rays;
-        visible += transmittance({origin, d / distance}, distance, counters);
+        visible += transmittance(origin, d / distance, distance, counters);
     }
     if (samples == 1) return visible;
     const auto n = float(samples);
@@ -149,27 +149,29 @@ Color Tracer::visibility(const SurfacePoint& s, const Light& light, const Vec3& 
 
 // Through glass the light is tinted at each crossing (shadowFilter) and absorbed inside, along
 // the straight line: Whitted's model has no caustics. Opaque scenes take the any-hit query alone.
-Color Tracer::transmittance(const Ray& ray, Real distance, RenderCounters& counters) const {
+// Every ray here, the walk's included, is a shadow ray: single-sided surfaces block it where the
+// light sees their front (render/material_filter.h).
+Color Tracer::transmittance(const Vec3& origin, const Vec3& toLight, Real distance, RenderCounters& counters) const {
     constexpr Color kClear{1, 1, 1};
+    Ray ray{.origin = origin, .direction = toLight, .shadow = true};
     if (!anyGlass_) return accel_.occluded(ray, distance, counters.shadow) ? Color{} : kClear;
     // Each crossing starts past the last surface; the cap keeps a ray along a pathological
     // stack of coincident glass surfaces finite (and takes the light as blocked there).
     constexpr int kMaxCrossings = 64;
     Color through = kClear;
-    Ray r = ray;
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         Hit hit;
-        if (!accel_.intersect(r, distance, hit, counters.shadow)) return through;
+        if (!accel_.intersect(ray, distance, hit, counters.shadow)) return through;
         const Transmission& t = scene_.materialOf(hit.prim).transmission;
         if (!t.passesLight()) return {};
-        const Vec3 p = r.at(hit.t);
+        const Vec3 p = ray.at(hit.t);
         const Vec3 n = scene_.primitives.normal(hit.prim, p);
-        const Real cosine = dot(n, r.direction);  // > 0: the ray leaves the volume
+        const Real cosine = dot(n, ray.direction);  // > 0: the ray leaves the volume
         through = through * shadowFilter(t, std::abs(cosine));
         if (cosine > 0 && t.absorbs()) through = through * absorbed(t, hit.t);
         if (through == Color{}) return through;
         distance -= hit.t;
-        r.origin = p + n * (cosine > 0 ? epsilon_ : -epsilon_);
+        ray.origin = p + n * (cosine > 0 ? epsilon_ : -epsilon_);
     }
     return {};
 }

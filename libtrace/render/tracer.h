@@ -67,8 +67,9 @@ private:
     // The colour of `hit`, found by `ray`, whose footprint is `differential`.
     Color shadeHit(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
                    const RayDifferential& differential) const;
-    // What a shadow ray of unit direction lets through over `distance`: black when blocked.
-    Color transmittance(const Ray& ray, Real distance, RenderCounters& counters) const;
+    // What the shadow ray from `origin` along `toLight` (unit) lets through over `distance`: black
+    // when blocked.
+    Color transmittance(const Vec3& origin, const Vec3& toLight, Real distance, RenderCounters& counters) const;
     // The colour the transmitted ray of `split` brings through material m, whose transmission is
     // `weight` there (transmissionAt), weighted (render/refraction.h); a rough glass spreads it as
     // a glossy surface its reflection (lobe).

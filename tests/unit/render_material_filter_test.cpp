@@ -1,7 +1,8 @@
 // Single-sided materials (render/material_filter.*, glTF's doubleSided false): a quad seen
-// from behind is not there for any ray, through every accelerator and both integrators; from
-// the front it is drawn; glass with an inside stays two-sided; a mirroring instance keeps the
-// model's front in front; scenes without such materials get no filter.
+// from behind is not there for camera, reflection and refracted rays, through every accelerator
+// and both integrators; from the front it is drawn; shadow rays see it as the light does, so it
+// shadows where the light sees its front; glass with an inside stays two-sided; a mirroring
+// instance keeps the model's front in front; scenes without such materials get no filter.
 #include "render/material_filter.h"
 
 #include <gtest/gtest.h>
@@ -56,6 +57,47 @@ Framebuffer renderEveryTree(const Scene& scene, const RenderSettings& settings) 
 
 Color centre(const Framebuffer& f, const RenderSettings& s) { return f.at(s.width / 2, s.height / 2); }
 
+// A white floor at y = 0 under a black sheet of side 2 at y = 1 whose front faces the light,
+// above at y = 3, or faces away from it, seen from below the sheet: the centre pixel shows the
+// floor under the middle of the sheet, lit by `light` alone (no ambient term, black background).
+// `glassElsewhere` adds a glass material no primitive uses, which makes the Whitted tracer walk
+// its shadow rays through the scene by nearest hits instead of the any-hit query.
+Scene sheetBetweenLightAndFloor(bool doubleSided, bool frontToLight, const Light& light, bool glassElsewhere = false) {
+    Scene s;
+    s.background = {0, 0, 0};
+    s.camera.origin = {0, 0.5, 5};
+    s.camera.destination = {0, 0, 0};
+    s.camera.fovDegrees = 30;
+    Material floor = test::pbr({1, 1, 1}, 0, 1);
+    floor.ambient = 0;
+    floor.diffuse = 1;
+    test::addQuad(s, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, test::addMaterial(s, floor));
+    Material sheet = test::pbr({0, 0, 0}, 0, 1);
+    sheet.ambient = 0;
+    sheet.doubleSided = doubleSided;
+    const auto sheetId = test::addMaterial(s, sheet);
+    if (frontToLight)  // counter-clockwise seen from above
+        test::addQuad(s, {-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, sheetId);
+    else
+        test::addQuad(s, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}, {-1, 1, -1}, sheetId);
+    if (glassElsewhere) test::addMaterial(s, {.name = "unused glass", .transmission = {.weight = 1}});
+    s.lights.push_back(light);
+    s.flatten();
+    return s;
+}
+
+const Light kOverhead{.position = {0, 3, 0}};
+
+// The floor under the sheet, in every tree: in the dark where the light sees the sheet's front,
+// lit where it sees its back; a two-sided sheet shadows either way.
+Color floorUnderTheSheet(bool doubleSided, bool frontToLight, const Light& light, RenderSettings settings,
+                         bool glassElsewhere = false) {
+    settings.shadows = true;
+    return centre(
+        renderEveryTree(sheetBetweenLightAndFloor(doubleSided, frontToLight, light, glassElsewhere), settings),
+        settings);
+}
+
 }  // namespace
 
 TEST(SingleSided, AQuadSeenFromBehindShowsWhatIsBehindItInEveryTree) {
@@ -75,20 +117,58 @@ TEST(SingleSided, ThePathTracerSeesThroughTheBackToo) {
     EXPECT_GT(centre(renderEveryTree(sheetBeforeBackdrop(false, kFront), settings), settings).g, 0.99f);
 }
 
-// Shadow rays, traced from the shaded point towards the light, are blocked by the front alone,
-// in every tree: light reaches a point behind the sheet's back, not one before its front.
-TEST(SingleSided, ShadowRaysPassThroughTheBackOnly) {
+// Shadow rays (Ray::shadow), traced from the shaded point towards the light, are judged from the
+// light's end, in every tree and both queries (the Whitted tracer walks through glass with the
+// nearest hit): the sheet blocks a ray that meets its back, since the light beyond sees its front,
+// and lets through one that meets its front. Other rays keep passing through the back alone.
+TEST(SingleSided, ShadowRaysAreBlockedWhereTheLightSeesTheFront) {
     const Scene scene = sheetBeforeBackdrop(false, kFront);
     const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, nullptr);
     ASSERT_TRUE(filter);
+    const auto ray = [](Real z, bool shadow) {
+        return Ray{.origin = {0.2, 0.1, z}, .direction = {0, 0, z < 0 ? Real(1) : Real(-1)}, .shadow = shadow};
+    };
     for (const std::unique_ptr<Accelerator>& accel : test::everyAccelerator(scene.primitives, filter.get())) {
         RayCounters counters;
-        EXPECT_FALSE(accel->occluded({{0.2, 0.1, -1}, {0, 0, 1}}, 2, counters)) << "from behind";
-        EXPECT_TRUE(accel->occluded({{0.2, 0.1, 1}, {0, 0, -1}}, 2, counters)) << "from the front";
+        EXPECT_TRUE(accel->occluded(ray(-1, true), 2, counters)) << "towards a light before the front";
+        EXPECT_FALSE(accel->occluded(ray(1, true), 2, counters)) << "towards a light behind the back";
+        EXPECT_FALSE(accel->occluded(ray(-1, false), 2, counters)) << "from behind";
+        EXPECT_TRUE(accel->occluded(ray(1, false), 2, counters)) << "from the front";
         Hit hit;
-        ASSERT_TRUE(accel->intersect({{0.2, 0.1, -1}, {0, 0, 1}}, kInfinity, hit, counters));
+        ASSERT_TRUE(accel->intersect(ray(-1, true), kInfinity, hit, counters));
+        EXPECT_NEAR(hit.t, 1, 1e-6) << "the sheet, whose front the light sees";
+        ASSERT_TRUE(accel->intersect(ray(-1, false), kInfinity, hit, counters));
         EXPECT_NEAR(hit.t, 4, 1e-6) << "the backdrop, through the sheet";
+        EXPECT_FALSE(accel->intersect(ray(1, true), 2, hit, counters)) << "the light sees the sheet's back";
     }
+}
+
+TEST(SingleSided, ASheetShadowsWhereTheLightSeesItsFront) {
+    const RenderSettings hard = test::picture(24, 24);
+    RenderSettings soft = hard;
+    soft.softShadows = true;
+    soft.distributedSamples = 8;
+    const Light disc{.position = kOverhead.position, .size = 0.3};
+    const Light sun{.position = kOverhead.position, .type = Light::Type::Directional, .direction = {0, -1, 0}};
+    const Light spot{.position = kOverhead.position, .type = Light::Type::Spot, .direction = {0, -1, 0}};
+    const std::pair<Light, RenderSettings> cases[] = {{kOverhead, hard}, {disc, soft}, {sun, hard}, {spot, hard}};
+    for (const auto& [light, settings] : cases) {
+        for (const bool glass : {false, true}) {
+            const std::string which = "light type " + std::to_string(int(light.type)) + ", size " +
+                                      std::to_string(light.size) + (glass ? ", glass elsewhere" : "");
+            EXPECT_EQ(floorUnderTheSheet(false, true, light, settings, glass), Color{}) << which;
+            EXPECT_GT(floorUnderTheSheet(false, false, light, settings, glass).g, 0.5f) << which;
+            EXPECT_EQ(floorUnderTheSheet(true, false, light, settings, glass), Color{}) << which << ", two-sided";
+        }
+    }
+}
+
+// The path tracer's shadow rays to the scene's lights follow the same rule.
+TEST(SingleSided, ThePathTracersShadowRaysSeeTheSheetAsTheLightDoes) {
+    const RenderSettings settings = test::pathPicture(16, 4);
+    EXPECT_EQ(floorUnderTheSheet(false, true, kOverhead, settings), Color{});
+    EXPECT_GT(floorUnderTheSheet(false, false, kOverhead, settings).g, 0.1f);
+    EXPECT_EQ(floorUnderTheSheet(true, false, kOverhead, settings), Color{});
 }
 
 // Glass with an inside is entered through its front and left through its back: it stays
