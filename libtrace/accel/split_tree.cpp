@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 namespace rt {
@@ -27,30 +28,42 @@ SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree,
     stats_ = computeStats(std::move(name), costs);
 }
 
-// Copies each leaf's triangles into blocks in leaf order and its other ids after them. The
-// triangles keep their order among themselves and are tested before the other kinds; the
-// order decides only between hits at exactly the same distance.
+// Lays each non-empty leaf out in leafData_: its record, its triangles in blocks in leaf order,
+// then its other ids. The triangles keep their order among themselves and are tested before the
+// other kinds; the order decides only between hits at exactly the same distance.
 void SplitTree::layOutLeaves(const FlatTree& tree) {
+    std::vector<TriangleBlock> blocks;
+    std::vector<std::uint32_t> others;
     for (SplitNode& node : nodes_) {
         if (!node.isLeaf() || node.primitiveCount() == 0) continue;
+        blocks.clear();
+        others.clear();
         LeafPrimitives leaf;
-        leaf.firstBlock = std::uint32_t(blocks_.size());
-        leaf.firstOther = std::uint32_t(otherIds_.size());
         const std::uint32_t* ids = &tree.primitiveIndices[node.primitiveOffset()];
         for (std::uint32_t i = 0; i < node.primitiveCount(); ++i) {
             const std::optional<std::uint32_t> triangle = prims_.indexIn<Triangle>(ids[i]);
             if (!triangle) {
-                otherIds_.push_back(ids[i]);
+                others.push_back(ids[i]);
                 continue;
             }
-            if (leaf.triangles % kSimdWidth == 0) blocks_.emplace_back();
-            blocks_.back().set(int(leaf.triangles % kSimdWidth), prims_.all<Triangle>()[*triangle], ids[i]);
+            if (leaf.triangles % kSimdWidth == 0) blocks.emplace_back();
+            blocks.back().set(int(leaf.triangles % kSimdWidth), prims_.all<Triangle>()[*triangle], ids[i]);
             ++leaf.triangles;
         }
-        leaf.others = std::uint32_t(otherIds_.size()) - leaf.firstOther;
-        node = SplitNode::leaf(std::uint32_t(leaves_.size()), node.primitiveCount());
-        leaves_.push_back(leaf);
+        leaf.others = std::uint32_t(others.size());
+        node = SplitNode::leaf(std::uint32_t(leafData_.size()), node.primitiveCount());
+        appendLeafData(&leaf, sizeof(leaf));
+        appendLeafData(blocks.data(), blocks.size() * sizeof(TriangleBlock));
+        appendLeafData(others.data(), others.size() * sizeof(std::uint32_t));
     }
+}
+
+// Copies `bytes` bytes to the end of leafData_, padded to whole units. (Copying the bytes of these
+// trivially copyable types creates them there.)
+void SplitTree::appendLeafData(const void* data, std::size_t bytes) {
+    const std::size_t at = leafData_.size();
+    leafData_.resize(at + (bytes + sizeof(LeafUnit) - 1) / sizeof(LeafUnit));
+    if (bytes != 0) std::memcpy(leafData_[at].bytes, data, bytes);
 }
 
 // Front-to-back traversal with an explicit stack (Havran's TA_B, thesis [7]; pbrt-v3's
@@ -110,7 +123,7 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
             node = nodes_[index];
         }
         ++steps;
-        if (node.primitiveCount() != 0 && visitLeaf(prims, leaves_[node.primitiveOffset()])) break;
+        if (node.primitiveCount() != 0 && visitLeaf(prims, leafAt(node.primitiveOffset()))) break;
         if (size == 0) break;
         --size;
         index = stack[size].node;
@@ -128,13 +141,12 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
     Hit nearest;
     nearest.t = tMax;
     const RayLanes lanes(ray);
-    const TriangleBlock* blocks = blocks_.data();
-    const std::uint32_t* otherIds = otherIds_.data();
     const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
     traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
         tests += leaf.triangles + leaf.others;
-        for (std::uint32_t b = leaf.firstBlock; b < leaf.firstBlock + leaf.blocks(); ++b) {
+        const TriangleBlock* blocks = leaf.blocks();
+        for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
             const BlockHits hits = intersectBlock(blocks[b], lanes, nearest.t);
             for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
                 const int lane = std::countr_zero(bits);
@@ -144,7 +156,8 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
                 nearest = candidate;
             }
         }
-        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i) {
+        const std::uint32_t* otherIds = leaf.otherIds();
+        for (std::uint32_t i = 0; i < leaf.others; ++i) {
             if (filter)
                 intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
             else
@@ -161,8 +174,6 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
 
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     const RayLanes lanes(ray);
-    const TriangleBlock* blocks = blocks_.data();
-    const std::uint32_t* otherIds = otherIds_.data();
     std::uint64_t tests = 0;
     bool found = false;
     const HitFilter* filter = filter_;
@@ -176,12 +187,13 @@ bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const
         return false;
     };
     traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
-        for (std::uint32_t b = 0; b < leaf.blocks(); ++b) {
+        for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
             tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
-            const TriangleBlock& block = blocks[leaf.firstBlock + b];
+            const TriangleBlock& block = leaf.blocks()[b];
             if (counts(block, intersectBlock(block, lanes, tMax))) return found = true;
         }
-        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i) {
+        const std::uint32_t* otherIds = leaf.otherIds();
+        for (std::uint32_t i = 0; i < leaf.others; ++i) {
             ++tests;
             const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, tMax, *filter)
                                      : prims.intersectsAny(otherIds[i], ray, tMax);
@@ -229,8 +241,7 @@ AccelStats SplitTree::computeStats(std::string name, SahCosts costs) const {
     AccelStats s;
     s.name = std::move(name);
     s.primitives = prims_.size();
-    s.memoryBytes = nodes_.size() * sizeof(SplitNode) + leaves_.size() * sizeof(LeafPrimitives) +
-                    blocks_.size() * sizeof(TriangleBlock) + otherIds_.size() * sizeof(std::uint32_t);
+    s.memoryBytes = nodes_.size() * sizeof(SplitNode) + leafData_.size() * sizeof(LeafUnit);
     const double rootArea = bounds_.surfaceArea();
     double leafDepthSum = 0;
     std::uint64_t nonEmptyLeaves = 0;
