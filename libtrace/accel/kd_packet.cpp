@@ -155,8 +155,8 @@ Lanes stillOpen(const Span& span, const Lanes& nearestT) {
 }
 
 // The leaf's primitives that are not triangles, ray by ray (the packet has no hit filter).
-void nearestOthers(const PrimitiveView& prims, const std::uint32_t* otherIds, const LeafPrimitives& leaf,
-                   const Ray* rays, LaneBits active, PacketHits& nearest) {
+void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
+                   PacketHits& nearest) {
     alignas(16) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
     for (int g = 0; g < kGroups; ++g) {
         storeLanes(t + g * kSimdWidth, nearest.t.group[g]);
@@ -166,8 +166,7 @@ void nearestOthers(const PrimitiveView& prims, const std::uint32_t* otherIds, co
     for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
         const int r = std::countr_zero(bits);
         Hit hit{t[r], nearest.prim[r], u[r], v[r]};
-        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i)
-            prims.intersect(otherIds[i], rays[r], hit.t, hit);
+        for (std::uint32_t i = 0; i < leaf.others; ++i) prims.intersect(leaf.otherIds()[i], rays[r], hit.t, hit);
         t[r] = hit.t;
         nearest.prim[r] = hit.prim;
         u[r] = hit.u;
@@ -256,13 +255,12 @@ void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits
         }
         steps += std::uint64_t(std::popcount(active));
         if (node.primitiveCount() != 0) {
-            const LeafPrimitives& leaf = leaves_[node.primitiveOffset()];
+            const LeafPrimitives& leaf = leafAt(node.primitiveOffset());
             tests += std::uint64_t(std::popcount(active)) * (leaf.triangles + leaf.others);
             // As SplitTree::nearestInLeaf: the triangles in leaf order, then the other primitives.
             for (std::uint32_t k = 0; k < leaf.triangles; ++k)
-                nearestTriangle(blocks_[leaf.firstBlock + k / kSimdWidth], int(k % kSimdWidth), packet, span.active,
-                                nearest);
-            if (leaf.others != 0) nearestOthers(prims, otherIds_.data(), leaf, rays, active, nearest);
+                nearestTriangle(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet, span.active, nearest);
+            if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
         }
         // The next node with a ray whose nearest hit may still lie in it.
         active = 0;

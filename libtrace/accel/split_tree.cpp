@@ -2,6 +2,8 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
+#include <optional>
 #include <utility>
 
 #include "accel/build_chunks.h"
@@ -29,65 +31,69 @@ SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree,
     stats_ = computeStats(std::move(name), costs);
 }
 
-// Copies each leaf's triangles into blocks in leaf order and its other ids after them. The
-// triangles keep their order among themselves and are tested before the other kinds; the
-// order decides only between hits at exactly the same distance. A large tree is laid out in
-// chunks of nodes on all threads (a tenth of the tree scene's build): each chunk counts its
-// leaves, blocks and other ids, and fills its part from where the chunks before it end.
+// Lays each non-empty leaf out in leafData_: its record, its triangles in blocks in leaf order,
+// then its other ids. The triangles keep their order among themselves and are tested before the
+// other kinds; the order decides only between hits at exactly the same distance. A large tree is
+// laid out in chunks of nodes on all threads (a tenth of the tree scene's build): each chunk
+// counts its leaves' units, and fills its part from where the chunks before it end.
 void SplitTree::layOutLeaves(const FlatTree& tree) {
     const Chunks chunks(nodes_.size(), kTaskPrimitives);
     const auto count = std::int64_t(chunks.count());
-    std::vector<LeafSizes> starts(chunks.count() + 1);  // starts[c + 1]: chunk c's sizes, then summed
+    std::vector<std::size_t> starts(chunks.count() + 1);  // starts[c + 1]: chunk c's units, then summed
 #pragma omp parallel for schedule(static) if (count > 1)
     for (std::int64_t c = 0; c < count; ++c) {
-        LeafSizes& sizes = starts[std::size_t(c) + 1];
-        for (std::size_t n = chunks.begin(std::size_t(c)); n < chunks.end(std::size_t(c)); ++n) {
-            const SplitNode node = nodes_[n];
-            if (!node.isLeaf() || node.primitiveCount() == 0) continue;
-            const std::uint32_t* ids = &tree.primitiveIndices[node.primitiveOffset()];
-            std::uint32_t triangles = 0;
-            for (std::uint32_t i = 0; i < node.primitiveCount(); ++i)
-                triangles += prims_.indexIn<Triangle>(ids[i]) ? 1 : 0;
-            ++sizes.leaves;
-            sizes.blocks += LeafPrimitives{0, triangles, 0, 0}.blocks();
-            sizes.others += node.primitiveCount() - triangles;
-        }
-    }
-    for (std::size_t c = 1; c < starts.size(); ++c) {
-        starts[c].leaves += starts[c - 1].leaves;
-        starts[c].blocks += starts[c - 1].blocks;
-        starts[c].others += starts[c - 1].others;
-    }
-    leaves_.resize(starts.back().leaves);
-    blocks_.resize(starts.back().blocks);
-    otherIds_.resize(starts.back().others);
-#pragma omp parallel for schedule(static) if (count > 1)
-    for (std::int64_t c = 0; c < count; ++c) {
-        LeafSizes at = starts[std::size_t(c)];
         for (std::size_t n = chunks.begin(std::size_t(c)); n < chunks.end(std::size_t(c)); ++n)
-            if (nodes_[n].isLeaf() && nodes_[n].primitiveCount() != 0) layOutLeaf(tree, nodes_[n], at);
+            if (nodes_[n].isLeaf() && nodes_[n].primitiveCount() != 0)
+                starts[std::size_t(c) + 1] += leafSizes(tree, nodes_[n]).units();
+    }
+    for (std::size_t c = 1; c < starts.size(); ++c) starts[c] += starts[c - 1];
+    leafData_.resize(starts.back());
+#pragma omp parallel for schedule(static) if (count > 1)
+    for (std::int64_t c = 0; c < count; ++c) {
+        std::size_t at = starts[std::size_t(c)];
+        for (std::size_t n = chunks.begin(std::size_t(c)); n < chunks.end(std::size_t(c)); ++n) {
+            SplitNode& node = nodes_[n];
+            if (!node.isLeaf() || node.primitiveCount() == 0) continue;
+            const LeafPrimitives sizes = leafSizes(tree, node);
+            layOutLeaf(&tree.primitiveIndices[node.primitiveOffset()], sizes, at);
+            node = SplitNode::leaf(std::uint32_t(at), node.primitiveCount());
+            at += sizes.units();
+        }
     }
 }
 
-// Copies one leaf's primitives to the blocks and other ids from `at` on, and moves `at` past them.
-void SplitTree::layOutLeaf(const FlatTree& tree, SplitNode& node, LeafSizes& at) {
-    LeafPrimitives leaf;
-    leaf.firstBlock = std::uint32_t(at.blocks);
-    leaf.firstOther = std::uint32_t(at.others);
+// The record of the leaf `node` as the builder made it: how many of its primitives are triangles.
+LeafPrimitives SplitTree::leafSizes(const FlatTree& tree, const SplitNode& node) const {
     const std::uint32_t* ids = &tree.primitiveIndices[node.primitiveOffset()];
-    for (std::uint32_t i = 0; i < node.primitiveCount(); ++i) {
+    std::uint32_t triangles = 0;
+    for (std::uint32_t i = 0; i < node.primitiveCount(); ++i) triangles += prims_.indexIn<Triangle>(ids[i]) ? 1 : 0;
+    return {triangles, node.primitiveCount() - triangles};
+}
+
+// Writes the leaf of the primitives `ids` (its record `sizes`) to leafData_ from unit `at` on.
+// (Copying the bytes of these trivially copyable types creates them there.)
+void SplitTree::layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes, std::size_t at) {
+    std::byte* out = leafData_[at].bytes;
+    std::memcpy(out, &sizes, sizeof(sizes));
+    auto* blocks = out + sizeof(LeafPrimitives);
+    auto* others = blocks + sizes.blockCount() * sizeof(TriangleBlock);
+    TriangleBlock block;
+    std::uint32_t triangles = 0;
+    for (std::uint32_t i = 0; i < sizes.triangles + sizes.others; ++i) {
         const std::optional<std::uint32_t> triangle = prims_.indexIn<Triangle>(ids[i]);
         if (!triangle) {
-            otherIds_[at.others++] = ids[i];
+            std::memcpy(others, &ids[i], sizeof(std::uint32_t));
+            others += sizeof(std::uint32_t);
             continue;
         }
-        if (leaf.triangles % kSimdWidth == 0) ++at.blocks;
-        blocks_[at.blocks - 1].set(int(leaf.triangles % kSimdWidth), prims_.all<Triangle>()[*triangle], ids[i]);
-        ++leaf.triangles;
+        if (triangles % kSimdWidth == 0) block = TriangleBlock();
+        block.set(int(triangles % kSimdWidth), prims_.all<Triangle>()[*triangle], ids[i]);
+        ++triangles;
+        if (triangles % kSimdWidth == 0 || triangles == sizes.triangles) {
+            std::memcpy(blocks, &block, sizeof(block));
+            blocks += sizeof(block);
+        }
     }
-    leaf.others = std::uint32_t(at.others) - leaf.firstOther;
-    node = SplitNode::leaf(std::uint32_t(at.leaves), node.primitiveCount());
-    leaves_[at.leaves++] = leaf;
 }
 
 // Front-to-back traversal with an explicit stack (Havran's TA_B, thesis [7]; pbrt-v3's
@@ -147,7 +153,7 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
             node = nodes_[index];
         }
         ++steps;
-        if (node.primitiveCount() != 0 && visitLeaf(prims, leaves_[node.primitiveOffset()])) break;
+        if (node.primitiveCount() != 0 && visitLeaf(prims, leafAt(node.primitiveOffset()))) break;
         if (size == 0) break;
         --size;
         index = stack[size].node;
@@ -165,13 +171,12 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
     Hit nearest;
     nearest.t = tMax;
     const RayLanes lanes(ray);
-    const TriangleBlock* blocks = blocks_.data();
-    const std::uint32_t* otherIds = otherIds_.data();
     const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
     traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
         tests += leaf.triangles + leaf.others;
-        for (std::uint32_t b = leaf.firstBlock; b < leaf.firstBlock + leaf.blocks(); ++b) {
+        const TriangleBlock* blocks = leaf.blocks();
+        for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
             const BlockHits hits = intersectBlock(blocks[b], lanes, nearest.t);
             for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
                 const int lane = std::countr_zero(bits);
@@ -181,7 +186,8 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
                 nearest = candidate;
             }
         }
-        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i) {
+        const std::uint32_t* otherIds = leaf.otherIds();
+        for (std::uint32_t i = 0; i < leaf.others; ++i) {
             if (filter)
                 intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
             else
@@ -198,8 +204,6 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
 
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     const RayLanes lanes(ray);
-    const TriangleBlock* blocks = blocks_.data();
-    const std::uint32_t* otherIds = otherIds_.data();
     std::uint64_t tests = 0;
     bool found = false;
     const HitFilter* filter = filter_;
@@ -213,12 +217,13 @@ bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const
         return false;
     };
     traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
-        for (std::uint32_t b = 0; b < leaf.blocks(); ++b) {
+        for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
             tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
-            const TriangleBlock& block = blocks[leaf.firstBlock + b];
+            const TriangleBlock& block = leaf.blocks()[b];
             if (counts(block, intersectBlock(block, lanes, tMax))) return found = true;
         }
-        for (std::uint32_t i = leaf.firstOther; i < leaf.firstOther + leaf.others; ++i) {
+        const std::uint32_t* otherIds = leaf.otherIds();
+        for (std::uint32_t i = 0; i < leaf.others; ++i) {
             ++tests;
             const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, tMax, *filter)
                                      : prims.intersectsAny(otherIds[i], ray, tMax);
@@ -266,8 +271,7 @@ AccelStats SplitTree::computeStats(std::string name, SahCosts costs) const {
     AccelStats s;
     s.name = std::move(name);
     s.primitives = prims_.size();
-    s.memoryBytes = nodes_.size() * sizeof(SplitNode) + leaves_.size() * sizeof(LeafPrimitives) +
-                    blocks_.size() * sizeof(TriangleBlock) + otherIds_.size() * sizeof(std::uint32_t);
+    s.memoryBytes = nodes_.size() * sizeof(SplitNode) + leafData_.size() * sizeof(LeafUnit);
     const double rootArea = bounds_.surfaceArea();
     double leafDepthSum = 0;
     std::uint64_t nonEmptyLeaves = 0;

@@ -9,7 +9,9 @@
 #pragma once
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -72,15 +74,24 @@ struct SahCosts {
 
 inline SahCosts sahCosts(const KdSettings& kd) { return {kd.traversalCost, kd.intersectionCost}; }
 
-// A non-empty leaf as the traversal reads it: its triangles, copied in blocks of kSimdWidth
-// (two with Real = double, four with float; geometry/triangle_block.h) so that they are read in sequence and tested
-// together, then the ids of its other primitives, tested one by one through the PrimitiveView.
-struct LeafPrimitives {
-    std::uint32_t firstBlock = 0, triangles = 0;
-    std::uint32_t firstOther = 0, others = 0;
+// A non-empty leaf as the traversal reads it, in one piece of memory: this 16-byte record, then its
+// triangles, copied in blocks of kSimdWidth (two with Real = double, four with float;
+// geometry/triangle_block.h) so that they are read in sequence and tested together, then the ids of
+// its other primitives (padded to 16 bytes), tested one by one through the PrimitiveView. The
+// record and the first block lie side by side, so the traversal fetches them together: the block's
+// address does not wait for the record.
+struct alignas(16) LeafPrimitives {
+    std::uint32_t triangles = 0, others = 0;
 
-    std::uint32_t blocks() const { return (triangles + kSimdWidth - 1) / kSimdWidth; }
+    std::uint32_t blockCount() const { return (triangles + kSimdWidth - 1) / kSimdWidth; }
+    // The 16-byte units the leaf takes: this record, its blocks and its other ids, padded.
+    std::size_t units() const { return 1 + blockCount() * sizeof(TriangleBlock) / 16 + (others + 3) / 4; }
+    const TriangleBlock* blocks() const { return std::launder(reinterpret_cast<const TriangleBlock*>(this + 1)); }
+    const std::uint32_t* otherIds() const {
+        return std::launder(reinterpret_cast<const std::uint32_t*>(blocks() + blockCount()));
+    }
 };
+static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16);
 
 class SplitTree final : public Accelerator {
 public:
@@ -101,12 +112,9 @@ public:
     }
 
 private:
-    // Where a leaf's records start: in leaves_, blocks_ and otherIds_.
-    struct LeafSizes {
-        std::size_t leaves = 0, blocks = 0, others = 0;
-    };
     void layOutLeaves(const FlatTree& tree);
-    void layOutLeaf(const FlatTree& tree, SplitNode& node, LeafSizes& at);
+    LeafPrimitives leafSizes(const FlatTree& tree, const SplitNode& node) const;
+    void layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes, std::size_t at);
     template <typename LeafVisitor>
     void traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
                   const LeafVisitor& visitLeaf) const;
@@ -115,11 +123,16 @@ private:
     const Primitives& prims_;
     PrimitiveView view_;  // of prims_, which must not change while the tree is used
     Aabb bounds_;
-    // As the builder made them, except that a non-empty leaf's primitiveOffset() indexes leaves_.
+    // As the builder made them, except that a non-empty leaf's primitiveOffset() is where its
+    // LeafPrimitives lies in leafData_, in 16-byte units.
     std::vector<SplitNode> nodes_;
-    std::vector<LeafPrimitives> leaves_;
-    std::vector<TriangleBlock> blocks_;
-    std::vector<std::uint32_t> otherIds_;  // of the primitives that are not triangles
+    struct alignas(16) LeafUnit {
+        std::byte bytes[16];
+    };
+    std::vector<LeafUnit> leafData_;
+    const LeafPrimitives& leafAt(std::uint32_t unit) const {
+        return *std::launder(reinterpret_cast<const LeafPrimitives*>(&leafData_[unit]));
+    }
     AccelStats stats_;
 };
 
