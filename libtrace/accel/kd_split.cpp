@@ -219,27 +219,12 @@ SahSplit bestOfPlanes(const std::vector<FloatBox>& boxes, const std::vector<Axis
 // The lowest lower and highest upper bound of the boxes on each axis (empty: lo > hi).
 FloatBox extentOf(const std::vector<FloatBox>& boxes) {
     const Chunks chunks = nodeChunks(boxes.size());
-    std::vector<FloatBox> extents(chunks.count());
+    std::vector<FloatBox> extents(chunks.count(), FloatBox::empty());
     forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
-        FloatBox& e = extents[c];
-        for (int axis = 0; axis < 3; ++axis) {
-            e.lo[axis] = std::numeric_limits<float>::infinity();
-            e.hi[axis] = -e.lo[axis];
-        }
-        for (std::size_t i = begin; i < end; ++i) {
-            for (int axis = 0; axis < 3; ++axis) {
-                e.lo[axis] = std::min(e.lo[axis], boxes[i].lo[axis]);
-                e.hi[axis] = std::max(e.hi[axis], boxes[i].hi[axis]);
-            }
-        }
+        for (std::size_t i = begin; i < end; ++i) extents[c].include(boxes[i]);
     });
-    FloatBox extent = extents[0];
-    for (const FloatBox& e : extents) {
-        for (int axis = 0; axis < 3; ++axis) {
-            extent.lo[axis] = std::min(extent.lo[axis], e.lo[axis]);
-            extent.hi[axis] = std::max(extent.hi[axis], e.hi[axis]);
-        }
-    }
+    FloatBox extent = FloatBox::empty();
+    for (const FloatBox& e : extents) extent.include(e);
     return extent;
 }
 

@@ -5,6 +5,7 @@
 // binning that Sweep uses in its largest nodes).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -18,6 +19,18 @@ namespace rt {
 // bounds outwards to float, so every candidate plane is a value a node can store.
 struct FloatBox {
     float lo[3], hi[3];
+
+    // The box of no points (lo above hi on every axis), which include() grows.
+    static FloatBox empty() {
+        constexpr float inf = std::numeric_limits<float>::infinity();
+        return {{inf, inf, inf}, {-inf, -inf, -inf}};
+    }
+    void include(const FloatBox& b) {
+        for (int axis = 0; axis < 3; ++axis) {
+            lo[axis] = std::min(lo[axis], b.lo[axis]);
+            hi[axis] = std::max(hi[axis], b.hi[axis]);
+        }
+    }
 
     bool planar(int axis) const { return lo[axis] == hi[axis]; }
     // Which children of the plane `pos` on `axis` the primitive goes to. One lying in the

@@ -29,6 +29,18 @@ struct Partition {
     BuildNode below, above;
 };
 
+// Appends an inner node on `axis` at `split` and its children in pre-order: addBelow() then
+// addAbove() append the two subtrees. The node's upper-child index is set once the lower
+// subtree is in.
+template <typename AddBelow, typename AddAbove>
+void appendInner(FlatTree& out, int axis, float split, const AddBelow& addBelow, const AddAbove& addAbove) {
+    const std::size_t self = out.nodes.size();
+    out.nodes.push_back(SplitNode::leaf(0, 0));  // placeholder
+    addBelow();
+    out.nodes[self] = SplitNode::inner(axis, split, std::uint32_t(out.nodes.size()));
+    addAbove();
+}
+
 // A subtree as the parallel build leaves it: built whole by one thread into `flat`, or, for a
 // node of kTaskPrimitives references or more, its plane and its two children, each built by a
 // task of its own. Laid out in pre-order (appendTo) once every task has finished.
@@ -43,11 +55,8 @@ struct SubtreePieces {
             out.append(flat);
             return;
         }
-        const std::size_t self = out.nodes.size();
-        out.nodes.push_back(SplitNode::leaf(0, 0));  // placeholder until the above child's index is known
-        below->appendTo(out);
-        out.nodes[self] = SplitNode::inner(axis, split, std::uint32_t(out.nodes.size()));
-        above->appendTo(out);
+        appendInner(
+            out, axis, split, [&] { below->appendTo(out); }, [&] { above->appendTo(out); });
     }
 };
 
@@ -62,11 +71,9 @@ void buildSubtree(BuildNode node, FlatTree& out, const SplitFunction& split) {
         return;
     }
     node = BuildNode();  // the children hold what they need; free the parent before recursing
-    const std::size_t self = out.nodes.size();
-    out.nodes.push_back(SplitNode::leaf(0, 0));  // placeholder until the above child's index is known
-    buildSubtree(std::move(parts->below), out, split);
-    out.nodes[self] = SplitNode::inner(parts->axis, parts->split, std::uint32_t(out.nodes.size()));
-    buildSubtree(std::move(parts->above), out, split);
+    appendInner(
+        out, parts->axis, parts->split, [&] { buildSubtree(std::move(parts->below), out, split); },
+        [&] { buildSubtree(std::move(parts->above), out, split); });
 }
 
 // A node of kTaskPrimitives references or more builds its lower child as a task and its upper

@@ -53,8 +53,8 @@ CLI::Validator positiveNumber() {
 CLI::Option* addThreadsOption(CLI::App& app, int& threads) {
     return app.add_option("--threads", threads, "Threads of the build and the render (default 0: all cores)")
         ->check(numberIn(0, kMaxThreads))
-        ->each([](const std::string& n) {
-            if (std::stoi(n) > 0) omp_set_num_threads(std::stoi(n));
+        ->each([](const std::string& text) {
+            if (const int n = std::stoi(text); n > 0) omp_set_num_threads(n);
         });
 }
 
