@@ -101,6 +101,10 @@ void SplitTree::layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes
 // [tMin, tMax] of the ray inside it. Entries lower in the stack lie farther along the
 // ray, so once the nearest hit so far (`tLimit`) lies before the current node, nothing
 // left can be nearer and the search stops.
+// The descent keeps its branches: the same choices made without them (masks and selects) ran at
+// half the speed, each node's load then waiting for the last one's arithmetic instead of being
+// issued on a prediction (docs/benchmarks.md, branch `descent`). What it adds is prefetching: a
+// pushed far child's node, and at a leaf the next leaf on the stack, are fetched ahead of use.
 template <typename LeafVisitor>
 void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
                          const LeafVisitor& visitLeaf) const {
@@ -142,17 +146,20 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
                 index = second;
             } else if (!std::isnan(tPlane)) {
                 stack[size++] = {second, tPlane, tMax};
+                prefetchNode(second);
                 index = first;
                 tMax = tPlane;
             } else {
                 // The ray lies in the plane (0 * inf fails every test above): primitives on
                 // either side may touch it, so both children get the whole interval.
                 stack[size++] = {second, tMin, tMax};
+                prefetchNode(second);
                 index = first;
             }
             node = nodes_[index];
         }
         ++steps;
+        if (size != 0) prefetchLeafOf(stack[size - 1].node);
         if (node.primitiveCount() != 0 && visitLeaf(prims, leafAt(node.primitiveOffset()))) break;
         if (size == 0) break;
         --size;
@@ -162,6 +169,23 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
         if (tLimit < tMin) break;
     }
     counters.traversalSteps += steps;
+}
+
+// The far child waits on the stack while the near one is searched: its node is fetched meanwhile.
+void SplitTree::prefetchNode(std::uint32_t index) const { __builtin_prefetch(&nodes_[index]); }
+
+// Called at a leaf for the node next on the stack (fetched when it was pushed): if that node is a
+// leaf, its record and first block are fetched while this leaf is tested, so that the two leaves'
+// cache misses overlap instead of following each other. No branch on the node, whose load may
+// still be on its way: an inner node fetches its own cache line again, which is there already.
+void SplitTree::prefetchLeafOf(std::uint32_t index) const {
+    const SplitNode node = nodes_[index];
+    // As integers: an inner node's offset is its split's bits, no place in leafData_.
+    const auto leafBytes = std::uintptr_t(leafData_.data()) + std::uintptr_t(node.primitiveOffset()) * sizeof(LeafUnit);
+    const auto nodeBytes = std::uintptr_t(&nodes_[index]);
+    const auto* at = reinterpret_cast<const char*>(node.isLeaf() ? leafBytes : nodeBytes);
+    for (std::size_t line = 0; line < kLeafPrefetchBytes; line += 64) __builtin_prefetch(at + line);
+    __builtin_prefetch(at + kLeafPrefetchBytes - 1);  // the last cache line, when the leaf starts inside one
 }
 
 // Nearest hit: each block's hits are taken in lane order, as the scalar loop took the

@@ -92,6 +92,8 @@ struct alignas(16) LeafPrimitives {
     }
 };
 static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16);
+// What the traversal fetches ahead of a leaf (SplitTree::prefetchLeafOf): its record and first block.
+inline constexpr std::size_t kLeafPrefetchBytes = sizeof(LeafPrimitives) + sizeof(TriangleBlock);
 
 class SplitTree final : public Accelerator {
 public:
@@ -118,6 +120,8 @@ private:
     template <typename LeafVisitor>
     void traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
                   const LeafVisitor& visitLeaf) const;
+    void prefetchNode(std::uint32_t index) const;
+    void prefetchLeafOf(std::uint32_t index) const;
     AccelStats computeStats(std::string name, SahCosts costs) const;
 
     const Primitives& prims_;
