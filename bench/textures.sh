@@ -42,7 +42,7 @@ printf '%-48s %10s %10s %8s %8s\n' model textured untextured ratio copies
 for model in glb/Duck/Duck.glb gltf/Suzanne/Suzanne.gltf gltf/LightsPunctualLamp/LightsPunctualLamp.gltf \
     obj/scrub-pine/scrubPine.obj glb/NormalTangentMirrorTest/NormalTangentMirrorTest.glb; do
     "$convert" "$shared/models/$model" -o "$work/scene.xml" 2>/dev/null
-    sed -E -i 's/ (texture|emission_texture|alpha_texture|normal_texture|metallic_roughness_texture)="[^"]*"//g' \
+    sed -E -i 's/ [a-z_]*texture="[^"]*"//g' \
         "$work/scene.xml"
     rm -rf "$RT_TX_CACHE"
     first=$(process_seconds "$shared/models/$model")

@@ -115,11 +115,15 @@ private:
     std::vector<OIIO::TextureSystem*> idle_;
 };
 
-// The most probes along a ray cone's footprint (TextureOpt::anisotropic) after a bounce: fewer
-// than a camera ray's 32, for lookups whose colour is mostly weighted down by a reflection; 4
-// keeps a checker seen in a mirror as close to the supersampled one as a camera ray's view
-// (trilinear, one probe, did not: TextureFiles.ACheckerSeenInAMirrorIsFilteredToo).
-constexpr int kConeProbes = 4;
+// The most anisotropy a lookup's filter takes (TextureOpt::anisotropic; OpenImageIO probes up to
+// twice as many points along the footprint, on each of two MIP levels). OpenImageIO's default, 32,
+// took up to 63 probes a level; a camera ray's 8 (15 probes, about a GPU's 16x) and a ray cone's 3
+// after a bounce come closer to a supersampled render of a checker floor seen towards the horizon,
+// directly and in a mirror (TextureFiles.RayDifferentialsFilterADistantCheckerFloor,
+// ACheckerSeenInAMirrorIsFilteredToo; docs/benchmarks.md), for fewer probes: OpenImageIO clamps
+// the footprint's aspect by widening its minor axis, so its finer levels' aliasing is blurred away.
+constexpr int kCameraProbes = 8;
+constexpr int kConeProbes = 3;
 
 // The sRGB transfer function, inverted (IEC 61966-2-1).
 float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
@@ -150,9 +154,9 @@ struct TextureFiles::Impl {
     std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> embeddedBytes;
 
     // The first three channels at `at` as stored (a grey image's one in all three), filtered
-    // over the footprint its derivatives give (mip-mapped, anisotropic: OpenImageIO's default,
-    // up to 32 probes on each of two levels; a ray cone's footprint takes at most
-    // kConeProbes, render/ray_differential.h); `c` is left as it is when the image cannot be read.
+    // over the footprint its derivatives give (mip-mapped, anisotropic up to kCameraProbes; a ray
+    // cone's footprint up to kConeProbes, render/ray_differential.h); `c` is left as it is when
+    // the image cannot be read.
     bool sample(const Entry& e, const TexCoord& at, Color& c) const {
         if (e.file.empty()) return false;
         float rgb[3] = {c.r, c.g, c.b};
@@ -165,12 +169,31 @@ struct TextureFiles::Impl {
         return true;
     }
 
+    // What a render thread keeps for this TextureFiles: OpenImageIO's per-thread info, found once
+    // rather than by a thread-specific lookup in every texture() call, and the last alpha() asked
+    // for. Keyed by `serial`, not the system's address: the pool reuses systems, and a thread's info
+    // is found anew (its stale tiles dropped) for every TextureFiles.
+    struct PerThread {
+        std::uint64_t owner = 0;
+        OIIO::TextureSystem::Perthread* info = nullptr;
+        std::uint32_t index = 0;  // the last alpha(): texture, channel, coordinates and value
+        int channel = -1;
+        float s = 0, t = 0, alpha = 1;
+    };
+    std::uint64_t serial = 0;  // unique in the process
+
+    PerThread& perThread() const {
+        thread_local PerThread mine;
+        if (mine.owner != serial) mine = {.owner = serial, .info = system->get_perthread_info()};
+        return mine;
+    }
+
     // OpenImageIO's lookup of e's first `e.channels` channels into `rgb`.
     bool filter(const Entry& e, const TexCoord& at, float* rgb) const {
         OIIO::TextureOpt options = e.options;  // per call: the system may write to it
-        if (at.isotropic) options.anisotropic = kConeProbes;
-        return system->texture(e.handle, nullptr, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy, e.channels,
-                               rgb);
+        options.anisotropic = at.isotropic ? kConeProbes : kCameraProbes;
+        return system->texture(e.handle, perThread().info, options, at.s, at.t, at.dsdx, at.dtdx, at.dsdy, at.dtdy,
+                               e.channels, rgb);
     }
 
     // The channel alpha() reads (a mask without alpha: its first), or -1 for none.
@@ -280,6 +303,8 @@ bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
 
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureCacheSettings& cache)
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
+    static std::atomic<std::uint64_t> serials{0};
+    impl_->serial = ++serials;
     impl_->system = TextureSystemPool::take();
     impl_->system->attribute("max_memory_MB", cache.megabytes);
     impl_->txCache = cache.txCache;
@@ -309,13 +334,22 @@ float TextureFiles::alpha(std::uint32_t index, float s, float t, bool mask) cons
     const int channel = impl_->alphaChannel(e, mask);
     if (channel < 0) return 1;
     if (!e.constant.empty()) return e.constant[channel];
+    // A ray's traversal often asks again for the hit it just tested (a triangle in two leaves of
+    // the tree): the same arguments, the same value.
+    Impl::PerThread& mine = impl_->perThread();
+    if (mine.channel == channel && mine.index == index && mine.s == s && mine.t == t) return mine.alpha;
     float a = 1;
     OIIO::TextureOpt options = e.options;
     options.firstchannel = channel;
     // Read during traversal, where rays carry no differentials: the finest level, one bilinear
     // probe, which OpenImageIO's no-MIP mode reaches without the footprint's set-up.
     options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
-    if (!impl_->system->texture(e.handle, nullptr, options, s, t, 0, 0, 0, 0, 1, &a)) return 1;
+    if (!impl_->system->texture(e.handle, mine.info, options, s, t, 0, 0, 0, 0, 1, &a)) a = 1;
+    mine.index = index;
+    mine.channel = channel;
+    mine.s = s;
+    mine.t = t;
+    mine.alpha = a;
     return a;
 }
 

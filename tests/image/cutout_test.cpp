@@ -214,3 +214,27 @@ TEST(TextureFiles, AlphaBlendsTheTwoNearestTexelsOfTheFinestLevel) {
     EXPECT_EQ(images.alpha(0, (kCell - 0.25f) / kSize, row, false), 0.75f);
     std::filesystem::remove(path);
 }
+
+// Each thread remembers the last alpha asked for (a ray's traversal often asks again for the hit it
+// just tested), per TextureFiles: two alive at once, asked in turn for the same texture index,
+// channel and coordinates, each answer from its own picture.
+TEST(TextureFiles, AlphaAskedAgainIsItsOwnPicturesForEachTextureFiles) {
+    const std::string dir = testing::TempDir();
+    writeMask(dir + "/alpha-grey.png", 1);  // clear cells: 0 in its only channel
+    writeMask(dir + "/alpha-rgb.png", 3);   // its first channel white everywhere
+    const auto scene = [&](const char* name) {
+        Scene s;
+        s.textures.push_back({.name = name, .path = dir + "/" + name + ".png"});
+        return s;
+    };
+    const Scene grey = scene("alpha-grey"), rgb = scene("alpha-rgb");
+    std::vector<std::string> warnings;
+    const TextureFiles greyImages(grey, warnings), rgbImages(rgb, warnings);
+    const float clear = (kCell + 0.5f) / kSize, row = 0.5f / kSize;
+    for (int turn = 0; turn < 2; ++turn) {
+        EXPECT_EQ(greyImages.alpha(0, clear, row, true), 0.0f);
+        EXPECT_EQ(greyImages.alpha(0, clear, row, true), 0.0f);  // asked again
+        EXPECT_EQ(rgbImages.alpha(0, clear, row, true), 1.0f);
+    }
+    for (const char* name : {"alpha-grey", "alpha-rgb"}) std::filesystem::remove(dir + "/" + name + ".png");
+}

@@ -164,7 +164,8 @@ ThreeRenders renderThreeWays(const Scene& scene, const ImageTextures& filtered) 
 }  // namespace
 
 // Ray differentials (render/ray_differential.h): one filtered sample a pixel comes close to
-// 64 point samples, where one point sample a pixel shimmers (measured: RMS 0.045 against 0.27).
+// 64 point samples, where one point sample a pixel shimmers (measured: RMS 0.047 against 0.22 with
+// an anisotropy of at most 8; OpenImageIO's default of 32 came to 0.050).
 TEST(TextureFiles, RayDifferentialsFilterADistantCheckerFloor) {
     const std::string path = testing::TempDir() + "/checker.exr";
     writeChecker(path);
@@ -188,7 +189,9 @@ TEST(TextureFiles, RayDifferentialsFilterADistantCheckerFloor) {
 
 // A ray cone after a reflection takes fewer probes than a camera ray (render/ray_differential.h):
 // the checker, a ceiling seen in a mirror floor towards the horizon, still comes close to 64
-// point samples, where one point sample a pixel shimmers (trilinear, one probe, came to 2.7x).
+// point samples, where one point sample a pixel shimmers (measured: RMS 0.034 against 0.30 with
+// an anisotropy of 3, 0.049 with float geometry; 4 came to 0.049, 2 to 0.090, trilinear, one
+// probe, to 0.110).
 TEST(TextureFiles, ACheckerSeenInAMirrorIsFilteredToo) {
     const std::string path = testing::TempDir() + "/checker-in-mirror.exr";
     writeChecker(path);
@@ -215,7 +218,7 @@ TEST(TextureFiles, ACheckerSeenInAMirrorIsFilteredToo) {
     };
     EXPECT_GT(reference.at(48, 45).g + reference.at(48, 60).g, 0) << "the checker is seen in the mirror";
     const double errorWith = mirrorError(three.filtered), errorWithout = mirrorError(three.pointSampled);
-    EXPECT_LT(errorWith, errorWithout / 3) << "RMS error with " << errorWith << ", without " << errorWithout;
+    EXPECT_LT(errorWith, errorWithout / 5) << "RMS error with " << errorWith << ", without " << errorWithout;
     std::filesystem::remove(path);
 }
 
