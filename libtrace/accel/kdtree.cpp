@@ -118,14 +118,11 @@ private:
     }
 
     // Buffers a split reuses from node to node on one thread (see scratchFor).
-    struct Clipped {
-        Aabb below, above;
-    };
     struct Scratch {
         std::vector<std::uint32_t> place;       // see partition
         std::vector<std::uint32_t> straddling;  // indices into the node of the primitives in both children
         std::vector<std::array<std::size_t, 3>> chunkStarts;  // sortToSides
-        std::vector<Clipped> clipped;                         // the straddling primitives' bounds in each child
+        std::vector<SplitBounds> clipped;                     // the straddling primitives' bounds in each child
         SplitEvents sides[2];                                 // distribute: the kept primitives' events per child
         SplitEvents fresh;                                    // mergeEvents: the clipped primitives' events
     };
@@ -165,7 +162,7 @@ private:
         Scratch& scratch = scratchFor(n, own);
         sortToSides(node, split, parts, scratch);
         const std::size_t belowKept = below.primitives.size(), aboveKept = above.primitives.size();
-        addClipped(node, below, above, scratch);
+        addClipped(node, split, below, above, scratch);
         if (!carriesEvents(settings_, n)) return parts;
         const bool belowCarries = carriesEvents(settings_, below.primitives.size());
         const bool aboveCarries = carriesEvents(settings_, above.primitives.size());
@@ -237,15 +234,17 @@ private:
     // Perfect splits: each straddling primitive's own extent inside each child's voxel, added
     // in order unless it misses the voxel (rounding). Clipped in chunks on all threads in a
     // large node: a clip costs a few hundred nanoseconds.
-    void addClipped(const KdNode& node, KdNode& below, KdNode& above, Scratch& scratch) const {
+    void addClipped(const KdNode& node, const SahSplit& split, KdNode& below, KdNode& above, Scratch& scratch) const {
         const std::vector<std::uint32_t>& straddling = scratch.straddling;
-        std::vector<Clipped>& clipped = scratch.clipped;
+        std::vector<SplitBounds>& clipped = scratch.clipped;
         clipped.resize(straddling.size());
         forEachChunk(nodeChunks(straddling.size(), 256, node.primitives.size()),
                      [&](std::size_t, std::size_t begin, std::size_t end) {
                          for (std::size_t i = begin; i < end; ++i) {
                              const std::uint32_t id = node.primitives[straddling[i]];
-                             clipped[i] = {clipTo(id, below.voxel), clipTo(id, above.voxel)};
+                             clipped[i] = prims_.visit(id, [&](const auto& p) {
+                                 return splitClippedBounds(p, node.voxel, split.axis, split.pos);
+                             });
                          }
                      });
         for (std::size_t i = 0; i < straddling.size(); ++i) {
@@ -255,27 +254,28 @@ private:
         }
     }
 
-    Aabb clipTo(std::uint32_t id, const Aabb& voxel) const {
-        return prims_.visit(id, [&](const auto& p) { return clippedBounds(p, voxel); });
-    }
-
     // Deals the node's sorted events on one axis out to scratch.sides, per child, renumbered to
     // the primitives' places there, still sorted; returns how many each side got. A straddling
-    // primitive's events are dropped (its clipped bounds make new ones). Without branches:
-    // the sides come in random order, and a mispredicted branch per event cost more than the
-    // write to the side that is not advanced (one slot past each side's events).
+    // primitive's events are dropped (its clipped bounds make new ones). Without branches (the
+    // sides come in random order, and a mispredicted branch per event cost more than the rest):
+    // each event is written to both sides, one slot past each side's events, and only its own
+    // side's end moves on.
     static std::array<std::size_t, 2> distribute(const SplitEvents& events, Scratch& scratch) {
-        SplitEvent* const first[2] = {atLeast(scratch.sides[0], events.size() + 1),
-                                      atLeast(scratch.sides[1], events.size() + 1)};
-        SplitEvent* out[2] = {first[0], first[1]};
+        SplitEvent* const belowFirst = atLeast(scratch.sides[0], events.size() + 1);
+        SplitEvent* const aboveFirst = atLeast(scratch.sides[1], events.size() + 1);
+        SplitEvent* below = belowFirst;
+        SplitEvent* above = aboveFirst;
         const std::uint32_t* const place = scratch.place.data();
         for (const SplitEvent& e : events) {
             const std::uint32_t p = place[e.primitive()];
-            const std::uint32_t side = p & 1;  // kNone writes above without advancing
-            *out[side] = SplitEvent(e.pos, p >> 1, e.type());
-            out[side] += p != kNone;
+            const SplitEvent renumbered(e.pos, p >> 1, e.type());
+            *below = renumbered;
+            *above = renumbered;
+            const std::uint32_t kept = p != kNone, isAbove = p & 1;
+            below += kept & (isAbove ^ 1);
+            above += kept & isAbove;
         }
-        return {std::size_t(out[0] - first[0]), std::size_t(out[1] - first[1])};
+        return {std::size_t(below - belowFirst), std::size_t(above - aboveFirst)};
     }
 
     // A child's events on `axis`: its `keptCount` kept events (sorted, renumbered) merged with
