@@ -8,7 +8,7 @@
 
 namespace rt {
 
-void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vector<SplitEvent>& events) {
+void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, SplitEvents& events) {
     if (box.planar(axis)) {
         events.emplace_back(box.lo[axis], primitive, SplitEvent::Planar);
     } else {
@@ -17,7 +17,7 @@ void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vect
     }
 }
 
-void addEventsByType(const std::vector<FloatBox>& boxes, int axis, std::vector<SplitEvent>& events) {
+void addEventsByType(const std::vector<FloatBox>& boxes, int axis, SplitEvents& events) {
     for (std::uint32_t i = 0; i < boxes.size(); ++i)
         if (!boxes[i].planar(axis)) events.emplace_back(boxes[i].hi[axis], i, SplitEvent::End);
     for (std::uint32_t i = 0; i < boxes.size(); ++i)
@@ -39,8 +39,7 @@ bool typeBefore(const SplitEvent& a, const SplitEvent& b) { return a.type() < b.
 
 // One stable counting-sort pass of `events` by `digit`, given the digit's histogram.
 template <typename Digit>
-void countingPass(std::vector<SplitEvent>& events, std::vector<SplitEvent>& buffer, std::vector<std::size_t> start,
-                  const Digit& digit) {
+void countingPass(SplitEvents& events, SplitEvents& buffer, std::vector<std::size_t> start, const Digit& digit) {
     std::size_t sum = 0;
     for (std::size_t& s : start) sum += std::exchange(s, sum);
     for (const SplitEvent& e : events) buffer[start[digit(e)]++] = e;
@@ -54,8 +53,8 @@ void countingPass(std::vector<SplitEvent>& events, std::vector<SplitEvent>& buff
 // The root's millions of events do not fit in the caches, so every pass over them counts:
 // the type pass is skipped when the events already come in type order (the root's do,
 // addEventsByType), and one read counts the digits of all three position passes.
-void radixSortEvents(std::vector<SplitEvent>& events) {
-    std::vector<SplitEvent> buffer(events.size(), SplitEvent(0, 0, SplitEvent::End));
+void radixSortEvents(SplitEvents& events) {
+    SplitEvents buffer(events.size());
     if (!std::is_sorted(events.begin(), events.end(), typeBefore)) {
         std::vector<std::size_t> types(3, 0);
         for (const SplitEvent& e : events) ++types[e.type()];
@@ -74,6 +73,18 @@ void radixSortEvents(std::vector<SplitEvent>& events) {
         countingPass(events, buffer, std::move(histograms[p]),
                      [shift](const SplitEvent& e) { return std::size_t(orderedKey(e.pos) >> shift) & kMask; });
     }
+}
+
+void mergeSortedEvents(const SplitEvent* a, const SplitEvent* aEnd, const SplitEvent* b, const SplitEvent* bEnd,
+                       SplitEvent* out) {
+    while (a != aEnd && b != bEnd) {
+        // operator< with & and | for && and ||, and a pointer chosen by a conditional move
+        const bool takeB = (b->pos < a->pos) | ((b->pos == a->pos) & (b->type() < a->type()));
+        *out++ = *(takeB ? b : a);
+        b += takeB;
+        a += !takeB;
+    }
+    std::copy(b, bEnd, std::copy(a, aEnd, out));
 }
 
 SahModel::SahModel(const Aabb& voxel, const KdSettings& settings)
@@ -95,7 +106,7 @@ SahModel::SahModel(const Aabb& voxel, const KdSettings& settings)
 // At each position: primitives ending there leave the upper side before the plane is
 // evaluated, those starting there join the lower side after it, and those lying in it
 // are offered to either side (SahModel::consider).
-void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives, const SahModel& sah,
+void sweepSortedEvents(const SplitEvents& events, int axis, std::size_t primitives, const SahModel& sah,
                        SahSplit& best) {
     std::size_t below = 0, above = primitives;
     const std::size_t n = events.size();
@@ -112,7 +123,7 @@ void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::siz
 
 SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& sah) {
     SahSplit best;
-    thread_local std::vector<SplitEvent> events;  // reused: small nodes are many
+    thread_local SplitEvents events;  // reused: small nodes are many
     for (int axis = 0; axis < 3; ++axis) {
         events.clear();
         for (std::uint32_t i = 0; i < boxes.size(); ++i) addEvents(boxes[i], i, axis, events);

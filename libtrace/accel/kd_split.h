@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "accel/settings.h"
@@ -54,22 +56,48 @@ struct SplitEvent {
     float pos;
     std::uint32_t code;  // (local primitive index << 2) | type
 
+    SplitEvent() = default;
     SplitEvent(float p, std::uint32_t primitive, Type type) : pos(p), code((primitive << 2) | type) {}
     std::uint32_t primitive() const { return code >> 2; }
     Type type() const { return Type(code & 3u); }
     bool operator<(const SplitEvent& o) const { return pos < o.pos || (pos == o.pos && type() < o.type()); }
 };
 
+// Leaves the items a vector grows by uninitialized (default-initialized), for the event lists
+// that are sized first and then written: value-initializing them cost a pass of its own.
+template <typename T>
+struct DefaultInitAllocator : std::allocator<T> {
+    template <typename U>
+    struct rebind {
+        using other = DefaultInitAllocator<U>;
+    };
+    template <typename U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <typename U, typename... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+using SplitEvents = std::vector<SplitEvent, DefaultInitAllocator<SplitEvent>>;
+
 // Sorts events into operator<'s order in linear time (LSD radix sort), for the root's
 // millions of events; std::sort serves the small lists below it. Faster when the events
 // already come in type order (addEventsByType).
-void radixSortEvents(std::vector<SplitEvent>& events);
+void radixSortEvents(SplitEvents& events);
+
+// Merges the sorted lists [a, aEnd) and [b, bEnd) into `out` (std::merge: equal events from
+// `a` first), without a branch per event: which list comes next is as good as random, and a
+// mispredicted branch cost more than the merge's work.
+void mergeSortedEvents(const SplitEvent* a, const SplitEvent* aEnd, const SplitEvent* b, const SplitEvent* bEnd,
+                       SplitEvent* out);
 
 // Appends the events of one primitive's bounds on `axis`.
-void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, std::vector<SplitEvent>& events);
+void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, SplitEvents& events);
 // Appends the events of all `boxes` (primitive i is boxes[i]) on `axis` in type order: ends,
 // then planars, then starts, each in primitive order.
-void addEventsByType(const std::vector<FloatBox>& boxes, int axis, std::vector<SplitEvent>& events);
+void addEventsByType(const std::vector<FloatBox>& boxes, int axis, SplitEvents& events);
 
 struct SahSplit {
     int axis = -1;
@@ -116,7 +144,7 @@ private:
 };
 
 // One pass over the sorted events of `axis` evaluates every candidate plane there.
-void sweepSortedEvents(const std::vector<SplitEvent>& events, int axis, std::size_t primitives, const SahModel& sah,
+void sweepSortedEvents(const SplitEvents& events, int axis, std::size_t primitives, const SahModel& sah,
                        SahSplit& best);
 
 // The thesis's method: build and sort the events of every axis in this node.

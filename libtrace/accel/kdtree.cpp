@@ -48,9 +48,9 @@ bool bins(const KdSettings& settings, std::size_t primitives) {
 }
 
 struct KdNode {
-    std::vector<std::uint32_t> primitives;          // ids into Primitives
-    std::vector<FloatBox> boxes;                    // their bounds clipped to the voxel
-    std::array<std::vector<SplitEvent>, 3> events;  // Sweep only: per axis, sorted, indices into `primitives`
+    std::vector<std::uint32_t> primitives;  // ids into Primitives
+    std::vector<FloatBox> boxes;            // their bounds clipped to the voxel
+    std::array<SplitEvents, 3> events;      // Sweep only: per axis, sorted, indices into `primitives`
     Aabb voxel;
     int depth = 0;
     double referenceBudget = 0;  // references the leaves of this subtree may hold at most
@@ -109,12 +109,39 @@ private:
     static void sortEvents(KdNode& node) {
         forEachChunk(nodeChunks(3, 1, node.boxes.size()), [&](std::size_t, std::size_t begin, std::size_t end) {
             for (std::size_t axis = begin; axis < end; ++axis) {
-                std::vector<SplitEvent>& events = node.events[axis];
+                SplitEvents& events = node.events[axis];
                 events.reserve(2 * node.boxes.size());
                 addEventsByType(node.boxes, int(axis), events);  // spares radixSortEvents its type pass
                 radixSortEvents(events);
             }
         });
+    }
+
+    // Buffers a split reuses from node to node on one thread (see scratchFor).
+    struct Scratch {
+        std::vector<std::uint32_t> place;       // see partition
+        std::vector<std::uint32_t> straddling;  // indices into the node of the primitives in both children
+        std::vector<std::array<std::size_t, 3>> chunkStarts;  // sortToSides
+        std::vector<SplitBounds> clipped;                     // the straddling primitives' bounds in each child
+        SplitEvents sides[2];                                 // distribute: the kept primitives' events per child
+        SplitEvents fresh;                                    // mergeEvents: the clipped primitives' events
+    };
+
+    // A node below kTaskPrimitives runs no task while it splits, so no other node's split runs
+    // on its thread in between: it borrows the thread's buffers, and the many small nodes
+    // allocate nothing but their children. A larger node's chunk tasks may run other nodes'
+    // splits on its thread, so it uses buffers of its own (`own`).
+    static Scratch& scratchFor(std::size_t primitives, Scratch& own) {
+        thread_local Scratch shared;
+        return primitives < kTaskPrimitives ? shared : own;
+    }
+
+    // A pointer to `v`'s first n items, growing it if it is shorter (never shrinking, so a
+    // reused buffer is not filled again).
+    template <typename Vector>
+    static auto* atLeast(Vector& v, std::size_t n) {
+        if (v.size() < n) v.resize(n);
+        return v.data();
     }
 
     // Sorts the node's primitives to the two sides. One that straddles the plane is
@@ -130,32 +157,20 @@ private:
         below.voxel.hi[axis] = above.voxel.lo[axis] = split.pos;
         below.depth = above.depth = node.depth + 1;
 
-        // Each primitive's place in its one child, (index << 1) | isAbove, or kNone if it
-        // straddles. One array, looked up once per event in the events' (random) primitive
-        // order: at the top levels it does not fit in the caches.
         const std::size_t n = node.primitives.size();
-        std::vector<std::uint32_t> place(n, kNone);
-        const std::vector<std::uint32_t> straddling = sortToSides(node, split, parts, place);
+        Scratch own;
+        Scratch& scratch = scratchFor(n, own);
+        sortToSides(node, split, parts, scratch);
         const std::size_t belowKept = below.primitives.size(), aboveKept = above.primitives.size();
-        addClipped(node, straddling, below, above);
-        if (carriesEvents(settings_, n)) {
-            for (int a = 0; a < 3; ++a) {
-                std::vector<SplitEvent>& belowEvents = below.events[a];
-                std::vector<SplitEvent>& aboveEvents = above.events[a];
-                belowEvents.reserve(2 * below.primitives.size());
-                aboveEvents.reserve(2 * above.primitives.size());
-                for (const SplitEvent& e : node.events[a]) {
-                    const std::uint32_t p = place[e.primitive()];
-                    if (p == kNone) continue;
-                    (p & 1 ? aboveEvents : belowEvents).emplace_back(e.pos, p >> 1, e.type());
-                }
-                mergeClippedEvents(below, belowKept, a);
-                mergeClippedEvents(above, aboveKept, a);
-            }
-            for (KdNode* child : {&below, &above}) {
-                if (carriesEvents(settings_, child->primitives.size())) continue;
-                for (std::vector<SplitEvent>& events : child->events) events = {};
-            }
+        addClipped(node, split, below, above, scratch);
+        if (!carriesEvents(settings_, n)) return parts;
+        const bool belowCarries = carriesEvents(settings_, below.primitives.size());
+        const bool aboveCarries = carriesEvents(settings_, above.primitives.size());
+        for (int a = 0; a < 3; ++a) {
+            if (!belowCarries && !aboveCarries) break;
+            const std::array<std::size_t, 2> kept = distribute(node.events[a], scratch);
+            if (belowCarries) mergeEvents(below, belowKept, a, scratch.sides[0].data(), kept[0], scratch.fresh);
+            if (aboveCarries) mergeEvents(above, aboveKept, a, scratch.sides[1].data(), kept[1], scratch.fresh);
         }
         return parts;
     }
@@ -163,39 +178,49 @@ private:
     static constexpr std::uint32_t kNone = ~0u;
 
     // Puts each primitive that lies on one side of the plane into that child, in the node's
-    // order, and records its place there (see partition); returns the straddling ones, in
-    // order. A large node is sorted in chunks on all threads and gathered in chunk order, so
-    // the children are the same for any thread count.
-    static std::vector<std::uint32_t> sortToSides(const KdNode& node, const SahSplit& split, Partition<KdNode>& parts,
-                                                  std::vector<std::uint32_t>& place) {
-        struct Sides {
-            std::vector<std::uint32_t> below, above, straddling;  // indices into the node
-        };
+    // order, and records its place there in scratch.place: (index << 1) | isAbove, or kNone
+    // for one that straddles the plane (listed in scratch.straddling, in order). One array,
+    // looked up once per event in the events' (random) primitive order: at the top levels it
+    // does not fit in the caches. A large node is sorted in chunks on all threads, each
+    // chunk's primitives placed after the previous chunk's, so the children are the same for
+    // any thread count.
+    static void sortToSides(const KdNode& node, const SahSplit& split, Partition<KdNode>& parts, Scratch& scratch) {
+        enum Side : std::uint32_t { Below = 0, Above = 1, Both = 2 };  // Below and Above are isAbove
+        std::uint32_t* const place = atLeast(scratch.place, node.primitives.size());
         const Chunks chunks = nodeChunks(node.primitives.size());
-        std::vector<Sides> sides(chunks.count());
+        std::vector<std::array<std::size_t, 3>>& starts = scratch.chunkStarts;  // per chunk and side
+        starts.assign(chunks.count(), {0, 0, 0});
         forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 const FloatBox& box = node.boxes[i];
                 const bool b = box.below(split.axis, split.pos, split.planarBelow);
                 const bool a = box.above(split.axis, split.pos, split.planarBelow);
-                (b && a ? sides[c].straddling : b ? sides[c].below : sides[c].above).push_back(std::uint32_t(i));
+                place[i] = b && a ? Both : a ? Above : Below;
+                ++starts[c][place[i]];
             }
         });
-        std::vector<std::uint32_t> straddling;
-        std::vector<std::size_t> belowAt, aboveAt;  // where each chunk's primitives start in the children
-        std::size_t belowCount = 0, aboveCount = 0;
-        for (const Sides& chunk : sides) {
-            belowAt.push_back(std::exchange(belowCount, belowCount + chunk.below.size()));
-            aboveAt.push_back(std::exchange(aboveCount, aboveCount + chunk.above.size()));
-            straddling.insert(straddling.end(), chunk.straddling.begin(), chunk.straddling.end());
-        }
-        resize(parts.below, belowCount, straddling.size());
-        resize(parts.above, aboveCount, straddling.size());
-        forEachChunk(chunks, [&](std::size_t c, std::size_t, std::size_t) {
-            copyTo(node, sides[c].below, parts.below, belowAt[c], 0, place);
-            copyTo(node, sides[c].above, parts.above, aboveAt[c], 1, place);
+        std::array<std::size_t, 3> total = {0, 0, 0};
+        for (std::array<std::size_t, 3>& chunk : starts)
+            for (int side = 0; side < 3; ++side) chunk[side] = std::exchange(total[side], total[side] + chunk[side]);
+        resize(parts.below, total[Below], total[Both]);
+        resize(parts.above, total[Above], total[Both]);
+        scratch.straddling.resize(total[Both]);
+        forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
+            std::array<std::size_t, 3> next = starts[c];
+            for (std::size_t i = begin; i < end; ++i) {
+                const std::uint32_t side = place[i];
+                const std::size_t at = next[side]++;
+                if (side == Both) {
+                    scratch.straddling[at] = std::uint32_t(i);
+                    place[i] = kNone;
+                    continue;
+                }
+                KdNode& child = side == Below ? parts.below : parts.above;
+                child.primitives[at] = node.primitives[i];
+                child.boxes[at] = node.boxes[i];
+                place[i] = std::uint32_t(at) << 1 | side;
+            }
         });
-        return straddling;
     }
 
     // Sizes a child for `kept` primitives, with room for `clipped` more.
@@ -206,31 +231,20 @@ private:
         child.boxes.resize(kept);
     }
 
-    // Copies the node's primitives `indices` to the child from `at` on, recording their places.
-    static void copyTo(const KdNode& node, const std::vector<std::uint32_t>& indices, KdNode& child, std::size_t at,
-                       std::uint32_t isAbove, std::vector<std::uint32_t>& place) {
-        for (const std::uint32_t i : indices) {
-            child.primitives[at] = node.primitives[i];
-            child.boxes[at] = node.boxes[i];
-            place[i] = std::uint32_t(at) << 1 | isAbove;
-            ++at;
-        }
-    }
-
     // Perfect splits: each straddling primitive's own extent inside each child's voxel, added
     // in order unless it misses the voxel (rounding). Clipped in chunks on all threads in a
     // large node: a clip costs a few hundred nanoseconds.
-    void addClipped(const KdNode& node, const std::vector<std::uint32_t>& straddling, KdNode& below,
-                    KdNode& above) const {
-        struct Clipped {
-            Aabb below, above;
-        };
-        std::vector<Clipped> clipped(straddling.size());
+    void addClipped(const KdNode& node, const SahSplit& split, KdNode& below, KdNode& above, Scratch& scratch) const {
+        const std::vector<std::uint32_t>& straddling = scratch.straddling;
+        std::vector<SplitBounds>& clipped = scratch.clipped;
+        clipped.resize(straddling.size());
         forEachChunk(nodeChunks(straddling.size(), 256, node.primitives.size()),
                      [&](std::size_t, std::size_t begin, std::size_t end) {
                          for (std::size_t i = begin; i < end; ++i) {
                              const std::uint32_t id = node.primitives[straddling[i]];
-                             clipped[i] = {clipTo(id, below.voxel), clipTo(id, above.voxel)};
+                             clipped[i] = prims_.visit(id, [&](const auto& p) {
+                                 return splitClippedBounds(p, node.voxel, split.axis, split.pos);
+                             });
                          }
                      });
         for (std::size_t i = 0; i < straddling.size(); ++i) {
@@ -240,8 +254,42 @@ private:
         }
     }
 
-    Aabb clipTo(std::uint32_t id, const Aabb& voxel) const {
-        return prims_.visit(id, [&](const auto& p) { return clippedBounds(p, voxel); });
+    // Deals the node's sorted events on one axis out to scratch.sides, per child, renumbered to
+    // the primitives' places there, still sorted; returns how many each side got. A straddling
+    // primitive's events are dropped (its clipped bounds make new ones). Without branches (the
+    // sides come in random order, and a mispredicted branch per event cost more than the rest):
+    // each event is written to both sides, one slot past each side's events, and only its own
+    // side's end moves on.
+    static std::array<std::size_t, 2> distribute(const SplitEvents& events, Scratch& scratch) {
+        SplitEvent* const belowFirst = atLeast(scratch.sides[0], events.size() + 1);
+        SplitEvent* const aboveFirst = atLeast(scratch.sides[1], events.size() + 1);
+        SplitEvent* below = belowFirst;
+        SplitEvent* above = aboveFirst;
+        const std::uint32_t* const place = scratch.place.data();
+        for (const SplitEvent& e : events) {
+            const std::uint32_t p = place[e.primitive()];
+            const SplitEvent renumbered(e.pos, p >> 1, e.type());
+            *below = renumbered;
+            *above = renumbered;
+            const std::uint32_t kept = p != kNone, isAbove = p & 1;
+            below += kept & (isAbove ^ 1);
+            above += kept & isAbove;
+        }
+        return {std::size_t(below - belowFirst), std::size_t(above - aboveFirst)};
+    }
+
+    // A child's events on `axis`: its `keptCount` kept events (sorted, renumbered) merged with
+    // the freshly sorted events of its clipped primitives, which are its primitives from
+    // `firstClipped` on. Equal events keep the kept ones first, as a stable merge does.
+    static void mergeEvents(KdNode& child, std::size_t firstClipped, int axis, const SplitEvent* kept,
+                            std::size_t keptCount, SplitEvents& fresh) {
+        fresh.clear();
+        for (std::size_t i = firstClipped; i < child.primitives.size(); ++i)
+            addEvents(child.boxes[i], std::uint32_t(i), axis, fresh);
+        std::sort(fresh.begin(), fresh.end());
+        SplitEvents& events = child.events[axis];
+        events.resize(keptCount + fresh.size());
+        mergeSortedEvents(kept, kept + keptCount, fresh.data(), fresh.data() + fresh.size(), events.data());
     }
 
     // Gives each child its share of the parent's budget, or returns false when the children's
@@ -258,18 +306,6 @@ private:
         child.primitives.push_back(id);
         child.boxes.push_back(box);
         return std::uint32_t(child.primitives.size() - 1);
-    }
-
-    // A child's events on `axis` are the parent's events of the primitives that went to
-    // this side only (still sorted, renumbered), merged with the freshly sorted events of
-    // the clipped primitives, which are the child's primitives from `kept` on.
-    static void mergeClippedEvents(KdNode& child, std::size_t kept, int axis) {
-        std::vector<SplitEvent>& events = child.events[axis];
-        const std::size_t inherited = events.size();
-        for (std::size_t i = kept; i < child.primitives.size(); ++i)
-            addEvents(child.boxes[i], std::uint32_t(i), axis, events);
-        std::sort(events.begin() + std::ptrdiff_t(inherited), events.end());
-        std::inplace_merge(events.begin(), events.begin() + std::ptrdiff_t(inherited), events.end());
     }
 
     const Primitives& prims_;

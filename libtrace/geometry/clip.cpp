@@ -35,26 +35,63 @@ Polygon clipToPlane(const Polygon& in, int axis, Real pos, bool keepAbove) {
     return out;
 }
 
-}  // namespace
-
-Aabb clippedBounds(const Triangle& tri, const Aabb& box) {
+// The triangle clipped to the box. A plane the whole triangle lies inside of would return the
+// polygon unchanged: skip it. In a KD build most triangles cross one or two of a voxel's
+// planes, not six.
+Polygon clipToBox(const Triangle& tri, const Aabb& triBounds, const Aabb& box) {
     Polygon poly;
     poly.v[0] = tri.p0;
     poly.v[1] = tri.p1;
     poly.v[2] = tri.p2;
     poly.n = 3;
-    // A plane the whole triangle lies inside of would return the polygon unchanged: skip it.
-    // In a KD build most triangles cross one or two of a voxel's planes, not six.
-    const Aabb triBounds = tri.bounds();
     for (int a = 0; a < 3 && poly.n > 0; ++a) {
         if (triBounds.lo[a] < box.lo[a]) poly = clipToPlane(poly, a, box.lo[a], true);
         if (triBounds.hi[a] > box.hi[a]) poly = clipToPlane(poly, a, box.hi[a], false);
     }
+    return poly;
+}
+
+// The bounds of what was left of the triangle in `box`. Rounding can lose a sliver the exact
+// test still sees; such a triangle is kept, conservatively.
+Aabb keptBounds(const Aabb& bounds, const Triangle& tri, const Aabb& triBounds, const Aabb& box) {
+    if (bounds.empty() && overlaps(tri, box)) return intersection(triBounds, box);
+    return intersection(bounds, box);
+}
+
+}  // namespace
+
+Aabb clippedBounds(const Triangle& tri, const Aabb& box) {
+    const Aabb triBounds = tri.bounds();
+    const Polygon poly = clipToBox(tri, triBounds, box);
     Aabb bounds;
     for (int i = 0; i < poly.n; ++i) bounds.extend(poly.v[i]);
-    // Rounding can lose a sliver the exact test still sees; keep such a triangle, conservatively.
-    if (bounds.empty() && overlaps(tri, box)) bounds = tri.bounds();
-    return intersection(bounds, box);
+    return keptBounds(bounds, tri, triBounds, box);
+}
+
+// The polygon in the box is clipped once and then cut by the plane in one pass over its
+// edges (Sutherland-Hodgman with both sides kept): a vertex counts for the side or sides it
+// lies on, and an edge crossing the plane adds its crossing point, on the plane exactly, to both.
+SplitBounds splitClippedBounds(const Triangle& tri, const Aabb& box, int axis, Real pos) {
+    const Aabb triBounds = tri.bounds();
+    const Polygon poly = clipToBox(tri, triBounds, box);
+    SplitBounds split;
+    for (int i = 0; i < poly.n; ++i) {
+        const Vec3& a = poly.v[i];
+        const Vec3& b = poly.v[i + 1 < poly.n ? i + 1 : 0];
+        if (a[axis] <= pos) split.below.extend(a);
+        if (a[axis] >= pos) split.above.extend(a);
+        if ((a[axis] < pos && b[axis] > pos) || (a[axis] > pos && b[axis] < pos)) {
+            Vec3 p = a + (b - a) * ((pos - a[axis]) / (b[axis] - a[axis]));
+            p[axis] = pos;
+            split.below.extend(p);
+            split.above.extend(p);
+        }
+    }
+    Aabb belowBox = box, aboveBox = box;
+    belowBox.hi[axis] = aboveBox.lo[axis] = pos;
+    split.below = keptBounds(split.below, tri, triBounds, belowBox);
+    split.above = keptBounds(split.above, tri, triBounds, aboveBox);
+    return split;
 }
 
 Aabb clippedBounds(const Sphere& sphere, const Aabb& box) {

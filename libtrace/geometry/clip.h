@@ -14,6 +14,20 @@ namespace rt {
 // the bounds of the polygon left, inside `box`; an empty box if the triangle misses it.
 Aabb clippedBounds(const Triangle& tri, const Aabb& box);
 
+// The clipped bounds of a primitive in the two halves of `box` that the plane x[axis] = pos
+// cuts it into (a KD split's children): for a triangle, one clip to the box and one cut, about
+// half the work of two clippedBounds.
+struct SplitBounds {
+    Aabb below, above;
+};
+SplitBounds splitClippedBounds(const Triangle& tri, const Aabb& box, int axis, Real pos);
+template <class Primitive>
+SplitBounds splitClippedBounds(const Primitive& p, const Aabb& box, int axis, Real pos) {
+    Aabb below = box, above = box;
+    below.hi[axis] = above.lo[axis] = pos;
+    return {clippedBounds(p, below), clippedBounds(p, above)};
+}
+
 // Exact bounds of the solid ball inside the box. On each axis the ball reaches as far
 // as the disc through it still meets the box's rectangle on the other two axes. Empty if
 // the surface misses the box (the box may lie wholly inside, see overlaps(Sphere, Aabb)).

@@ -131,10 +131,10 @@ TEST(KdSplit, RadixSortOrdersEventsAsOperatorLess) {
     std::mt19937 gen(9);
     std::uniform_int_distribution<int> pick(0, 9);
     const float positions[] = {-1e30f, -2.5f, -1.0f, -0.0f, 0.0f, 1e-40f, 0.5f, 0.5f, 3.0f, 1e30f};
-    std::vector<SplitEvent> events;
+    SplitEvents events;
     for (std::uint32_t i = 0; i < 5000; ++i)
         events.emplace_back(positions[pick(gen)], i, SplitEvent::Type(pick(gen) % 3));
-    std::vector<SplitEvent> expected = events;
+    SplitEvents expected = events;
     std::stable_sort(expected.begin(), expected.end());
     radixSortEvents(events);
     ASSERT_EQ(events.size(), expected.size());

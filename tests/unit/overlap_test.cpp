@@ -65,6 +65,33 @@ TEST(ClippedBounds, TriangleAcrossTheBox) {
     EXPECT_TRUE(clippedBounds(Triangle{{0, 0, 2}, {1, 0, 2}, {0, 1, 2}}, kUnitBox).empty());
 }
 
+// Cutting the polygon clipped to the box gives each half what clipping to that half gives,
+// up to rounding (the planes are met in another order); a half the triangle misses stays empty.
+TEST(ClippedBounds, SplitAgreesWithClippingEachHalf) {
+    std::mt19937 gen(9);
+    std::uniform_real_distribution<float> coord(-1, 2), plane(0, 1);
+    int cut = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Triangle t{{coord(gen), coord(gen), coord(gen)},
+                         {coord(gen), coord(gen), coord(gen)},
+                         {coord(gen), coord(gen), coord(gen)}};
+        const int axis = i % 3;
+        const Real pos = plane(gen);
+        Aabb below = kUnitBox, above = kUnitBox;
+        below.hi[axis] = above.lo[axis] = pos;
+        const SplitBounds split = splitClippedBounds(t, kUnitBox, axis, pos);
+        for (const auto& [got, half] : {std::pair{split.below, below}, std::pair{split.above, above}}) {
+            const Aabb want = clippedBounds(t, half);
+            ASSERT_EQ(got.empty(), want.empty()) << t.p0 << t.p1 << t.p2 << " axis " << axis << " at " << pos;
+            if (want.empty()) continue;
+            expectNear(got.lo, want.lo, 1e-5);
+            expectNear(got.hi, want.hi, 1e-5);
+        }
+        cut += !split.below.empty() && !split.above.empty();
+    }
+    EXPECT_GT(cut, 2000);  // triangles across the plane are exercised
+}
+
 TEST(ClippedBounds, SphereExactExtent) {
     // Centre on the face x = 1: inside, the ball reaches from x = 1 - r to the face.
     const Aabb b = clippedBounds(Sphere{{1, 0.5f, 0.5f}, 0.25f}, kUnitBox);
