@@ -13,6 +13,7 @@
 #include "accel/naive.h"
 #include "core/random.h"
 #include "core/simd.h"
+#include "packet_lanes.h"
 #include "render/camera_rays.h"
 #include "scene/generate.h"
 #include "scene/thesis_scenes.h"
@@ -103,22 +104,12 @@ std::vector<std::unique_ptr<Accelerator>> trees(const Primitives& prims) {
     return all;
 }
 
-// Runs each test once per set of lanes the packet traversal can use (core/simd.h).
-class KdPacket : public ::testing::TestWithParam<SimdLevel> {
-protected:
-    void SetUp() override {
-        if (!setPacketSimd(GetParam())) GTEST_SKIP() << "this CPU has no " << simdLevelName(GetParam());
-    }
-    void TearDown() override { setPacketSimd(before_); }
-
-private:
-    SimdLevel before_ = packetSimd();
-};
+// Runs each test once per set of lanes the packet traversal can use.
+class KdPacket : public test::PacketLanes {};
 
 }  // namespace
 
-INSTANTIATE_TEST_SUITE_P(Lanes, KdPacket, ::testing::Values(SimdLevel::sse2, SimdLevel::avx2),
-                         [](const ::testing::TestParamInfo<SimdLevel>& level) { return simdLevelName(level.param); });
+INSTANTIATE_PACKET_LANES(KdPacket);
 
 TEST_P(KdPacket, RandomTrianglesAgreeWithSingleRaysAndTheNaiveList) {
     const Scene scene = generateScene({2000, 0, Placement::Uniform, 21});
