@@ -1,9 +1,9 @@
 # --packets on (camera rays eight at a time) gives the bits of --packets off on real models:
-# textures with ray differentials (spider), cut-outs and single-sided surfaces under a hit
+# textures with ray differentials (jeep1), cut-outs and single-sided surfaces under a hit
 # filter (AlphaBlendModeTest), on SSE2 and AVX2 lanes (RT_SIMD) and on one or two threads.
 source "$(dirname "$0")/common.bash"
 need_shared_models
-models=("$RT_SHARED_DIR/models/obj/spider/spider.obj" "$RT_SHARED_DIR/models/glb/AlphaBlendModeTest/AlphaBlendModeTest.glb")
+models=("$RT_SHARED_DIR/models/3ds/jeep1/jeep1.3ds" "$RT_SHARED_DIR/models/glb/AlphaBlendModeTest/AlphaBlendModeTest.glb")
 opts=(-q -x 90 -y 70 -s --tx-cache off --progress none)
 for model in "${models[@]}"; do
     name=$(basename "$model")
