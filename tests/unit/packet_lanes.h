@@ -20,10 +20,9 @@ private:
 };
 
 // INSTANTIATE_PACKET_LANES(Suite): Suite's tests on both sets of lanes, named sse2 and avx2.
-#define INSTANTIATE_PACKET_LANES(Suite)                                                            \
-    INSTANTIATE_TEST_SUITE_P(Lanes, Suite, ::testing::Values(::rt::SimdLevel::sse2, ::rt::SimdLevel::avx2), \
-                             [](const ::testing::TestParamInfo<::rt::SimdLevel>& level) {          \
-                                 return ::rt::simdLevelName(level.param);                          \
-                             })
+#define INSTANTIATE_PACKET_LANES(Suite)                                                \
+    INSTANTIATE_TEST_SUITE_P(                                                          \
+        Lanes, Suite, ::testing::Values(::rt::SimdLevel::sse2, ::rt::SimdLevel::avx2), \
+        [](const ::testing::TestParamInfo<::rt::SimdLevel>& level) { return ::rt::simdLevelName(level.param); })
 
 }  // namespace rt::test

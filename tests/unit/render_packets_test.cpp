@@ -7,10 +7,10 @@
 #include <cstring>
 
 #include "accel/build.h"
+#include "packet_lanes.h"
 #include "render/renderer.h"
 #include "render/tracer.h"
 #include "scene/thesis_scenes.h"
-#include "packet_lanes.h"
 
 using namespace rt;
 
