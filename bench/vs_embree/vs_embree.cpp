@@ -42,6 +42,7 @@
 
 #include "accel/kdtree.h"
 #include "bench_scenes.h"
+#include "core/simd.h"
 #include "core/stopwatch.h"
 #include "embree_scene.h"
 #include "render/camera_rays.h"
@@ -420,7 +421,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
-              << kHeight << ", best of " << passes << " passes\n";
+              << kHeight << ", best of " << passes << " passes, rt packets on " << simdLevelName(packetSimd())
+              << " lanes (RT_SIMD=sse2 for SSE2)\n";
     printTables(reports);
     if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
     std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement

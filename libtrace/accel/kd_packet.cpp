@@ -21,19 +21,39 @@
 // Rays that do not share an octant, have a direction component that is zero or whose
 // reciprocal overflows (their plane distances can be NaN, and the single traversal then orders
 // the children by the origin), and a tree with a hit filter are traced one by one.
+//
+// Compiled twice (libtrace/CMakeLists.txt): as it is, on SSE2 lanes (core/simd.h, simd_base),
+// and with RT_PACKET_AVX2 defined, on AVX2 lanes: the same code in namespace simd_avx2, its
+// functions compiled for AVX2. SplitTree::intersectPacket (packet_dispatch.cpp) chooses one at
+// run time. The headers are included before the AVX2 region, so the inline functions they
+// define, which other files share, keep the baseline instructions.
 #include <bit>
 #include <cmath>
 
 #include "accel/split_tree.h"
 
+#if RT_PACKET_AVX2
+#if !RT_SIMD_AVX2
+#error "RT_PACKET_AVX2 needs core/simd.h's AVX2 lanes (x86-64, GCC or clang)"
+#endif
+#define RT_PACKET_LANES simd_avx2
+#define RT_PACKET_LEVEL SimdLevel::avx2
+RT_AVX2_BEGIN
+#else
+#define RT_PACKET_LANES simd_base
+#define RT_PACKET_LEVEL SimdLevel::sse2
+#endif
+
 namespace rt {
+
+namespace RT_PACKET_LANES {
 
 namespace {
 
-// The packet in groups of one register's lanes (core/simd.h): four groups of two doubles, or
-// two of four floats.
-constexpr int kGroups = kPacketSize / kSimdWidth;
-static_assert(kGroups * kSimdWidth == kPacketSize);
+// The packet in groups of one register's lanes (core/simd.h): SSE2 takes four groups of two
+// doubles or two of four floats, AVX2 two of four doubles or one of eight floats.
+constexpr int kGroups = kPacketSize / kLanes;
+static_assert(kGroups * kLanes == kPacketSize);
 
 // Masks are all-ones lanes (core/simd.h); bit i of a LaneBits is ray i.
 using LaneBits = unsigned;
@@ -44,23 +64,33 @@ struct Lanes {
 
 LaneBits bitsOf(const Lanes& mask) {
     LaneBits bits = 0;
-    for (int g = 0; g < kGroups; ++g) bits |= laneBits(mask.group[g]) << (g * kSimdWidth);
+    for (int g = 0; g < kGroups; ++g) bits |= laneBits(mask.group[g]) << (g * kLanes);
     return bits;
 }
 
 // A lane mask from one flag per ray.
 Lanes maskOf(const bool (&set)[kPacketSize]) {
-    alignas(16) Real lanes[kPacketSize];
+    alignas(64) Real lanes[kPacketSize];
     for (int i = 0; i < kPacketSize; ++i) lanes[i] = set[i] ? Real(1) : Real(0);
     Lanes mask;
-    for (int g = 0; g < kGroups; ++g) mask.group[g] = notEqual(loadLanes(lanes + g * kSimdWidth), broadcast(0));
+    for (int g = 0; g < kGroups; ++g) mask.group[g] = notEqual(loadLanes(lanes + g * kLanes), broadcast(0));
     return mask;
 }
 
 Lanes load(const Real (&values)[kPacketSize]) {
     Lanes l;
-    for (int g = 0; g < kGroups; ++g) l.group[g] = loadLanes(values + g * kSimdWidth);
+    for (int g = 0; g < kGroups; ++g) l.group[g] = loadLanes(values + g * kLanes);
     return l;
+}
+
+Lanes broadcastLanes(Real value) {
+    Lanes l;
+    for (int g = 0; g < kGroups; ++g) l.group[g] = broadcast(value);
+    return l;
+}
+
+void store(const Lanes& l, Real (&values)[kPacketSize]) {
+    for (int g = 0; g < kGroups; ++g) storeLanes(values + g * kLanes, l.group[g]);
 }
 
 // The rays' per-axis data, and the interval of each inside a node with the rays inside it.
@@ -108,7 +138,7 @@ inline void nearestTriangle(const TriangleBlock& block, int lane, const PacketRa
         nearest.t.group[g] = select(hit, t, nearest.t.group[g]);
         nearest.u.group[g] = select(hit, u, nearest.u.group[g]);
         nearest.v.group[g] = select(hit, v, nearest.v.group[g]);
-        taken |= bits << (g * kSimdWidth);
+        taken |= bits << (g * kLanes);
     }
     for (LaneBits bits = taken; bits != 0; bits &= bits - 1) nearest.prim[std::countr_zero(bits)] = block.id[lane];
 }
@@ -157,12 +187,10 @@ Lanes stillOpen(const Span& span, const Lanes& nearestT) {
 // The leaf's primitives that are not triangles, ray by ray (the packet has no hit filter).
 void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
                    PacketHits& nearest) {
-    alignas(16) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
-    for (int g = 0; g < kGroups; ++g) {
-        storeLanes(t + g * kSimdWidth, nearest.t.group[g]);
-        storeLanes(u + g * kSimdWidth, nearest.u.group[g]);
-        storeLanes(v + g * kSimdWidth, nearest.v.group[g]);
-    }
+    alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
+    store(nearest.t, t);
+    store(nearest.u, u);
+    store(nearest.v, v);
     for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
         const int r = std::countr_zero(bits);
         Hit hit{t[r], nearest.prim[r], u[r], v[r]};
@@ -172,19 +200,22 @@ void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const
         u[r] = hit.u;
         v[r] = hit.v;
     }
-    for (int g = 0; g < kGroups; ++g) {
-        nearest.t.group[g] = loadLanes(t + g * kSimdWidth);
-        nearest.u.group[g] = loadLanes(u + g * kSimdWidth);
-        nearest.v.group[g] = loadLanes(v + g * kSimdWidth);
-    }
+    nearest.t = load(t);
+    nearest.u = load(u);
+    nearest.v = load(v);
 }
 
 }  // namespace
 
-void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
-                                RayCounters& counters) const {
+}  // namespace RT_PACKET_LANES
+
+template <SimdLevel level>
+void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                            RayCounters& counters) const {
+    using namespace RT_PACKET_LANES;
+    static_assert(level == RT_PACKET_LEVEL, "each compilation of this file holds its own level's traversal");
     // Lanes past `count` repeat ray 0 and stay inactive.
-    alignas(16) Real values[11][kPacketSize];  // origin, direction, inverse (xyz each), tMin, tMax
+    alignas(64) Real values[11][kPacketSize];  // origin, direction, inverse (xyz each), tMin, tMax
     bool inside[kPacketSize] = {};
     bool coherent = !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty();
     for (int i = 0; i < kPacketSize && coherent; ++i) {
@@ -217,7 +248,7 @@ void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits
     }
     Span span{maskOf(inside), load(values[9]), load(values[10])};
     PacketHits nearest{};
-    for (int g = 0; g < kGroups; ++g) nearest.t.group[g] = broadcast(tMax);
+    nearest.t = broadcastLanes(tMax);
     LaneBits active = bitsOf(span.active);
     const bool belowIsNear[3] = {rays[0].direction.x > 0, rays[0].direction.y > 0, rays[0].direction.z > 0};
 
@@ -274,16 +305,21 @@ void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits
     }
     counters.traversalSteps += steps;
     counters.intersectionTests += tests;
-    alignas(16) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
-    for (int g = 0; g < kGroups; ++g) {
-        storeLanes(t + g * kSimdWidth, nearest.t.group[g]);
-        storeLanes(u + g * kSimdWidth, nearest.u.group[g]);
-        storeLanes(v + g * kSimdWidth, nearest.v.group[g]);
-    }
+    alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
+    store(nearest.t, t);
+    store(nearest.u, u);
+    store(nearest.v, v);
     for (int i = 0; i < count; ++i) {
         found[i] = t[i] < tMax;
         if (found[i]) hits[i] = {t[i], nearest.prim[i], u[i], v[i]};
     }
 }
 
+template void SplitTree::tracePacket<RT_PACKET_LEVEL>(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                                                      RayCounters& counters) const;
+
 }  // namespace rt
+
+#if RT_PACKET_AVX2
+RT_AVX2_END
+#endif

@@ -102,7 +102,7 @@ public:
 
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
-    // Wald's packet traversal (accel/kd_packet.cpp).
+    // Wald's packet traversal (accel/kd_packet.cpp) on the lanes packetSimd() chooses (core/simd.h).
     void intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                          RayCounters& counters) const override;
     AccelStats stats() const override { return stats_; }
@@ -117,6 +117,9 @@ private:
     void layOutLeaves(const FlatTree& tree);
     LeafPrimitives leafSizes(const FlatTree& tree, const SplitNode& node) const;
     void layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes, std::size_t at);
+    // The packet traversal on one level's lanes: kd_packet.cpp, compiled once per level.
+    template <SimdLevel level>
+    void tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found, RayCounters& counters) const;
     template <typename LeafVisitor>
     void traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
                   const LeafVisitor& visitLeaf) const;

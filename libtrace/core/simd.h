@@ -1,15 +1,22 @@
-// Lanes of Real for the leaf tests (geometry/triangle_block.h): the few operations they
-// need, on one SSE2 register (every x86-64 CPU has SSE2, so the default build runs anywhere
-// without choosing code at run time): two lanes with Real = double, four with float; and
-// four in plain C++ elsewhere. Each lane rounds exactly as the scalar code does (IEEE add,
-// sub, mul, div, no fused multiply-add), so a lane's answer has the scalar test's bits: the
-// trees and the naive list agree to the last bit.
+// Lanes of Real: the few operations the leaf tests (geometry/triangle_block.h) and the packet
+// traversal (accel/kd_packet.cpp) need, in two sets.
 //
-// Why not AVX2 or AVX-512: the default build must run on any x86-64, so wider lanes need
-// run-time dispatch (a second copy of the traversal compiled for the wider ISA); kept for
-// later, the leaf layout (blocks of kSimdWidth) is ready for it. Why one register and not
-// two for double: a leaf holds few triangles (2-3 in a KD tree), so wider blocks would
+// RealLanes (namespace simd_base, inline in rt): one SSE2 register (every x86-64 CPU has SSE2,
+// so the default build runs anywhere): two lanes with Real = double, four with float; four in
+// plain C++ elsewhere. The leaves' triangle blocks are kSimdWidth wide, this register's width,
+// whatever the packets use: a leaf holds few triangles (2-3 in a KD tree), so wider blocks would
 // mostly test and store empty lanes.
+//
+// simd_avx2::RealLanes: one AVX2 register, four doubles or eight floats, for the packet
+// traversal only. Its functions are compiled for AVX2 whatever the flags of the file
+// (RT_AVX2_BEGIN/END), so the default build still runs on any x86-64; code may call them only
+// where packetSimd() says the CPU has AVX2 (accel/kd_packet.cpp is compiled a second time into
+// that namespace, and SplitTree::intersectPacket chooses at run time). RT_SIMD=sse2 in the
+// environment, or setPacketSimd, keeps the packets on SSE2 on any CPU (the tests run both).
+//
+// Each lane of either set rounds exactly as the scalar code does (IEEE add, sub, mul, div; no
+// fused multiply-add: the AVX2 functions are compiled without FMA), so a lane's answer has the
+// scalar test's bits: the trees, their packets and the naive list agree to the last bit.
 #pragma once
 
 #include "core/real.h"
@@ -19,11 +26,35 @@
 #define RT_SIMD_SSE2 1
 #endif
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define RT_SIMD_AVX2 1
+// The functions defined between these two are compiled for AVX2 (and not FMA), whatever the
+// file's flags; headers included outside them keep the file's flags, so no inline function that
+// other files share is ever built for AVX2 (the avx2_isolation test checks the object's code).
+#if defined(__clang__)
+#define RT_AVX2_BEGIN _Pragma("clang attribute push(__attribute__((target(\"avx2\"))), apply_to = function)")
+#define RT_AVX2_END _Pragma("clang attribute pop")
+#else
+#define RT_AVX2_BEGIN _Pragma("GCC push_options") _Pragma("GCC target(\"avx2\")")
+#define RT_AVX2_END _Pragma("GCC pop_options")
+#endif
+#endif
+
 namespace rt {
 
 #if RT_SIMD_SSE2 && !defined(RT_REAL_FLOAT)
-
 inline constexpr int kSimdWidth = 2;
+#else
+inline constexpr int kSimdWidth = 4;
+#endif
+
+inline namespace simd_base {
+
+inline constexpr int kLanes = kSimdWidth;  // per register
+
+#if RT_SIMD_SSE2 && !defined(RT_REAL_FLOAT)
+
 // Two doubles; a mask is the same, all ones or all zeros per lane.
 struct RealLanes {
     __m128d v;
@@ -54,7 +85,6 @@ inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
 
 #elif RT_SIMD_SSE2
 
-inline constexpr int kSimdWidth = 4;
 struct RealLanes {
     __m128 v;
 };
@@ -81,7 +111,6 @@ inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
 #else
 
 // The portable path: a mask lane is 1 or 0.
-inline constexpr int kSimdWidth = 4;
 struct RealLanes {
     Real v[4];
 };
@@ -139,6 +168,65 @@ inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
     return {{mask.v[0] != 0 ? a.v[0] : b.v[0], mask.v[1] != 0 ? a.v[1] : b.v[1], mask.v[2] != 0 ? a.v[2] : b.v[2],
              mask.v[3] != 0 ? a.v[3] : b.v[3]}};
 }
+
+#endif
+
+}  // namespace simd_base
+
+// Which lanes the packet traversal uses. Chosen once, at the first call: AVX2 where the CPU has
+// it, unless the environment says RT_SIMD=sse2; setPacketSimd changes it (tests).
+enum class SimdLevel { sse2, avx2 };  // sse2: simd_base (plain C++ off x86-64)
+bool cpuHasAvx2();
+SimdLevel packetSimd();
+// False, changing nothing, where the CPU cannot run `level`.
+bool setPacketSimd(SimdLevel level);
+const char* simdLevelName(SimdLevel level);
+
+#if RT_SIMD_AVX2
+
+namespace simd_avx2 {
+
+RT_AVX2_BEGIN
+
+#if defined(RT_REAL_FLOAT)
+inline constexpr int kLanes = 8;
+struct RealLanes {
+    __m256 v;
+};
+#define RT_AVX2_OP(name) _mm256_##name##_ps
+#else
+inline constexpr int kLanes = 4;
+struct RealLanes {
+    __m256d v;
+};
+#define RT_AVX2_OP(name) _mm256_##name##_pd
+#endif
+
+inline RealLanes loadLanes(const Real* p) { return {RT_AVX2_OP(loadu)(p)}; }
+inline RealLanes broadcast(Real x) { return {RT_AVX2_OP(set1)(x)}; }
+inline void storeLanes(Real* p, RealLanes a) { RT_AVX2_OP(storeu)(p, a.v); }
+inline RealLanes operator+(RealLanes a, RealLanes b) { return {RT_AVX2_OP(add)(a.v, b.v)}; }
+inline RealLanes operator-(RealLanes a, RealLanes b) { return {RT_AVX2_OP(sub)(a.v, b.v)}; }
+inline RealLanes operator*(RealLanes a, RealLanes b) { return {RT_AVX2_OP(mul)(a.v, b.v)}; }
+inline RealLanes operator/(RealLanes a, RealLanes b) { return {RT_AVX2_OP(div)(a.v, b.v)}; }
+inline RealLanes operator&(RealLanes a, RealLanes b) { return {RT_AVX2_OP(and)(a.v, b.v)}; }
+inline RealLanes operator|(RealLanes a, RealLanes b) { return {RT_AVX2_OP(or)(a.v, b.v)}; }
+inline RealLanes andNot(RealLanes a, RealLanes b) { return {RT_AVX2_OP(andnot)(a.v, b.v)}; }  // ~a & b
+// The SSE2 comparisons' answers, NaN included: ordered where SSE2's are (false on NaN),
+// unordered where they are negated (true on NaN); quiet, as no flag is read.
+inline RealLanes lessThan(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_LT_OQ)}; }
+inline RealLanes lessEqual(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_LE_OQ)}; }
+inline RealLanes notLessThan(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_NLT_UQ)}; }
+inline RealLanes notGreaterThan(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_NGT_UQ)}; }
+inline RealLanes notEqual(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline unsigned laneBits(RealLanes mask) { return unsigned(RT_AVX2_OP(movemask)(mask.v)); }
+inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) { return {RT_AVX2_OP(blendv)(b.v, a.v, mask.v)}; }
+
+#undef RT_AVX2_OP
+
+RT_AVX2_END
+
+}  // namespace simd_avx2
 
 #endif
 

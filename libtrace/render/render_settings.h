@@ -52,6 +52,9 @@ struct RenderSettings {
     // --time-limit: seconds after which the render stops; 0 is none. The path tracer keeps its
     // last whole pass (render/renderer.h); a render with no whole pass yet keeps nothing.
     double timeLimitSeconds = 0;
+    // --packets: the Whitted tracer finds the first hits of one-sample pixels' camera rays eight
+    // at a time with Accelerator::intersectPacket (render/tracer.h); the same bits either way.
+    bool packets = true;
 
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }
 };

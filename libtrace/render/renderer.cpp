@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -101,16 +102,22 @@ public:
         return !halted();
     }
 
-    // Calls tracePixel(x, y) on each pixel of `block`, row by row; false if the render halted
-    // first (checked at every pixel: one pixel of a million lights can take a tenth of a second).
-    template <class TracePixel>
-    bool eachPixel(const PixelWindow& block, const TracePixel& tracePixel) {
+    // Calls traceRun(x0, y, count) on runs of up to `length` pixels of `block`, row by row, left
+    // to right; false if the render halted first (checked at every run: one pixel of a million
+    // lights can take a tenth of a second).
+    template <class TraceRun>
+    bool eachRun(const PixelWindow& block, int length, const TraceRun& traceRun) {
         for (int y = block.y0; y < block.y1; ++y)
-            for (int x = block.x0; x < block.x1; ++x) {
+            for (int x = block.x0; x < block.x1; x += length) {
                 if (halted()) return false;
-                tracePixel(x, y);
+                traceRun(x, y, std::min(length, block.x1 - x));
             }
         return true;
+    }
+    // Calls tracePixel(x, y) on each pixel of `block`, as eachRun.
+    template <class TracePixel>
+    bool eachPixel(const PixelWindow& block, const TracePixel& tracePixel) {
+        return eachRun(block, 1, [&](int x, int y, int) { tracePixel(x, y); });
     }
 
     // The render part of `stats`: the time, the summed counters, the objects, lights and threads.
@@ -138,7 +145,9 @@ private:
 };
 
 // The Whitted tracer in one pass: every pixel takes all its -S samples at once (their jittered
-// grid needs them all), so a render cut short by --time-limit has no whole picture. Adaptive
+// grid needs them all), so a render cut short by --time-limit has no whole picture. With one
+// sample a pixel, runs of kPacketSize pixels of a row trace their camera rays as one packet
+// (Tracer::pixelRun; the same bits). Adaptive
 // subsampling needs the tracer's object ids (validate() refuses it with the path tracer).
 Framebuffer renderWhitted(const Tracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
                           const RenderProgress& progress, const RenderWatch& watch) {
@@ -159,6 +168,16 @@ Framebuffer renderWhitted(const Tracer& tracer, const Scene& scene, const Render
                 adaptive->fill(b, image, counters);
                 return true;
             }
+            if (tracer.tracesPackets())
+                return loop.eachRun(b, kPacketSize, [&](int x0, int y, int count) {
+                    std::array<Color, kPacketSize> colors;
+                    std::array<float, kPacketSize> coverages;
+                    tracer.pixelRun(x0, y, count, counters, colors.data(), coverages.data());
+                    for (int i = 0; i < count; ++i) {
+                        image.at(x0 + i, y) = colors[std::size_t(i)];
+                        image.alphaAt(x0 + i, y) = coverages[std::size_t(i)];
+                    }
+                });
             return loop.eachPixel(b, [&](int x, int y) {
                 image.at(x, y) = tracer.pixel(x, y, counters, image.alphaAt(x, y), image.aovsAt(x, y));
             });

@@ -1,6 +1,7 @@
 #include "render/tracer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -57,23 +58,53 @@ Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, Pix
         const Ray ray = camera_.at(Real(x) + sx, Real(y) + sy);
         Hit hit;
         const bool seen = accel_.intersect(ray, kInfinity, hit, counters.camera);
-        Color sample = scene_.background;
-        if (seen) {  // the AOVs take the point, normal and colour the shading uses
-            const RayDifferential differential =
-                filtered_ ? camera_.differentialAt(Real(x) + sx, Real(y) + sy, ray, differentialScale_)
-                          : RayDifferential{};
-            const SurfacePoint surface = shadedSurfaceAt(scene_, ray, hit, images_, differential);
-            if (aovs)
-                aovSums.addHit(scene_, surface, hit,
-                               surfaceColor(scene_, scene_.materialOf(hit.prim), surface, images_));
-            sample = shade(ray, hit, surface, 0, false, rng, counters, differential.radiusAt(hit.t));
-        }
+        const Color sample = cameraSample(Real(x) + sx, Real(y) + sy, ray, seen ? &hit : nullptr, rng, counters,
+                                          aovs ? &aovSums : nullptr);
         if (!estimate.add(sample, seen)) counters.nonFinite.add(x, y);  // counts as black, and the tool says so
         if (aovs) aovSums.finishSample(*before, counters);
     }
     coverage = estimate.coverage();
     if (aovs) *aovs = aovSums.mean(estimate.varianceOfMean());
     return estimate.mean();
+}
+
+bool Tracer::tracesPackets() const {
+    return settings_.packets && settings_.pixelSamples == 1 && settings_.aovs.empty();
+}
+
+// Neighbouring camera rays share the tree's nodes and leaves, so the packet traversal walks
+// them once for all eight (docs/trees.md, "Packets"); what follows the first hit stays per pixel.
+void Tracer::pixelRun(int x0, int y, int count, RenderCounters& counters, Color* colors, float* coverages) const {
+    std::array<Ray, kPacketSize> rays;
+    std::array<Hit, kPacketSize> hits;
+    std::array<bool, kPacketSize> found{};
+    const Real centre = Real(0.5);  // pixel()'s one sample
+    for (int i = 0; i < count; ++i) rays[std::size_t(i)] = camera_.at(Real(x0 + i) + centre, Real(y) + centre);
+    counters.camera.rays += std::uint64_t(count);
+    accel_.intersectPacket(rays.data(), count, kInfinity, hits.data(), found.data(), counters.camera);
+    for (int i = 0; i < count; ++i) {
+        const auto k = std::size_t(i);
+        const int x = x0 + i;
+        SampleRng rng{std::uint32_t(x), std::uint32_t(y), 0, settings_.seed};
+        const Color sample = cameraSample(Real(x) + centre, Real(y) + centre, rays[k], found[k] ? &hits[k] : nullptr,
+                                          rng, counters, nullptr);
+        PixelEstimate estimate;
+        if (!estimate.add(sample, found[k])) counters.nonFinite.add(x, y);
+        colors[i] = estimate.mean();
+        coverages[i] = estimate.coverage();
+    }
+}
+
+Color Tracer::cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, SampleRng& rng, RenderCounters& counters,
+                           AovSums* aovSums) const {
+    if (!hit) return scene_.background;
+    // the AOVs take the point, normal and colour the shading uses
+    const RayDifferential differential =
+        filtered_ ? camera_.differentialAt(px, py, ray, differentialScale_) : RayDifferential{};
+    const SurfacePoint surface = shadedSurfaceAt(scene_, ray, *hit, images_, differential);
+    if (aovSums)
+        aovSums->addHit(scene_, surface, *hit, surfaceColor(scene_, scene_.materialOf(hit->prim), surface, images_));
+    return shade(ray, *hit, surface, 0, false, rng, counters, differential.radiusAt(hit->t));
 }
 
 Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,

@@ -38,6 +38,14 @@ public:
         return pixel(x, y, counters, coverage);
     }
 
+    // Whether pixelRun may trace this render's pixels: --packets on, one camera ray through each
+    // pixel's centre (-S 1), and no AOVs (their cost layers count each camera ray's own work).
+    bool tracesPackets() const;
+    // Pixels (x0, y) to (x0 + count - 1, y), count <= kPacketSize, of a render tracesPackets():
+    // the first hits of their camera rays found by one Accelerator::intersectPacket, each pixel
+    // then shaded from its hit exactly as pixel() shades it (the same bits and counters).
+    void pixelRun(int x0, int y, int count, RenderCounters& counters, Color* colors, float* coverages) const;
+
     // The colour seen along a ray that has already been reflected `depth` times; `differential`
     // sets the footprint of its texture lookups (render/ray_differential.h; none: unfiltered).
     Color trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
@@ -47,6 +55,10 @@ public:
     Real epsilon() const { return epsilon_; }
 
 private:
+    // The sample of the camera ray `ray` through image position (px, py), whose first hit is
+    // `hit` (none: it sees the background); `aovSums`, if given, receives the hit's AOVs.
+    Color cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, SampleRng& rng, RenderCounters& counters,
+                       AovSums* aovSums) const;
     // The colour at `s`, the surface of `hit` (surfaceAt); `cone`: the radius of the ray's
     // footprint there, which the reflected and transmitted rays widen from.
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,

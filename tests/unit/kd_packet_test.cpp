@@ -1,7 +1,8 @@
 // Packet traversal (accel/kd_packet.cpp): every ray of a packet gets, bit for bit, the hit the
 // single-ray traversal gives it (the same primitive, t, u and v), which agrees with the naive
 // list; on camera rays of the thesis scenes, random triangles and the hard cases, in both
-// precisions (the float build runs the same tests).
+// precisions (the float build runs the same tests), on the SSE2 lanes and on the AVX2 lanes
+// (core/simd.h; skipped where the CPU has no AVX2).
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -11,12 +12,18 @@
 #include "accel/kdtree.h"
 #include "accel/naive.h"
 #include "core/random.h"
+#include "core/simd.h"
+#include "packet_lanes.h"
 #include "render/camera_rays.h"
 #include "scene/generate.h"
 #include "scene/thesis_scenes.h"
 #include "test_util.h"
 
 using namespace rt;
+
+namespace rt {
+void PrintTo(SimdLevel level, std::ostream* out) { *out << simdLevelName(level); }  // gtest's name for a failing level
+}  // namespace rt
 
 namespace {
 
@@ -97,9 +104,14 @@ std::vector<std::unique_ptr<Accelerator>> trees(const Primitives& prims) {
     return all;
 }
 
+// Runs each test once per set of lanes the packet traversal can use.
+class KdPacket : public test::PacketLanes {};
+
 }  // namespace
 
-TEST(KdPacket, RandomTrianglesAgreeWithSingleRaysAndTheNaiveList) {
+INSTANTIATE_PACKET_LANES(KdPacket);
+
+TEST_P(KdPacket, RandomTrianglesAgreeWithSingleRaysAndTheNaiveList) {
     const Scene scene = generateScene({2000, 0, Placement::Uniform, 21});
     const NaiveAccelerator naive(scene.primitives);
     const std::vector<Ray> rays = coneRays(600, 5);
@@ -110,7 +122,7 @@ TEST(KdPacket, RandomTrianglesAgreeWithSingleRaysAndTheNaiveList) {
     }
 }
 
-TEST(KdPacket, SpheresCylindersAndConesAgreeWithSingleRays) {
+TEST_P(KdPacket, SpheresCylindersAndConesAgreeWithSingleRays) {
     const Scene scene = generateScene({200, 200, Placement::Clustered, 22, 100, 100});
     const NaiveAccelerator naive(scene.primitives);
     for (const auto& tree : trees(scene.primitives))
@@ -119,7 +131,7 @@ TEST(KdPacket, SpheresCylindersAndConesAgreeWithSingleRays) {
 
 // Rays in the split planes, parallel to the axes and on the planes: packets with a zero direction
 // component go one by one, and the others must still break ties as single rays do.
-TEST(KdPacket, AxisAlignedRaysInSplitPlanesAgreeWithSingleRays) {
+TEST_P(KdPacket, AxisAlignedRaysInSplitPlanesAgreeWithSingleRays) {
     const Scene scene = generateScene({300, 50, Placement::Clustered, 23});
     std::vector<Ray> rays;
     for (int p = 0; p < 400; ++p) {
@@ -133,7 +145,7 @@ TEST(KdPacket, AxisAlignedRaysInSplitPlanesAgreeWithSingleRays) {
         EXPECT_EQ(packetDisagreements(*tree, rays, kPacketSize, kInfinity), "");
 }
 
-TEST(KdPacket, CameraRaysOfSmallThesisScenesAgreeWithSingleRaysAndTheNaiveList) {
+TEST_P(KdPacket, CameraRaysOfSmallThesisScenesAgreeWithSingleRaysAndTheNaiveList) {
     for (const char* name : {"ships", "pyramid5"}) {
         const Scene scene = thesisScene(name);
         const NaiveAccelerator naive(scene.primitives);
@@ -145,7 +157,7 @@ TEST(KdPacket, CameraRaysOfSmallThesisScenesAgreeWithSingleRaysAndTheNaiveList) 
 
 // Every camera ray of the larger thesis scenes at 320x240, against single rays only (the naive
 // list would take minutes).
-TEST(KdPacket, CameraRaysOfThesisScenesAgreeWithSingleRays) {
+TEST_P(KdPacket, CameraRaysOfThesisScenesAgreeWithSingleRays) {
     for (const char* name : {"balls", "ships", "tree", "pyramid5"}) {
         const Scene scene = thesisScene(name);
         const auto tree = buildKdTree(scene.primitives, KdSettings{});
@@ -155,7 +167,7 @@ TEST(KdPacket, CameraRaysOfThesisScenesAgreeWithSingleRays) {
 
 // Equally near hits (every triangle twice, and quads whose halves share an edge): the tie rule
 // must be the single traversal's, the first found winning.
-TEST(KdPacket, EquallyNearHitsGoToTheSamePrimitiveAsSingleRays) {
+TEST_P(KdPacket, EquallyNearHitsGoToTheSamePrimitiveAsSingleRays) {
     Scene scene = generateScene({400, 0, Placement::Uniform, 24});
     Primitives& prims = scene.primitives;
     const std::uint32_t n = prims.count<Triangle>();
@@ -176,7 +188,7 @@ TEST(KdPacket, EquallyNearHitsGoToTheSamePrimitiveAsSingleRays) {
 }
 
 // The packet counts the work of each of its rays: the same nodes and tests as single rays.
-TEST(KdPacket, CountsTheSameWorkAsSingleRays) {
+TEST_P(KdPacket, CountsTheSameWorkAsSingleRays) {
     const Scene scene = thesisScene("ships");
     const auto tree = buildKdTree(scene.primitives, KdSettings{});
     const std::vector<Ray> rays = cameraTiles(scene.camera, 80, 60);

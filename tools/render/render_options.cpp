@@ -78,6 +78,10 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
                    "Random seed of the samples: another seed, independent noise (default 0, always the same)")
         ->capture_default_str()
         ->group(group);
+    addNamedOption(app, "--packets", o.render.packets, rt::kOnOffNames,
+                   "Camera rays of one-sample Whitted renders traced eight at a time (on) or one by one (off): "
+                   "the same picture")
+        ->group(group);
     app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
     app.add_option("--set", o.parameters,
                    "NAME=VALUE: fills $NAME, ${NAME} and ${NAME:-default} in the XML scene's attributes; repeatable")

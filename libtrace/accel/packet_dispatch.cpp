@@ -1,0 +1,16 @@
+// SplitTree::intersectPacket: the packet traversal (kd_packet.cpp) on the lanes core/simd.h's
+// packetSimd() chooses, AVX2 where the CPU has it, else SSE2. Apart from kd_packet.cpp, which is
+// compiled once per set of lanes and holds only that set's traversal.
+#include "accel/split_tree.h"
+
+namespace rt {
+
+void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                                RayCounters& counters) const {
+#if RT_SIMD_AVX2
+    if (packetSimd() == SimdLevel::avx2) return tracePacket<SimdLevel::avx2>(rays, count, tMax, hits, found, counters);
+#endif
+    tracePacket<SimdLevel::sse2>(rays, count, tMax, hits, found, counters);
+}
+
+}  // namespace rt

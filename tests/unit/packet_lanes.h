@@ -1,0 +1,28 @@
+// A fixture running each test once per set of lanes the packet traversal can use (core/simd.h):
+// SSE2, and AVX2 where the CPU has it (skipped, with a message, where not).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include "core/simd.h"
+
+namespace rt::test {
+
+class PacketLanes : public ::testing::TestWithParam<SimdLevel> {
+protected:
+    void SetUp() override {
+        if (!setPacketSimd(GetParam())) GTEST_SKIP() << "this CPU has no " << simdLevelName(GetParam());
+    }
+    void TearDown() override { setPacketSimd(before_); }
+
+private:
+    SimdLevel before_ = packetSimd();
+};
+
+// INSTANTIATE_PACKET_LANES(Suite): Suite's tests on both sets of lanes, named sse2 and avx2.
+#define INSTANTIATE_PACKET_LANES(Suite)                                                \
+    INSTANTIATE_TEST_SUITE_P(                                                          \
+        Lanes, Suite, ::testing::Values(::rt::SimdLevel::sse2, ::rt::SimdLevel::avx2), \
+        [](const ::testing::TestParamInfo<::rt::SimdLevel>& level) { return ::rt::simdLevelName(level.param); })
+
+}  // namespace rt::test
