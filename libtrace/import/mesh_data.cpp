@@ -1,8 +1,10 @@
 #include "import/mesh_data.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "scene/sandbox.h"
 
@@ -68,10 +70,52 @@ void finishCornerData(Model& model) {
     }
 }
 
+namespace {
+
+// The entry of `folder` whose name is `name` but for ASCII case, if there is exactly one.
+std::optional<std::filesystem::path> entryIgnoringCase(const std::filesystem::path& folder, const std::string& name) {
+    const auto lower = [](std::string s) {
+        for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    const std::string wanted = lower(name);
+    std::optional<std::filesystem::path> found;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        if (lower(it->path().filename().string()) != wanted) continue;
+        if (found) return std::nullopt;  // two spellings: neither is chosen
+        found = it->path();
+    }
+    return found;
+}
+
+}  // namespace
+
+std::filesystem::path locateBeside(const std::filesystem::path& folder, const std::string& written) {
+    const std::filesystem::path asWritten = folder / written;
+    std::error_code ec;
+    if (std::filesystem::exists(asWritten, ec)) return asWritten;
+    std::string slashed = written;
+    std::replace(slashed.begin(), slashed.end(), '\\', '/');
+    std::filesystem::path path = folder;
+    for (const std::filesystem::path& part : std::filesystem::path(slashed).relative_path()) {
+        if (part == ".") continue;
+        std::filesystem::path next = path / part;
+        if (!std::filesystem::exists(next, ec) && part != "..") {
+            const std::optional<std::filesystem::path> other = entryIgnoringCase(path, part.string());
+            if (!other) return asWritten;
+            next = *other;
+        }
+        path = std::move(next);
+    }
+    return std::filesystem::exists(path, ec) ? path : asWritten;
+}
+
 Texture textureBeside(const std::string& modelPath, const std::string& file) {
     Texture t;
-    t.name = std::filesystem::path(file).stem().string();
-    t.path = (std::filesystem::path(modelPath).parent_path() / file).string();
+    const std::filesystem::path path = locateBeside(std::filesystem::path(modelPath).parent_path(), file);
+    t.name = path.stem().string();
+    t.path = path.string();
     t.file = t.path;
     requireInsideSandbox(t.path, "texture " + file, modelPath);
     return t;

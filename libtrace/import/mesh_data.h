@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,15 @@ bool appendTriangleWithData(Model& model, const Corner& a, const Corner& b, cons
 // its normals unit length.
 void finishCornerData(Model& model);
 
-// An image texture that a model file names relative to its own folder (repeating, no transform).
+// The file `written` names relative to `folder`, found as tools on Windows and macOS would:
+// as written if it exists, else with backslashes read as separators (OBJ files from Windows
+// write `.\tex.jpg`) and each part matched regardless of ASCII case (3DS files name
+// `CWALL02.JPG` for cwall02.jpg) when exactly one entry matches. As written if nothing does,
+// so that the warning names what the file says.
+std::filesystem::path locateBeside(const std::filesystem::path& folder, const std::string& written);
+
+// An image texture that a model file names relative to its own folder (repeating, no transform),
+// found by locateBeside.
 Texture textureBeside(const std::string& modelPath, const std::string& file);
 
 // Adds a texture to the scene; returns its index.

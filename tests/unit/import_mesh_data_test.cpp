@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "import/mesh_data.h"
+#include "scene_test_files.h"
 
 namespace rt {
 namespace {
@@ -47,6 +48,25 @@ TEST(ImportMeshData, BoundsOfAModel) {
     EXPECT_EQ(b.lo, Vec3(-1, 0, 0));
     EXPECT_EQ(b.hi, Vec3(1, 3, 2));
     EXPECT_TRUE(modelBounds(Model()).empty());
+}
+
+// Windows paths and other cases than the disk's find the file, as Windows and macOS tools do;
+// a path that finds nothing, or two files that differ only in case, stay as written.
+TEST(ImportMeshData, TexturesAreFoundThroughBackslashesAndOtherCase) {
+    const TempDir dir;
+    const std::filesystem::path folder = dir.path("model");
+    dir.write("model/maps/wood.jpg", "x");
+    dir.write("model/Same.png", "a");
+    dir.write("model/same.PNG", "b");
+    EXPECT_EQ(locateBeside(folder, "maps/wood.jpg"), folder / "maps/wood.jpg");
+    EXPECT_EQ(locateBeside(folder, ".\\maps\\wood.jpg"), folder / "maps/wood.jpg");
+    EXPECT_EQ(locateBeside(folder, "MAPS/WOOD.JPG"), folder / "maps/wood.jpg");
+    EXPECT_EQ(locateBeside(folder, "Maps\\Wood.Jpg"), folder / "maps/wood.jpg");
+    EXPECT_EQ(locateBeside(folder, "maps/oak.jpg"), folder / "maps/oak.jpg");
+    EXPECT_EQ(locateBeside(folder, "same.png"), folder / "same.png");
+    const Texture t = textureBeside((folder / "model.obj").string(), ".\\maps\\WOOD.jpg");
+    EXPECT_EQ(t.path, (folder / "maps/wood.jpg").string());
+    EXPECT_EQ(t.name, "wood");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "core/error.h"
@@ -55,6 +56,19 @@ TEST(ImportObj, DegenerateTrianglesOfSpider) {
     const ImportResult r = importScene(sharedModels() + "/obj/spider/spider.obj");
     EXPECT_EQ(test::modelTriangles(r.scene), 1312u);
     EXPECT_EQ(r.report.droppedDegenerate, 56u);
+}
+
+// spider.mtl writes `map_Kd .\\SpiderTex.jpg` (Windows) and test1.3ds names CWALL02.JPG for
+// CWALL02.jpg: each texture is found on disk, not left for the render to replace with white.
+TEST(ImportObj, WindowsPathsAndOtherCaseFindTheTextures) {
+    SKIP_WITHOUT_SHARED_MODELS();
+    for (const char* model : {"/obj/spider/spider.obj", "/3ds/test1/test1.3ds",
+                              "/3ds/cube_with_diffuse_texture/cube_with_diffuse_texture.3DS"}) {
+        const ImportResult r = importScene(sharedModels() + model);
+        EXPECT_FALSE(r.scene.textures.empty()) << model;
+        for (const Texture& t : r.scene.textures)
+            EXPECT_TRUE(std::filesystem::is_regular_file(t.path)) << model << ": " << t.path;
+    }
 }
 
 // CornellBox-Original.mtl: the right wall is Kd 0.14 0.45 0.091 (green) with Ns 10 and no Ks.
