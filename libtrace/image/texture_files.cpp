@@ -171,7 +171,7 @@ struct TextureFiles::Impl {
 
     // What a render thread keeps for this TextureFiles: OpenImageIO's per-thread info, found once
     // rather than by a thread-specific lookup in every texture() call, and the last alpha() asked
-    // for. Keyed by `serial`, not the system's address: the pool reuses systems, and a thread's info
+    // for. Keyed by `instanceSerial`, not the system's address: the pool reuses systems, and a thread's info
     // is found anew (its stale tiles dropped) for every TextureFiles.
     struct PerThread {
         std::uint64_t owner = 0;
@@ -180,11 +180,11 @@ struct TextureFiles::Impl {
         int channel = -1;
         float s = 0, t = 0, alpha = 1;
     };
-    std::uint64_t serial = 0;  // unique in the process
+    std::uint64_t instanceSerial = 0;  // unique in the process
 
     PerThread& perThread() const {
         thread_local PerThread mine;
-        if (mine.owner != serial) mine = {.owner = serial, .info = system->get_perthread_info()};
+        if (mine.owner != instanceSerial) mine = {.owner = instanceSerial, .info = system->get_perthread_info()};
         return mine;
     }
 
@@ -304,7 +304,7 @@ bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureCacheSettings& cache)
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
     static std::atomic<std::uint64_t> serials{0};
-    impl_->serial = ++serials;
+    impl_->instanceSerial = ++serials;
     impl_->system = TextureSystemPool::take();
     impl_->system->attribute("max_memory_MB", cache.megabytes);
     impl_->txCache = cache.txCache;
