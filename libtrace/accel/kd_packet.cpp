@@ -38,15 +38,15 @@
 #endif
 #define RT_PACKET_LANES simd_avx2
 #define RT_PACKET_LEVEL SimdLevel::avx2
+#define RT_PACKET_NAMESPACE simd_avx2
 RT_AVX2_BEGIN
 #else
 #define RT_PACKET_LANES simd_base
 #define RT_PACKET_LEVEL SimdLevel::sse2
+#define RT_PACKET_NAMESPACE inline simd_base  // reopened as what core/simd.h declares it
 #endif
 
-namespace rt {
-
-namespace RT_PACKET_LANES {
+namespace rt::RT_PACKET_NAMESPACE {
 
 namespace {
 
@@ -207,7 +207,9 @@ void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const
 
 }  // namespace
 
-}  // namespace RT_PACKET_LANES
+}  // namespace rt::RT_PACKET_NAMESPACE
+
+namespace rt {
 
 template <SimdLevel level>
 void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
