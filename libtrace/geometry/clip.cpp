@@ -15,9 +15,15 @@ struct Polygon {
     int n = 0;
 };
 
+// Where the edge from a to b crosses the plane x[axis] = pos, with the plane's coordinate
+// exactly, so that rounding cannot move it outside the box.
+Vec3 crossing(const Vec3& a, const Vec3& b, int axis, Real pos) {
+    Vec3 p = a + (b - a) * ((pos - a[axis]) / (b[axis] - a[axis]));
+    p[axis] = pos;
+    return p;
+}
+
 // Keeps the part of `in` on the side of the plane x[axis] = pos given by `keepAbove`.
-// New vertices get the plane's coordinate exactly, so that rounding cannot move them
-// outside the box.
 Polygon clipToPlane(const Polygon& in, int axis, Real pos, bool keepAbove) {
     Polygon out;
     auto inside = [&](const Vec3& p) { return keepAbove ? p[axis] >= pos : p[axis] <= pos; };
@@ -26,11 +32,7 @@ Polygon clipToPlane(const Polygon& in, int axis, Real pos, bool keepAbove) {
         const Vec3& b = in.v[i + 1 < in.n ? i + 1 : 0];
         const bool aIn = inside(a), bIn = inside(b);
         if (aIn) out.v[out.n++] = a;
-        if (aIn != bIn) {
-            Vec3 p = a + (b - a) * ((pos - a[axis]) / (b[axis] - a[axis]));
-            p[axis] = pos;
-            out.v[out.n++] = p;
-        }
+        if (aIn != bIn) out.v[out.n++] = crossing(a, b, axis, pos);
     }
     return out;
 }
@@ -81,16 +83,14 @@ SplitBounds splitClippedBounds(const Triangle& tri, const Aabb& box, int axis, R
         if (a[axis] <= pos) split.below.extend(a);
         if (a[axis] >= pos) split.above.extend(a);
         if ((a[axis] < pos && b[axis] > pos) || (a[axis] > pos && b[axis] < pos)) {
-            Vec3 p = a + (b - a) * ((pos - a[axis]) / (b[axis] - a[axis]));
-            p[axis] = pos;
+            const Vec3 p = crossing(a, b, axis, pos);
             split.below.extend(p);
             split.above.extend(p);
         }
     }
-    Aabb belowBox = box, aboveBox = box;
-    belowBox.hi[axis] = aboveBox.lo[axis] = pos;
-    split.below = keptBounds(split.below, tri, triBounds, belowBox);
-    split.above = keptBounds(split.above, tri, triBounds, aboveBox);
+    const SplitBounds halves = splitBox(box, axis, pos);
+    split.below = keptBounds(split.below, tri, triBounds, halves.below);
+    split.above = keptBounds(split.above, tri, triBounds, halves.above);
     return split;
 }
 

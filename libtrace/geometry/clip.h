@@ -20,12 +20,17 @@ Aabb clippedBounds(const Triangle& tri, const Aabb& box);
 struct SplitBounds {
     Aabb below, above;
 };
+// The two halves themselves.
+inline SplitBounds splitBox(const Aabb& box, int axis, Real pos) {
+    SplitBounds halves{box, box};
+    halves.below.hi[axis] = halves.above.lo[axis] = pos;
+    return halves;
+}
 SplitBounds splitClippedBounds(const Triangle& tri, const Aabb& box, int axis, Real pos);
 template <class Primitive>
 SplitBounds splitClippedBounds(const Primitive& p, const Aabb& box, int axis, Real pos) {
-    Aabb below = box, above = box;
-    below.hi[axis] = above.lo[axis] = pos;
-    return {clippedBounds(p, below), clippedBounds(p, above)};
+    const SplitBounds halves = splitBox(box, axis, pos);
+    return {clippedBounds(p, halves.below), clippedBounds(p, halves.above)};
 }
 
 // Exact bounds of the solid ball inside the box. On each axis the ball reaches as far
