@@ -17,7 +17,7 @@ for object in "$@"; do
         NF >= 2 && $2 ~ /^v/ { avx[fn]++ }
         END {
             for (fn in avx)
-                if (fn !~ /rt::simd_avx2::/ && fn !~ /tracePacket<\(rt::SimdLevel\)1>/)
+                if (fn !~ /rt::simd_avx2::/ && fn !~ /trace(Shadow)?Packet<\(rt::SimdLevel\)1>/)
                     printf "check-avx2-isolation ERROR: %s: %s: %d AVX instructions\n", object, fn, avx[fn]
         }')
     if [[ -n "$report" ]]; then

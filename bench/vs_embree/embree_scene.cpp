@@ -161,6 +161,25 @@ bool EmbreeScene::occluded(const Ray& ray, Real tMax) const {
     return r.tfar < 0;
 }
 
+void EmbreeScene::occluded8(const Ray* rays, const Real* tMax, int count, bool* blocked) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    alignas(32) int valid[kPacketSize];
+    alignas(32) RTCRay8 r;
+    for (int i = 0; i < kPacketSize; ++i) {
+        valid[i] = i < count ? -1 : 0;
+        const int k = i < count ? i : 0;  // lanes past `count` repeat ray 0 and stay off
+        r.org_x[i] = float(rays[k].origin.x), r.org_y[i] = float(rays[k].origin.y);
+        r.org_z[i] = float(rays[k].origin.z);
+        r.dir_x[i] = float(rays[k].direction.x), r.dir_y[i] = float(rays[k].direction.y);
+        r.dir_z[i] = float(rays[k].direction.z);
+        r.tnear[i] = 0, r.tfar[i] = float(tMax[k]);
+        r.time[i] = 0, r.mask[i] = ~0u, r.id[i] = 0, r.flags[i] = 0;
+    }
+    rtcOccluded8(valid, scene_, &context, &r);
+    for (int i = 0; i < count; ++i) blocked[i] = r.tfar[i] < 0;
+}
+
 void EmbreeScene::intersect8(const Ray* rays, Hit* hits, bool* found) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);

@@ -16,7 +16,8 @@
 
 namespace rt::bench {
 
-// Packets for rtcIntersect8 are rt's packets (accel/accelerator.h): eight rays, traced together.
+// Packets for rtcIntersect8 and rtcOccluded8 are rt's packets (accel/accelerator.h): up to eight rays, traced
+// together.
 static_assert(kPacketSize == 8);
 
 class EmbreeScene {
@@ -39,6 +40,8 @@ public:
     bool occluded(const Ray& ray, Real tMax) const;
     // Nearest hits of eight rays at once (rtcIntersect8); found[i] says whether hits[i] is set.
     void intersect8(const Ray* rays, Hit* hits, bool* found) const;
+    // Whether each of `count` (at most eight) rays is blocked before its tMax[i], all at once (rtcOccluded8).
+    void occluded8(const Ray* rays, const Real* tMax, int count, bool* blocked) const;
 
 private:
     const Primitives& prims_;

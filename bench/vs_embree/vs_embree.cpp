@@ -13,7 +13,10 @@
 //
 // Both sides trace single rays on this one thread (rt: Accelerator::intersect/occluded;
 // Embree: rtcIntersect1/rtcOccluded1), and both also trace the camera rays as packets of 8
-// neighbouring pixels (4x2; rt: Accelerator::intersectPacket, Embree: rtcIntersect8). Rays per second are per thread
+// neighbouring pixels (4x2; rt: Accelerator::intersectPacket, Embree: rtcIntersect8) and the
+// shadow rays as rt-render groups them: for each run of 8 pixels of a row and each light, the
+// rays of the run's visible points that face it (rt: Accelerator::occludedPacket, Embree:
+// rtcOccluded8, both with each ray's own tMax). Rays per second are per thread
 // CPU second, the best of several passes taken in turn, so that other processes on a busy machine disturb the ratio
 // little. Builds run on 2 threads (rt: OpenMP; Embree: RTC_BUILD_QUALITY_HIGH with threads=2) and are timed on the wall
 // clock and in process CPU time. --builds measures the builds only.
@@ -76,6 +79,7 @@ struct RaySet {
     bool anyHit = false;  // shadow rays ask only whether something is closer than tMax
     std::vector<Ray> rays;
     std::vector<Real> tMax;
+    std::vector<int> packets;  // the sizes of the packets the rays come in, in order; none: single rays only
 
     void add(const Ray& ray, Real t) {
         rays.push_back(ray);
@@ -87,35 +91,76 @@ struct RaySet {
 RaySet cameraRays(const Scene& scene) {
     static_assert(kPacketSize == 8 && kWidth % 4 == 0 && kHeight % 2 == 0);
     const CameraRays camera(scene.camera, kWidth, kHeight);
-    RaySet set{"camera", false, {}, {}};
+    RaySet set{"camera", false, {}, {}, {}};
     for (int y0 = 0; y0 < kHeight; y0 += 2)
-        for (int x0 = 0; x0 < kWidth; x0 += 4)
+        for (int x0 = 0; x0 < kWidth; x0 += 4) {
             for (int i = 0; i < kPacketSize; ++i)
                 set.add(camera.at(Real(x0 + i % 4) + Real(0.5), Real(y0 + i / 4) + Real(0.5)), kInfinity);
+            set.packets.push_back(kPacketSize);
+        }
     return set;
 }
 
-// The shadow and reflection rays leaving the camera rays' nearest hits, made as
-// Tracer::shade, visibility and reflection make them for point lights and mirrors.
-void addSecondaryRays(const Scene& scene, const Accelerator& kd, const RaySet& camera, RaySet& shadow,
-                      RaySet& reflection) {
-    const Real epsilon = Tracer(scene, kd, RenderSettings{}).epsilon();
+// Where secondary rays leave the nearest hit of a camera ray: the point, its normal turned to
+// face the ray, and the point moved off the surface along it by Tracer::epsilon.
+struct Leaving {
+    Vec3 point, normal, origin;
+};
+
+Leaving leaving(const Scene& scene, const Ray& ray, const Hit& hit, Real epsilon) {
+    const Vec3 p = ray.at(hit.t);
+    Vec3 n = scene.primitives.normal(hit.prim, p);
+    if (dot(n, ray.direction) > 0) n = -n;
+    return {p, n, p + n * epsilon};
+}
+
+Real epsilonOf(const Scene& scene, const Accelerator& kd) { return Tracer(scene, kd, RenderSettings{}).epsilon(); }
+
+// The shadow rays from the camera rays' nearest hits to each light they face, made as
+// Tracer::shade and visibility make them for point lights, and grouped as Tracer::pixelRun
+// groups them: for each run of kPacketSize pixels of a row and each light, one packet.
+RaySet shadowRays(const Scene& scene, const Accelerator& kd) {
+    static_assert(kWidth % kPacketSize == 0);
+    const CameraRays camera(scene.camera, kWidth, kHeight);
+    const Real epsilon = epsilonOf(scene, kd);
+    RaySet set{"shadow", true, {}, {}, {}};
+    RayCounters counters;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x0 = 0; x0 < kWidth; x0 += kPacketSize) {
+            Leaving run[kPacketSize];
+            int seen = 0;
+            for (int i = 0; i < kPacketSize; ++i) {
+                const Ray ray = camera.at(Real(x0 + i) + Real(0.5), Real(y) + Real(0.5));
+                Hit hit;
+                if (kd.intersect(ray, kInfinity, hit, counters)) run[seen++] = leaving(scene, ray, hit, epsilon);
+            }
+            for (const Light& light : scene.lights) {
+                int size = 0;
+                for (int k = 0; k < seen; ++k) {
+                    if (dot(run[k].normal, light.position - run[k].point) <= 0) continue;  // behind the surface
+                    const Vec3 d = light.position - run[k].origin;
+                    const Real distance = length(d);
+                    set.add({run[k].origin, d / distance}, distance);
+                    ++size;
+                }
+                if (size != 0) set.packets.push_back(size);
+            }
+        }
+    return set;
+}
+
+// A mirror reflection ray from each camera ray's nearest hit, made as Tracer::reflection makes them.
+RaySet reflectionRays(const Scene& scene, const Accelerator& kd, const RaySet& camera) {
+    const Real epsilon = epsilonOf(scene, kd);
+    RaySet set{"reflection", false, {}, {}, {}};
     RayCounters counters;
     for (const Ray& ray : camera.rays) {
         Hit hit;
         if (!kd.intersect(ray, kInfinity, hit, counters)) continue;
-        const Vec3 p = ray.at(hit.t);
-        Vec3 n = scene.primitives.normal(hit.prim, p);
-        if (dot(n, ray.direction) > 0) n = -n;
-        const Vec3 origin = p + n * epsilon;
-        for (const Light& light : scene.lights) {
-            if (dot(n, light.position - p) <= 0) continue;  // the light is behind the surface
-            const Vec3 d = light.position - origin;
-            const Real distance = length(d);
-            shadow.add({origin, d / distance}, distance);
-        }
-        reflection.add({origin, mirror(ray.direction, n)}, kInfinity);
+        const Leaving from = leaving(scene, ray, hit, epsilon);
+        set.add({from.origin, mirror(ray.direction, from.normal)}, kInfinity);
     }
+    return set;
 }
 
 // ---- Tracing
@@ -142,14 +187,19 @@ TraceAll traceRt(const Accelerator& kd) {
     };
 }
 
-// Camera rays only, in the packets rt-render traces them in.
+// In the packets rt-render traces them in: the camera rays' nearest hits, the shadow rays' any hits.
 TraceAll traceRtPackets(const Accelerator& kd) {
     return [&kd](const RaySet& set, Answers& out) {
         RayCounters counters;
         bool found[kPacketSize];
-        for (std::size_t i = 0; i < set.rays.size(); i += kPacketSize) {
-            kd.intersectPacket(&set.rays[i], kPacketSize, kInfinity, &out.hits[i], found, counters);
-            std::copy(found, found + kPacketSize, &out.found[i]);
+        std::size_t i = 0;
+        for (const int size : set.packets) {
+            if (set.anyHit)
+                kd.occludedPacket(&set.rays[i], size, &set.tMax[i], found, counters);
+            else
+                kd.intersectPacket(&set.rays[i], size, kInfinity, &out.hits[i], found, counters);
+            std::copy(found, found + size, &out.found[i]);
+            i += std::size_t(size);
         }
     };
 }
@@ -168,13 +218,18 @@ TraceAll traceEmbree(const EmbreeScene& embree) {
     };
 }
 
-// Camera rays only: they are unbounded and come in whole packets.
+// The packets traceRtPackets traces (camera rays are unbounded and come in whole packets).
 TraceAll traceEmbree8(const EmbreeScene& embree) {
     return [&embree](const RaySet& set, Answers& out) {
         bool found[kPacketSize];
-        for (std::size_t i = 0; i < set.rays.size(); i += kPacketSize) {
-            embree.intersect8(&set.rays[i], &out.hits[i], found);
-            std::copy(found, found + kPacketSize, &out.found[i]);
+        std::size_t i = 0;
+        for (const int size : set.packets) {
+            if (set.anyHit)
+                embree.occluded8(&set.rays[i], &set.tMax[i], size, found);
+            else
+                embree.intersect8(&set.rays[i], &out.hits[i], found);
+            std::copy(found, found + size, &out.found[i]);
+            i += std::size_t(size);
         }
     };
 }
@@ -273,7 +328,7 @@ std::size_t countPacketDifferences(const std::string& scene, const RaySet& set, 
     for (std::size_t i = 0; i < set.rays.size(); ++i) {
         const Hit &a = single.hits[i], &b = packets.hits[i];
         if (single.found[i] == packets.found[i] &&
-            (!single.found[i] || (a.prim == b.prim && std::memcmp(&a.t, &b.t, sizeof a.t) == 0)))
+            (set.anyHit || !single.found[i] || (a.prim == b.prim && std::memcmp(&a.t, &b.t, sizeof a.t) == 0)))
             continue;
         if (++count <= kListedDisagreements)
             std::fprintf(stderr, "  differ %s %s rt packets ray %zu: single prim %u t %.17g, packet prim %u t %.17g\n",
@@ -282,12 +337,12 @@ std::size_t countPacketDifferences(const std::string& scene, const RaySet& set, 
     return count;
 }
 
-// One row of the ray table for a set: rt single rays, Embree single rays, and for camera rays
-// rt packets and Embree packets.
+// One row of the ray table for a set: rt single rays, Embree single rays, and for camera and
+// shadow rays rt packets and Embree packets.
 std::string measureSet(const std::string& scene, std::size_t prims, const RaySet& set, const Accelerator& kd,
                        const EmbreeScene& embree, int passes, bool& agreed) {
     std::vector<TraceAll> tracers = {traceRt(kd), traceEmbree(embree)};
-    const bool packets = set.name == "camera";
+    const bool packets = !set.packets.empty();
     if (packets) tracers.insert(tracers.end(), {traceRtPackets(kd), traceEmbree8(embree)});
     std::vector<Answers> answers;
     const std::vector<double> seconds = bestSeconds(tracers, set, passes, answers);
@@ -300,7 +355,8 @@ std::string measureSet(const std::string& scene, std::size_t prims, const RaySet
     if (packets) {
         row += rate(n / seconds[2]) + " | " + fixed(seconds[1] / seconds[2], 2) + " | " + rate(n / seconds[3]) + " | " +
                fixed(seconds[3] / seconds[2], 2) + " | ";
-        differ = std::max(differ, countDisagreements(scene, "rtcIntersect8", set, answers[0], answers[3]));
+        differ = std::max(differ, countDisagreements(scene, set.anyHit ? "rtcOccluded8" : "rtcIntersect8", set,
+                                                     answers[0], answers[3]));
         // Packets must give the single rays' bits: any difference fails the run.
         if (countPacketDifferences(scene, set, answers[0], answers[2]) != 0) agreed = false;
     } else {
@@ -368,8 +424,8 @@ SceneReport measureScene(const std::string& name, int passes, bool buildsOnly) {
     report.buildRow = buildRow(name, prims, *kd, kdTime, embree, embreeTime);
     if (buildsOnly) return report;
 
-    RaySet camera = cameraRays(scene), shadow{"shadow", true, {}, {}}, reflection{"reflection", false, {}, {}};
-    addSecondaryRays(scene, *kd, camera, shadow, reflection);
+    const RaySet camera = cameraRays(scene), shadow = shadowRays(scene, *kd),
+                 reflection = reflectionRays(scene, *kd, camera);
     for (const RaySet* set : {&camera, &shadow, &reflection}) {
         std::cerr << "vs_embree: " << name << ": " << set->rays.size() << " " << set->name << " rays\n";
         report.rayRows.push_back(measureSet(name, prims.size(), *set, *kd, embree, passes, report.agreed));

@@ -66,7 +66,8 @@ struct TreeNodeInfo {
     std::uint32_t primitives = 0;     // primitive references of a leaf
 };
 
-// The most rays Accelerator::intersectPacket takes: eight, as a 4x2 tile of pixels.
+// The most rays Accelerator::intersectPacket and occludedPacket take: eight, as a 4x2 tile of
+// pixels or a run of eight.
 inline constexpr int kPacketSize = 8;
 
 class Accelerator {
@@ -85,6 +86,14 @@ public:
     virtual void intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                                  RayCounters& counters) const {
         for (int i = 0; i < count; ++i) found[i] = intersect(rays[i], tMax, hits[i], counters);
+    }
+    // Whether each of `count` (at most kPacketSize) rays is blocked, rays[i] before its own
+    // tMax[i] (shadow rays, each ending at its light): blocked[i] is what occluded() answers for
+    // it, and the counters count what occluded() counts. Trees trace coherent rays (the shadow
+    // rays of neighbouring pixels to one light) together; the default traces one at a time.
+    virtual void occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                                RayCounters& counters) const {
+        for (int i = 0; i < count; ++i) blocked[i] = occluded(rays[i], tMax[i], counters);
     }
 
     virtual AccelStats stats() const = 0;

@@ -18,15 +18,21 @@
 //   hits the first found wins, in the first leaf along the ray and, in a leaf, the first primitive.
 // - A ray leaves the packet when its nearest hit lies before the node taken from the stack,
 //   where the single traversal stops.
+// Shadow rays (SplitTree::occludedPacket) walk the same way, each with its own tMax, and a ray
+// stops where SplitTree::occluded stops: its lane turns off after the first block of a leaf in
+// which one of its triangles lies in (0, tMax), or the first other primitive that does, and its
+// tLimit drops to -infinity, so no node left on the stack is open to it any more. Until then it
+// counts, node by node and block by block, what the single ray counts.
 // Rays that do not share an octant, have a direction component that is zero or whose
 // reciprocal overflows (their plane distances can be NaN, and the single traversal then orders
 // the children by the origin), and a tree with a hit filter are traced one by one.
 //
 // Compiled twice (libtrace/CMakeLists.txt): as it is, on SSE2 lanes (core/simd.h, simd_base),
 // and with RT_PACKET_AVX2 defined, on AVX2 lanes: the same code in namespace simd_avx2, its
-// functions compiled for AVX2. SplitTree::intersectPacket (packet_dispatch.cpp) chooses one at
-// run time. The headers are included before the AVX2 region, so the inline functions they
-// define, which other files share, keep the baseline instructions.
+// functions compiled for AVX2. SplitTree::intersectPacket and occludedPacket
+// (packet_dispatch.cpp) choose one at run time. The headers are included before the AVX2 region,
+// so the inline functions they define, which other files share, keep the baseline instructions.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -68,10 +74,10 @@ LaneBits bitsOf(const Lanes& mask) {
     return bits;
 }
 
-// A lane mask from one flag per ray.
-Lanes maskOf(const bool (&set)[kPacketSize]) {
+// A lane mask from one bit per ray.
+Lanes maskOf(LaneBits bits) {
     alignas(64) Real lanes[kPacketSize];
-    for (int i = 0; i < kPacketSize; ++i) lanes[i] = set[i] ? Real(1) : Real(0);
+    for (int i = 0; i < kPacketSize; ++i) lanes[i] = (bits >> i) & 1u ? Real(1) : Real(0);
     Lanes mask;
     for (int g = 0; g < kGroups; ++g) mask.group[g] = notEqual(loadLanes(lanes + g * kLanes), broadcast(0));
     return mask;
@@ -98,54 +104,131 @@ struct PacketRays {
     Lanes origin[3], direction[3], inverse[3];
 };
 
+struct Span {
+    Lanes active, tMin, tMax;
+};
+
+// A packet as the traversal takes it: its rays, the part of each inside the root voxel (inactive
+// where it misses the voxel), the distance each ends at, and the octant they share.
+struct Packet {
+    PacketRays rays;
+    Span root;
+    Lanes tMax;
+    bool belowIsNear[3];  // per axis: the rays move up it
+};
+
+// Loads rays[0, count), rays[i] ending at tMax[i], into `packet`; lanes past `count` repeat ray 0
+// and stay inactive. False, and `packet` unusable, if the rays are not coherent: finite origins,
+// one octant, every direction component nonzero with a finite reciprocal (see the note at the top).
+bool loadPacket(const Ray* rays, int count, const Real* tMax, const Aabb& bounds, Packet& packet) {
+    alignas(64) Real values[12][kPacketSize];  // origin, direction, inverse (xyz each), tMin, tEnd, tMax
+    LaneBits inside = 0;
+    for (int i = 0; i < kPacketSize; ++i) {
+        const int r = i < count ? i : 0;
+        const Ray& ray = rays[r];
+        const Vec3 invDir = reciprocal(ray.direction);
+        for (int axis = 0; axis < 3; ++axis)
+            if (!std::isfinite(invDir[axis]) || !std::isfinite(ray.origin[axis]) ||
+                (ray.direction[axis] > 0) != (rays[0].direction[axis] > 0))
+                return false;
+        Real tMin = 0, tEnd = tMax[r];
+        if (i < count && clipRay(bounds, ray, invDir, tMin, tEnd)) inside |= 1u << i;
+        for (int axis = 0; axis < 3; ++axis) {
+            values[axis][i] = ray.origin[axis];
+            values[3 + axis][i] = ray.direction[axis];
+            values[6 + axis][i] = invDir[axis];
+        }
+        values[9][i] = tMin;
+        values[10][i] = tEnd;
+        values[11][i] = tMax[r];
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        packet.rays.origin[axis] = load(values[axis]);
+        packet.rays.direction[axis] = load(values[3 + axis]);
+        packet.rays.inverse[axis] = load(values[6 + axis]);
+        packet.belowIsNear[axis] = rays[0].direction[axis] > 0;
+    }
+    packet.root = {maskOf(inside), load(values[9]), load(values[10])};
+    packet.tMax = load(values[11]);
+    return true;
+}
+
 // The nearest hit of each ray so far.
 struct PacketHits {
     Lanes t, u, v;
     std::uint32_t prim[kPacketSize];
 };
 
-// Moller-Trumbore of one triangle of a block against every ray of the packet: intersectBlock's
-// operations in its order, lane by lane (a lane is a ray here, not a triangle), so each ray gets
-// the bits its single traversal gets. A hit is taken where it is nearer than the ray's nearest,
-// as the single traversal takes a block's hits in order.
+// Triangle `lane` of a block, in every lane.
+struct TriangleLanes {
+    RealLanes p0[3], e1[3], e2[3];
+
+    TriangleLanes(const TriangleBlock& block, int lane) {
+        for (int axis = 0; axis < 3; ++axis) {
+            p0[axis] = broadcast(block.p0[axis][lane]);
+            e1[axis] = broadcast(block.e1[axis][lane]);
+            e2[axis] = broadcast(block.e2[axis][lane]);
+        }
+    }
+};
+
+// What one group of rays meets of a triangle: the rays that hit it with 0 < t < their limit, and
+// t, u and v (of every ray).
+struct GroupHits {
+    RealLanes hit, t, u, v;
+};
+
+// Moller-Trumbore of one triangle against group g of the packet's rays: intersectBlock's operations
+// and hit condition in its order, lane by lane (a lane is a ray here, not a triangle), so each ray
+// gets the bits its single traversal gets. Both queries test triangles with it: the nearest hit
+// with the ray's nearest so far as `limit`, the any hit with its tMax.
+inline GroupHits hitTriangle(const TriangleLanes& tri, const PacketRays& rays, int g, RealLanes limit) {
+    const RealLanes &e1x = tri.e1[0], &e1y = tri.e1[1], &e1z = tri.e1[2];
+    const RealLanes &e2x = tri.e2[0], &e2y = tri.e2[1], &e2z = tri.e2[2];
+    const RealLanes zero = broadcast(0), one = broadcast(1);
+    const RealLanes dx = rays.direction[0].group[g], dy = rays.direction[1].group[g], dz = rays.direction[2].group[g];
+    const RealLanes px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
+    const RealLanes det = e1x * px + e1y * py + e1z * pz;
+    const RealLanes invDet = one / det;
+    const RealLanes sx = rays.origin[0].group[g] - tri.p0[0], sy = rays.origin[1].group[g] - tri.p0[1],
+                    sz = rays.origin[2].group[g] - tri.p0[2];
+    GroupHits h;
+    h.u = (sx * px + sy * py + sz * pz) * invDet;
+    const RealLanes qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
+    h.v = (dx * qx + dy * qy + dz * qz) * invDet;
+    h.t = (e2x * qx + e2y * qy + e2z * qz) * invDet;
+    const RealLanes inside = notEqual(det, zero) & notLessThan(h.u, zero) & notGreaterThan(h.u, one) &
+                             notLessThan(h.v, zero) & notGreaterThan(h.u + h.v, one);
+    h.hit = inside & lessThan(zero, h.t) & lessThan(h.t, limit);
+    return h;
+}
+
+// A hit of triangle `lane` of the block is taken where it is nearer than the ray's nearest, as
+// the single traversal takes a block's hits in order.
 inline void nearestTriangle(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& active,
                             PacketHits& nearest) {
-    const RealLanes e1x = broadcast(block.e1[0][lane]), e1y = broadcast(block.e1[1][lane]),
-                    e1z = broadcast(block.e1[2][lane]);
-    const RealLanes e2x = broadcast(block.e2[0][lane]), e2y = broadcast(block.e2[1][lane]),
-                    e2z = broadcast(block.e2[2][lane]);
-    const RealLanes p0x = broadcast(block.p0[0][lane]), p0y = broadcast(block.p0[1][lane]),
-                    p0z = broadcast(block.p0[2][lane]);
-    const RealLanes zero = broadcast(0), one = broadcast(1);
+    const TriangleLanes tri(block, lane);
     LaneBits taken = 0;
     for (int g = 0; g < kGroups; ++g) {
-        const RealLanes dx = rays.direction[0].group[g], dy = rays.direction[1].group[g],
-                        dz = rays.direction[2].group[g];
-        const RealLanes px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
-        const RealLanes det = e1x * px + e1y * py + e1z * pz;
-        const RealLanes invDet = one / det;
-        const RealLanes sx = rays.origin[0].group[g] - p0x, sy = rays.origin[1].group[g] - p0y,
-                        sz = rays.origin[2].group[g] - p0z;
-        const RealLanes u = (sx * px + sy * py + sz * pz) * invDet;
-        const RealLanes qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
-        const RealLanes v = (dx * qx + dy * qy + dz * qz) * invDet;
-        const RealLanes t = (e2x * qx + e2y * qy + e2z * qz) * invDet;
-        const RealLanes inside = notEqual(det, zero) & notLessThan(u, zero) & notGreaterThan(u, one) &
-                                 notLessThan(v, zero) & notGreaterThan(u + v, one);
-        const RealLanes hit = active.group[g] & inside & lessThan(zero, t) & lessThan(t, nearest.t.group[g]);
+        const GroupHits h = hitTriangle(tri, rays, g, nearest.t.group[g]);
+        const RealLanes hit = active.group[g] & h.hit;
         const LaneBits bits = laneBits(hit);
         if (bits == 0) continue;
-        nearest.t.group[g] = select(hit, t, nearest.t.group[g]);
-        nearest.u.group[g] = select(hit, u, nearest.u.group[g]);
-        nearest.v.group[g] = select(hit, v, nearest.v.group[g]);
+        nearest.t.group[g] = select(hit, h.t, nearest.t.group[g]);
+        nearest.u.group[g] = select(hit, h.u, nearest.u.group[g]);
+        nearest.v.group[g] = select(hit, h.v, nearest.v.group[g]);
         taken |= bits << (g * kLanes);
     }
     for (LaneBits bits = taken; bits != 0; bits &= bits - 1) nearest.prim[std::countr_zero(bits)] = block.id[lane];
 }
 
-struct Span {
-    Lanes active, tMin, tMax;
-};
+// Adds to `blocked` the rays of `open` that triangle `lane` of the block hits before their tLimit.
+inline void blockingTriangle(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& open,
+                             const Lanes& tLimit, Lanes& blocked) {
+    const TriangleLanes tri(block, lane);
+    for (int g = 0; g < kGroups; ++g)
+        blocked.group[g] = blocked.group[g] | (open.group[g] & hitTriangle(tri, rays, g, tLimit.group[g]).hit);
+}
 
 // The single traversal's decision at a node, ray by ray (split_tree.cpp, SplitTree::traverse),
 // mapped to the packet's near and far child; `belowIsNear`: the rays move up the axis. A ray
@@ -175,13 +258,69 @@ inline void descend(const PacketRays& rays, const Span& span, int axis, Real spl
     }
 }
 
-// The rays of `span` whose nearest hit so far may still lie in its node: where the single
-// traversal goes on.
-Lanes stillOpen(const Span& span, const Lanes& nearestT) {
+// The rays of `span` for which something may still lie in its node, their tLimit not before it:
+// where the single traversal goes on.
+Lanes stillOpen(const Span& span, const Lanes& tLimit) {
     Lanes open;
     for (int g = 0; g < kGroups; ++g)
-        open.group[g] = andNot(lessThan(nearestT.group[g], span.tMin.group[g]), span.active.group[g]);
+        open.group[g] = andNot(lessThan(tLimit.group[g], span.tMin.group[g]), span.active.group[g]);
     return open;
+}
+
+// The packet's walk through the tree's `nodes`, both queries': front to back, each ray visiting
+// the nodes its single traversal visits, in its order. visitLeaf(unit, inLeaf, active) is called
+// at each non-empty leaf with its primitiveOffset() and the rays in it (lanes and bits); it may
+// lower `tLimit`, per ray the distance from which on nothing is sought: the nearest hit so far,
+// or -infinity for a shadow ray found blocked. Returns the nodes visited, once per ray.
+template <typename VisitLeaf>
+std::uint64_t walk(const SplitNode* nodes, const Packet& packet, const Lanes& tLimit, const VisitLeaf& visitLeaf) {
+    struct Pending {
+        std::uint32_t node;
+        Span span;
+    };
+    Pending stack[kMaxTreeDepth];
+    int size = 0;
+    std::uint32_t index = 0;
+    std::uint64_t steps = 0;
+    Span span = packet.root;
+    LaneBits active = bitsOf(span.active);
+    while (active != 0) {
+        SplitNode node = nodes[index];
+        while (!node.isLeaf()) {
+            steps += std::uint64_t(std::popcount(active));
+            const int axis = node.axis();
+            const bool belowIsNear = packet.belowIsNear[axis];
+            Descent d;
+            descend(packet.rays, span, axis, Real(node.split()), belowIsNear, d);
+            const LaneBits nearRays = bitsOf(d.nearRays);
+            const std::uint32_t nearChild = belowIsNear ? index + 1 : node.aboveChild();
+            const std::uint32_t farChild = belowIsNear ? node.aboveChild() : index + 1;
+            if (nearRays == 0) {  // no ray takes both: only the mask changes
+                index = farChild;
+                span.active = d.farRays;
+                active = bitsOf(d.farRays);
+            } else {
+                if (bitsOf(d.farRays) != 0) stack[size++] = {farChild, {d.farRays, d.farTMin, span.tMax}};
+                index = nearChild;
+                span.active = d.nearRays;
+                span.tMax = d.nearTMax;
+                active = nearRays;
+            }
+            node = nodes[index];
+        }
+        steps += std::uint64_t(std::popcount(active));
+        if (node.primitiveCount() != 0) visitLeaf(node.primitiveOffset(), span.active, active);
+        // The next node with a ray for which something may still lie in it.
+        active = 0;
+        while (active == 0 && size > 0) {
+            const Pending& next = stack[--size];
+            index = next.node;
+            span = next.span;
+            span.active = stillOpen(span, tLimit);
+            active = bitsOf(span.active);
+        }
+    }
+    return steps;
 }
 
 // The leaf's primitives that are not triangles, ray by ray (the packet has no hit filter).
@@ -205,6 +344,45 @@ void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const
     nearest.v = load(v);
 }
 
+// The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
+// tMax), found and counted as SplitTree::occluded finds and counts them ray by ray: the triangles
+// block by block, a block's kSimdWidth (fewer in the last) tested and counted together, a ray
+// stopping after the first block that blocks it; then the other primitives one at a time, until
+// one blocks (the packet has no hit filter).
+LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const Real* tMax,
+                       const PacketRays& packet, Lanes open, LaneBits active, const Lanes& tLimit,
+                       std::uint64_t& tests) {
+    LaneBits blocked = 0;
+    const TriangleBlock* blocks = leaf.blocks();
+    for (std::uint32_t b = 0; b < leaf.blockCount() && active != 0; ++b) {
+        const std::uint32_t size = std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
+        tests += std::uint64_t(std::popcount(active)) * size;
+        Lanes hit = broadcastLanes(0);
+        for (std::uint32_t lane = 0; lane < size; ++lane)
+            blockingTriangle(blocks[b], int(lane), packet, open, tLimit, hit);
+        for (int g = 0; g < kGroups; ++g) open.group[g] = andNot(hit.group[g], open.group[g]);
+        blocked |= bitsOf(hit);
+        active &= ~blocked;
+    }
+    for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
+        const int r = std::countr_zero(bits);
+        for (std::uint32_t i = 0; i < leaf.others; ++i) {
+            ++tests;
+            if (prims.intersectsAny(leaf.otherIds()[i], rays[r], tMax[r])) {
+                blocked |= 1u << r;
+                break;
+            }
+        }
+    }
+    return blocked;
+}
+
+// Takes the rays of `bits` out of the search: no node's interval starts before -infinity.
+void closeRays(LaneBits bits, Lanes& tLimit) {
+    const Lanes closed = maskOf(bits);
+    for (int g = 0; g < kGroups; ++g) tLimit.group[g] = select(closed.group[g], broadcast(-kInfinity), tLimit.group[g]);
+}
+
 }  // namespace
 
 }  // namespace rt::RT_PACKET_NAMESPACE
@@ -216,96 +394,26 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
                             RayCounters& counters) const {
     using namespace RT_PACKET_LANES;
     static_assert(level == RT_PACKET_LEVEL, "each compilation of this file holds its own level's traversal");
-    // Lanes past `count` repeat ray 0 and stay inactive.
-    alignas(64) Real values[11][kPacketSize];  // origin, direction, inverse (xyz each), tMin, tMax
-    bool inside[kPacketSize] = {};
-    bool coherent = !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty();
-    for (int i = 0; i < kPacketSize && coherent; ++i) {
-        const Ray& ray = rays[i < count ? i : 0];
-        const Vec3 invDir = reciprocal(ray.direction);
-        // Finite origins, one octant, every direction component nonzero with a finite
-        // reciprocal (see the note at the top).
-        for (int axis = 0; axis < 3; ++axis)
-            coherent = coherent && std::isfinite(invDir[axis]) && std::isfinite(ray.origin[axis]) &&
-                       (ray.direction[axis] > 0) == (rays[0].direction[axis] > 0);
-        Real tMin = 0, tEnd = tMax;
-        inside[i] = i < count && clipRay(bounds_, ray, invDir, tMin, tEnd);
-        for (int axis = 0; axis < 3; ++axis) {
-            values[axis][i] = ray.origin[axis];
-            values[3 + axis][i] = ray.direction[axis];
-            values[6 + axis][i] = invDir[axis];
-        }
-        values[9][i] = tMin;
-        values[10][i] = tEnd;
-    }
-    if (!coherent) {
+    Real ends[kPacketSize];
+    std::fill(std::begin(ends), std::end(ends), tMax);
+    Packet packet;
+    if (!tracesTogether(count) || !loadPacket(rays, count, ends, bounds_, packet)) {
         Accelerator::intersectPacket(rays, count, tMax, hits, found, counters);
         return;
     }
-    PacketRays packet;
-    for (int axis = 0; axis < 3; ++axis) {
-        packet.origin[axis] = load(values[axis]);
-        packet.direction[axis] = load(values[3 + axis]);
-        packet.inverse[axis] = load(values[6 + axis]);
-    }
-    Span span{maskOf(inside), load(values[9]), load(values[10])};
     PacketHits nearest{};
-    nearest.t = broadcastLanes(tMax);
-    LaneBits active = bitsOf(span.active);
-    const bool belowIsNear[3] = {rays[0].direction.x > 0, rays[0].direction.y > 0, rays[0].direction.z > 0};
-
-    struct Pending {
-        std::uint32_t node;
-        Span span;
-    };
-    Pending stack[kMaxTreeDepth];
-    int size = 0;
-    std::uint32_t index = 0;
-    std::uint64_t steps = 0, tests = 0;
+    nearest.t = packet.tMax;
+    std::uint64_t tests = 0;
     const PrimitiveView prims = view_;
-    while (active != 0) {
-        SplitNode node = nodes_[index];
-        while (!node.isLeaf()) {
-            steps += std::uint64_t(std::popcount(active));
-            const int axis = node.axis();
-            Descent d;
-            descend(packet, span, axis, Real(node.split()), belowIsNear[axis], d);
-            const LaneBits nearRays = bitsOf(d.nearRays);
-            const std::uint32_t nearChild = belowIsNear[axis] ? index + 1 : node.aboveChild();
-            const std::uint32_t farChild = belowIsNear[axis] ? node.aboveChild() : index + 1;
-            if (nearRays == 0) {  // no ray takes both: only the mask changes
-                index = farChild;
-                span.active = d.farRays;
-                active = bitsOf(d.farRays);
-            } else {
-                if (bitsOf(d.farRays) != 0) stack[size++] = {farChild, {d.farRays, d.farTMin, span.tMax}};
-                index = nearChild;
-                span.active = d.nearRays;
-                span.tMax = d.nearTMax;
-                active = nearRays;
-            }
-            node = nodes_[index];
-        }
-        steps += std::uint64_t(std::popcount(active));
-        if (node.primitiveCount() != 0) {
-            const LeafPrimitives& leaf = leafAt(node.primitiveOffset());
+    counters.traversalSteps +=
+        walk(nodes_.data(), packet, nearest.t, [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
+            const LeafPrimitives& leaf = leafAt(unit);
             tests += std::uint64_t(std::popcount(active)) * (leaf.triangles + leaf.others);
-            // As SplitTree::nearestInLeaf: the triangles in leaf order, then the other primitives.
+            // As SplitTree::intersect: the triangles in leaf order, then the other primitives.
             for (std::uint32_t k = 0; k < leaf.triangles; ++k)
-                nearestTriangle(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet, span.active, nearest);
+                nearestTriangle(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
             if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
-        }
-        // The next node with a ray whose nearest hit may still lie in it.
-        active = 0;
-        while (active == 0 && size > 0) {
-            const Pending& next = stack[--size];
-            index = next.node;
-            span = next.span;
-            span.active = stillOpen(span, nearest.t);
-            active = bitsOf(span.active);
-        }
-    }
-    counters.traversalSteps += steps;
+        });
     counters.intersectionTests += tests;
     alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
     store(nearest.t, t);
@@ -317,8 +425,35 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
     }
 }
 
+template <SimdLevel level>
+void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                                  RayCounters& counters) const {
+    using namespace RT_PACKET_LANES;
+    static_assert(level == RT_PACKET_LEVEL, "each compilation of this file holds its own level's traversal");
+    Packet packet;
+    if (!tracesTogether(count) || !loadPacket(rays, count, tMax, bounds_, packet)) {
+        Accelerator::occludedPacket(rays, count, tMax, blocked, counters);
+        return;
+    }
+    Lanes tLimit = packet.tMax;
+    LaneBits found = 0;
+    std::uint64_t tests = 0;
+    const PrimitiveView prims = view_;
+    counters.traversalSteps +=
+        walk(nodes_.data(), packet, tLimit, [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
+            const LaneBits now =
+                blockedInLeaf(prims, leafAt(unit), rays, tMax, packet.rays, inLeaf, active, tLimit, tests);
+            found |= now;
+            if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
+        });
+    counters.intersectionTests += tests;
+    for (int i = 0; i < count; ++i) blocked[i] = (found >> i) & 1u;
+}
+
 template void SplitTree::tracePacket<RT_PACKET_LEVEL>(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                                                       RayCounters& counters) const;
+template void SplitTree::traceShadowPacket<RT_PACKET_LEVEL>(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                                                            RayCounters& counters) const;
 
 }  // namespace rt
 

@@ -1,6 +1,6 @@
-// SplitTree::intersectPacket: the packet traversal (kd_packet.cpp) on the lanes core/simd.h's
-// packetSimd() chooses, AVX2 where the CPU has it, else SSE2. Apart from kd_packet.cpp, which is
-// compiled once per set of lanes and holds only that set's traversal.
+// SplitTree::intersectPacket and occludedPacket: the packet traversals (kd_packet.cpp) on the
+// lanes core/simd.h's packetSimd() chooses, AVX2 where the CPU has it, else SSE2. Apart from
+// kd_packet.cpp, which is compiled once per set of lanes and holds only that set's traversals.
 #include "accel/split_tree.h"
 
 namespace rt {
@@ -11,6 +11,15 @@ void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits
     if (packetSimd() == SimdLevel::avx2) return tracePacket<SimdLevel::avx2>(rays, count, tMax, hits, found, counters);
 #endif
     tracePacket<SimdLevel::sse2>(rays, count, tMax, hits, found, counters);
+}
+
+void SplitTree::occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                               RayCounters& counters) const {
+#if RT_SIMD_AVX2
+    if (packetSimd() == SimdLevel::avx2)
+        return traceShadowPacket<SimdLevel::avx2>(rays, count, tMax, blocked, counters);
+#endif
+    traceShadowPacket<SimdLevel::sse2>(rays, count, tMax, blocked, counters);
 }
 
 }  // namespace rt

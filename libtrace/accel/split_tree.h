@@ -105,6 +105,9 @@ public:
     // Wald's packet traversal (accel/kd_packet.cpp) on the lanes packetSimd() chooses (core/simd.h).
     void intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                          RayCounters& counters) const override;
+    // Its any-hit form, each ray stopping where occluded() stops (accel/kd_packet.cpp).
+    void occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                        RayCounters& counters) const override;
     AccelStats stats() const override { return stats_; }
     void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const override;
 
@@ -117,9 +120,13 @@ private:
     void layOutLeaves(const FlatTree& tree);
     LeafPrimitives leafSizes(const FlatTree& tree, const SplitNode& node) const;
     void layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes, std::size_t at);
-    // The packet traversal on one level's lanes: kd_packet.cpp, compiled once per level.
+    // The packet traversals on one level's lanes: kd_packet.cpp, compiled once per level.
     template <SimdLevel level>
     void tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found, RayCounters& counters) const;
+    template <SimdLevel level>
+    void traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const;
+    // Whether `count` rays may walk the tree as a packet (kd_packet.cpp checks that they are coherent).
+    bool tracesTogether(int count) const { return !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty(); }
     template <typename LeafVisitor>
     void traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
                   const LeafVisitor& visitLeaf) const;

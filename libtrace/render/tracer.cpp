@@ -24,6 +24,16 @@ Vec3 pointOnDisc(const Vec3& c, const Vec3& axis, Real r, SampleRng& rng) {
     return c + t * (radius * std::cos(angle)) + b * (radius * std::sin(angle));
 }
 
+// Whether light arriving as `in` falls on the front of the surface at `s` (not from behind it,
+// nor from outside a spot's cone or a light's range): only then it adds light, and a shadow ray
+// is traced to it.
+bool reaches(const SurfacePoint& s, const LightIncidence& in) {
+    return !(dot(s.shadingNormal, in.toLight) <= 0 || in.color == Color{});
+}
+
+// What a shadow ray lets through in a scene without glass: all or nothing.
+Color passed(bool blocked) { return blocked ? Color{} : Color{1, 1, 1}; }
+
 }  // namespace
 
 Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
@@ -73,7 +83,8 @@ bool Tracer::tracesPackets() const {
 }
 
 // Neighbouring camera rays share the tree's nodes and leaves, so the packet traversal walks
-// them once for all eight (docs/trees.md, "Packets"); what follows the first hit stays per pixel.
+// them once for all eight (docs/trees.md, "Packets"), and so do their hits' shadow rays to a
+// light; what follows stays per pixel.
 void Tracer::pixelRun(int x0, int y, int count, RenderCounters& counters, Color* colors, float* coverages) const {
     std::array<Ray, kPacketSize> rays;
     std::array<Hit, kPacketSize> hits;
@@ -82,12 +93,25 @@ void Tracer::pixelRun(int x0, int y, int count, RenderCounters& counters, Color*
     for (int i = 0; i < count; ++i) rays[std::size_t(i)] = camera_.at(Real(x0 + i) + centre, Real(y) + centre);
     counters.camera.rays += std::uint64_t(count);
     accel_.intersectPacket(rays.data(), count, kInfinity, hits.data(), found.data(), counters.camera);
+    std::array<SurfacePoint, kPacketSize> surfaces;
+    std::array<Real, kPacketSize> cones{};
+    for (int i = 0; i < count; ++i) {
+        const auto k = std::size_t(i);
+        if (!found[k]) continue;
+        const CameraHit seen = cameraHit(Real(x0 + i) + centre, Real(y) + centre, rays[k], hits[k]);
+        surfaces[k] = seen.surface;
+        cones[k] = seen.cone;
+    }
+    std::array<PacketShadows, kPacketSize> shadows{};
+    traceShadowPackets(surfaces.data(), found.data(), count, shadows.data(), counters);
     for (int i = 0; i < count; ++i) {
         const auto k = std::size_t(i);
         const int x = x0 + i;
         SampleRng rng{std::uint32_t(x), std::uint32_t(y), 0, settings_.seed};
-        const Color sample = cameraSample(Real(x) + centre, Real(y) + centre, rays[k], found[k] ? &hits[k] : nullptr,
-                                          rng, counters, nullptr);
+        // cameraSample's shading, with the shadows found
+        const Color sample = found[k]
+                                 ? shade(rays[k], hits[k], surfaces[k], 0, false, rng, counters, cones[k], &shadows[k])
+                                 : scene_.background;
         PixelEstimate estimate;
         if (!estimate.add(sample, found[k])) counters.nonFinite.add(x, y);
         colors[i] = estimate.mean();
@@ -95,16 +119,56 @@ void Tracer::pixelRun(int x0, int y, int count, RenderCounters& counters, Color*
     }
 }
 
+// The shadow rays of one light from a run's hits are as coherent as the camera rays were: they
+// share a target, or a direction. Lights whose visibility takes more than one ray (soft shadows
+// draw random points on the disc) or walks through glass (transmittance) stay per pixel.
+void Tracer::traceShadowPackets(const SurfacePoint* surfaces, const bool* found, int count, PacketShadows* shadows,
+                                RenderCounters& counters) const {
+    if (!settings_.shadows || anyGlass_) return;
+    const std::size_t lights = std::min(scene_.lights.size(), kPacketLights);
+    for (std::size_t l = 0; l < lights; ++l) {
+        const Light& light = scene_.lights[l];
+        if (sampledOverArea(light)) continue;
+        std::array<Ray, kPacketSize> rays;
+        std::array<Real, kPacketSize> distances;
+        std::array<int, kPacketSize> pixels;
+        int n = 0;
+        for (int i = 0; i < count; ++i) {
+            if (!found[i]) continue;
+            const LightIncidence in = lightIncidence(light, surfaces[i].point);
+            if (!reaches(surfaces[i], in)) continue;
+            const ShadowRay shadow = shadowRay(surfaces[i], light, in.toLight);
+            rays[std::size_t(n)] = shadow.ray;
+            distances[std::size_t(n)] = shadow.distance;
+            pixels[std::size_t(n++)] = i;
+        }
+        if (n == 0) continue;
+        counters.shadow.rays += std::uint64_t(n);
+        std::array<bool, kPacketSize> blocked{};
+        accel_.occludedPacket(rays.data(), n, distances.data(), blocked.data(), counters.shadow);
+        for (int k = 0; k < n; ++k) {
+            PacketShadows& at = shadows[pixels[std::size_t(k)]];
+            at.traced |= 1u << l;
+            at.blocked |= std::uint32_t(blocked[std::size_t(k)]) << l;
+        }
+    }
+}
+
+Tracer::CameraHit Tracer::cameraHit(Real px, Real py, const Ray& ray, const Hit& hit) const {
+    const RayDifferential differential =
+        filtered_ ? camera_.differentialAt(px, py, ray, differentialScale_) : RayDifferential{};
+    return {shadedSurfaceAt(scene_, ray, hit, images_, differential), differential.radiusAt(hit.t)};
+}
+
 Color Tracer::cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, SampleRng& rng, RenderCounters& counters,
                            AovSums* aovSums) const {
     if (!hit) return scene_.background;
     // the AOVs take the point, normal and colour the shading uses
-    const RayDifferential differential =
-        filtered_ ? camera_.differentialAt(px, py, ray, differentialScale_) : RayDifferential{};
-    const SurfacePoint surface = shadedSurfaceAt(scene_, ray, *hit, images_, differential);
+    const CameraHit seen = cameraHit(px, py, ray, *hit);
     if (aovSums)
-        aovSums->addHit(scene_, surface, *hit, surfaceColor(scene_, scene_.materialOf(hit->prim), surface, images_));
-    return shade(ray, *hit, surface, 0, false, rng, counters, differential.radiusAt(hit->t));
+        aovSums->addHit(scene_, seen.surface, *hit,
+                        surfaceColor(scene_, scene_.materialOf(hit->prim), seen.surface, images_));
+    return shade(ray, *hit, seen.surface, 0, false, rng, counters, seen.cone);
 }
 
 Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
@@ -122,7 +186,7 @@ Color Tracer::shadeHit(const Ray& ray, const Hit& hit, int depth, bool inBundle,
 }
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
-                    RenderCounters& counters, Real cone) const {
+                    RenderCounters& counters, Real cone, const PacketShadows* known) const {
     const Material& m = scene_.materialOf(hit.prim);
     const Color color = surfaceColor(scene_, m, s, images_);
     const Vec3 toViewer = -ray.direction;
@@ -130,11 +194,12 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     // Whitted's model has no light transport from surfaces: an emitter is seen (directly, in
     // mirrors), but lights nothing else.
     Color c = phongAmbient(color, m, ambientLight_) + surfaceEmission(scene_, m, s, images_);
-    for (const Light& light : scene_.lights) {
+    for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
+        const Light& light = scene_.lights[l];
         const LightIncidence in = lightIncidence(light, s.point);
-        // The light is behind the surface, or the point outside its cone or range: no shadow ray needed.
-        if (dot(s.shadingNormal, in.toLight) <= 0 || in.color == Color{}) continue;
-        const Color seen = visibility(s, light, in.toLight, inBundle, rng, counters);
+        if (!reaches(s, in)) continue;
+        const Color seen = known && known->has(l) ? passed(known->isBlocked(l))
+                                                  : visibility(s, light, in.toLight, inBundle, rng, counters);
         if (seen != Color{}) c += phongLight(m, color, s.shadingNormal, in.toLight, toViewer, in.color) * seen;
     }
     // Thesis 2.1, step 6: the reflected intensity is added to the local one; Whitted's
@@ -157,35 +222,50 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
 Color Tracer::visibility(const SurfacePoint& s, const Light& light, const Vec3& toLight, bool inBundle, SampleRng& rng,
                          RenderCounters& counters) const {
     if (!settings_.shadows) return {1, 1, 1};
-    const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
-    if (light.type == Light::Type::Directional) {  // infinitely far: anything along the way shadows
+    if (!sampledOverArea(light)) {
         ++counters.shadow.rays;
-        return transmittance(origin, toLight, kInfinity, counters);
+        return transmittance(shadowRay(s, light, toLight), counters);
     }
-    const bool area = settings_.softShadows && light.size > 0;
-    const int samples = area && !inBundle ? settings_.distributedSamples : 1;
-    const Vec3 axis = area ? normalize(light.position - origin) : Vec3{};  // only area lights need it
+    // Soft shadows: rays to random points of the light's disc, a bundle of them unless in one already.
+    const Vec3 origin = shadowOrigin(s);
+    const int samples = inBundle ? 1 : settings_.distributedSamples;
+    const Vec3 axis = normalize(light.position - origin);
     Color visible;
     for (int i = 0; i < samples; ++i) {
-        const Vec3 target = area ? pointOnDisc(light.position, axis, light.size, rng) : light.position;
-        const Vec3 d = target - origin;
-        const Real distance = length(d);
         ++counters.shadow.rays;
-        visible += transmittance(origin, d / distance, distance, counters);
+        visible += transmittance(towards(origin, pointOnDisc(light.position, axis, light.size, rng)), counters);
     }
     if (samples == 1) return visible;
     const auto n = float(samples);
     return {visible.r / n, visible.g / n, visible.b / n};
 }
 
+bool Tracer::sampledOverArea(const Light& light) const {
+    return light.type != Light::Type::Directional && settings_.softShadows && light.size > 0;
+}
+
+Tracer::ShadowRay Tracer::shadowRay(const SurfacePoint& s, const Light& light, const Vec3& toLight) const {
+    // A directional light is infinitely far: anything along the way shadows.
+    if (light.type == Light::Type::Directional)
+        return {{.origin = shadowOrigin(s), .direction = toLight, .shadow = true}, kInfinity};
+    return towards(shadowOrigin(s), light.position);
+}
+
+Tracer::ShadowRay Tracer::towards(const Vec3& origin, const Vec3& target) {
+    const Vec3 d = target - origin;
+    const Real distance = length(d);
+    return {{.origin = origin, .direction = d / distance, .shadow = true}, distance};
+}
+
 // Through glass the light is tinted at each crossing (shadowFilter) and absorbed inside, along
 // the straight line: Whitted's model has no caustics. Opaque scenes take the any-hit query alone.
 // Every ray here, the walk's included, is a shadow ray: single-sided surfaces block it where the
 // light sees their front (render/material_filter.h).
-Color Tracer::transmittance(const Vec3& origin, const Vec3& toLight, Real distance, RenderCounters& counters) const {
+Color Tracer::transmittance(const ShadowRay& shadow, RenderCounters& counters) const {
     constexpr Color kClear{1, 1, 1};
-    Ray ray{.origin = origin, .direction = toLight, .shadow = true};
-    if (!anyGlass_) return accel_.occluded(ray, distance, counters.shadow) ? Color{} : kClear;
+    if (!anyGlass_) return passed(accel_.occluded(shadow.ray, shadow.distance, counters.shadow));
+    Ray ray = shadow.ray;
+    Real distance = shadow.distance;
     // Each crossing starts past the last surface; the cap keeps a ray along a pathological
     // stack of coincident glass surfaces finite (and takes the light as blocked there).
     constexpr int kMaxCrossings = 64;

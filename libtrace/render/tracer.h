@@ -42,8 +42,9 @@ public:
     // pixel's centre (-S 1), and no AOVs (their cost layers count each camera ray's own work).
     bool tracesPackets() const;
     // Pixels (x0, y) to (x0 + count - 1, y), count <= kPacketSize, of a render tracesPackets():
-    // the first hits of their camera rays found by one Accelerator::intersectPacket, each pixel
-    // then shaded from its hit exactly as pixel() shades it (the same bits and counters).
+    // the first hits of their camera rays found by one Accelerator::intersectPacket, the shadow
+    // rays from those hits to each light with one (traceShadowPackets) by one occludedPacket per
+    // light, each pixel then shaded exactly as pixel() shades it (the same bits and counters).
     void pixelRun(int x0, int y, int count, RenderCounters& counters, Color* colors, float* coverages) const;
 
     // The colour seen along a ray that has already been reflected `depth` times; `differential`
@@ -55,14 +56,44 @@ public:
     Real epsilon() const { return epsilon_; }
 
 private:
+    // A shadow ray and how far it goes: to the light, or kInfinity to a directional one.
+    struct ShadowRay {
+        Ray ray;
+        Real distance;
+    };
+    // The lights whose shadow rays pixelRun traces as packets: the first kPacketLights, at most,
+    // so that what it found fits in a PacketShadows.
+    static constexpr std::size_t kPacketLights = 16;
+    // What pixelRun's shadow packets found at one pixel's camera hit, for shade() at depth 0: bit
+    // l of `traced`, whether light l's shadow ray was traced, and of `blocked`, whether it was blocked.
+    struct PacketShadows {
+        std::uint32_t traced = 0, blocked = 0;
+
+        bool has(std::size_t light) const { return light < kPacketLights && (traced >> light) & 1u; }
+        bool isBlocked(std::size_t light) const { return (blocked >> light) & 1u; }
+    };
+    // The surface a camera ray sees at its first hit, and the radius of the ray's footprint there.
+    struct CameraHit {
+        SurfacePoint surface;
+        Real cone;
+    };
+
+    // The camera ray `ray` through image position (px, py) at its first hit `hit`.
+    CameraHit cameraHit(Real px, Real py, const Ray& ray, const Hit& hit) const;
     // The sample of the camera ray `ray` through image position (px, py), whose first hit is
     // `hit` (none: it sees the background); `aovSums`, if given, receives the hit's AOVs.
     Color cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, SampleRng& rng, RenderCounters& counters,
                        AovSums* aovSums) const;
     // The colour at `s`, the surface of `hit` (surfaceAt); `cone`: the radius of the ray's
-    // footprint there, which the reflected and transmitted rays widen from.
+    // footprint there, which the reflected and transmitted rays widen from. `known`, if given,
+    // holds the visibility of the lights whose shadow rays pixelRun has traced already.
     Color shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
-                RenderCounters& counters, Real cone) const;
+                RenderCounters& counters, Real cone, const PacketShadows* known = nullptr) const;
+    // The shadow rays of a run's camera hits (`surfaces` where found[i]), one occludedPacket per
+    // light among the first kPacketLights whose visibility is one ray, as visibility() would trace
+    // them one by one: for the pixels shade() traces one for, counted alike.
+    void traceShadowPackets(const SurfacePoint* surfaces, const bool* found, int count, PacketShadows* shadows,
+                            RenderCounters& counters) const;
     // Fraction of `light` seen from the surface (1 without shadows), tinted by glass in the way;
     // toLight: unit, towards it.
     Color visibility(const SurfacePoint& s, const Light& light, const Vec3& toLight, bool inBundle, SampleRng& rng,
@@ -79,9 +110,17 @@ private:
     // The colour of `hit`, found by `ray`, whose footprint is `differential`.
     Color shadeHit(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng, RenderCounters& counters,
                    const RayDifferential& differential) const;
-    // What the shadow ray from `origin` along `toLight` (unit) lets through over `distance`: black
-    // when blocked.
-    Color transmittance(const Vec3& origin, const Vec3& toLight, Real distance, RenderCounters& counters) const;
+    // Whether visibility() samples `light` over its disc (soft shadows) with random rays; else it
+    // traces the one ray shadowRay() gives, which pixelRun may trace in a packet.
+    bool sampledOverArea(const Light& light) const;
+    // Where shadow rays from `s` start: off the surface, on the side the incoming ray came from.
+    Vec3 shadowOrigin(const SurfacePoint& s) const { return s.shadowOrigin + s.geometricNormal * epsilon_; }
+    // The one shadow ray from `s` to a light not sampledOverArea, whose direction is toLight.
+    ShadowRay shadowRay(const SurfacePoint& s, const Light& light, const Vec3& toLight) const;
+    // The shadow ray from `origin` to the point `target`.
+    static ShadowRay towards(const Vec3& origin, const Vec3& target);
+    // What `shadow` lets through: black when blocked.
+    Color transmittance(const ShadowRay& shadow, RenderCounters& counters) const;
     // The colour the transmitted ray of `split` brings through material m, whose transmission is
     // `weight` there (transmissionAt), weighted (render/refraction.h); a rough glass spreads it as
     // a glossy surface its reflection (lobe).

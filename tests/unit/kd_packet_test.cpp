@@ -1,8 +1,11 @@
 // Packet traversal (accel/kd_packet.cpp): every ray of a packet gets, bit for bit, the hit the
 // single-ray traversal gives it (the same primitive, t, u and v), which agrees with the naive
-// list; on camera rays of the thesis scenes, random triangles and the hard cases, in both
-// precisions (the float build runs the same tests), on the SSE2 lanes and on the AVX2 lanes
-// (core/simd.h; skipped where the CPU has no AVX2).
+// list; and as a shadow ray (occludedPacket), each ending at its own distance, the answer and
+// the counted work occluded() gives it. On camera and shadow rays of the thesis scenes, random
+// triangles and the hard cases, through KD and BSP trees, in both precisions (the float build
+// runs the same tests), on the SSE2 lanes and on the AVX2 lanes (core/simd.h; skipped where the
+// CPU has no AVX2).
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -15,6 +18,7 @@
 #include "core/simd.h"
 #include "packet_lanes.h"
 #include "render/camera_rays.h"
+#include "render/surface.h"
 #include "scene/generate.h"
 #include "scene/thesis_scenes.h"
 #include "test_util.h"
@@ -34,9 +38,61 @@ bool identical(bool foundA, const Hit& a, bool foundB, const Hit& b) {
            (!foundA || (a.prim == b.prim && sameBits(a.t, b.t) && sameBits(a.u, b.u) && sameBits(a.v, b.v)));
 }
 
-// Traces `rays` in packets of `packetSize` (the last may be shorter) and one by one; describes
-// the first rays whose answers differ, empty if none does. `naive`, if given, checks the
-// single-ray answers too (the same primitive, or an equally near one).
+// Where the shadow ray along rays[i] ends, so that a packet mixes every case: well before, at
+// (a hit at exactly tMax does not block), just past and well past its nearest hit before `tMax`,
+// or `tMax` itself; rays that hit nothing end at `tMax` or short of the scene.
+Real shadowEnd(const Accelerator& tree, const Ray& ray, std::size_t i, Real tMax) {
+    Hit hit;
+    RayCounters unused;
+    if (!tree.intersect(ray, tMax, hit, unused)) return i % 2 ? tMax : Real(0.25);
+    switch (i % 5) {
+        case 0:
+            return hit.t / 2;
+        case 1:
+            return hit.t;
+        case 2:
+            return std::nextafter(hit.t, kInfinity);
+        case 3:
+            return tMax;
+        default:
+            return hit.t * 2;
+    }
+}
+
+// Traces `rays` as shadow rays, rays[i] ending at ends[i], in packets of `packetSize` (the last
+// may be shorter) and one by one; describes the first packets whose answers or counted work
+// differ, empty if none does.
+std::string shadowDisagreements(const Accelerator& tree, const std::vector<Ray>& rays, const std::vector<Real>& ends,
+                                int packetSize) {
+    std::ostringstream out;
+    int reported = 0;
+    for (std::size_t first = 0; first < rays.size() && reported < 5; first += std::size_t(packetSize)) {
+        const int count = int(std::min<std::size_t>(std::size_t(packetSize), rays.size() - first));
+        bool blocked[kPacketSize];
+        RayCounters packet, single;
+        tree.occludedPacket(&rays[first], count, &ends[first], blocked, packet);
+        for (int i = 0; i < count; ++i) {
+            const std::size_t r = first + std::size_t(i);
+            const bool expected = tree.occluded(rays[r], ends[r], single);
+            if (blocked[i] == expected) continue;
+            out << tree.stats().name << " shadow ray " << r << " o=" << rays[r].origin << " d=" << rays[r].direction
+                << " tMax " << ends[r] << ": packet " << blocked[i] << ", single " << expected << '\n';
+            ++reported;
+        }
+        if (packet.traversalSteps == single.traversalSteps && packet.intersectionTests == single.intersectionTests)
+            continue;
+        out << tree.stats().name << " shadow packet at " << first << ": steps " << packet.traversalSteps << " vs "
+            << single.traversalSteps << ", tests " << packet.intersectionTests << " vs " << single.intersectionTests
+            << '\n';
+        ++reported;
+    }
+    return out.str();
+}
+
+// Traces `rays` in packets of `packetSize` (the last may be shorter) and one by one, for their
+// nearest hits and as shadow rays (shadowDisagreements); describes the first rays whose answers
+// differ, empty if none does. `naive`, if given, checks the single-ray nearest hits too (the same
+// primitive, or an equally near one).
 std::string packetDisagreements(const Accelerator& tree, const std::vector<Ray>& rays, int packetSize, Real tMax,
                                 const Accelerator* naive = nullptr) {
     std::ostringstream out;
@@ -67,6 +123,9 @@ std::string packetDisagreements(const Accelerator& tree, const std::vector<Ray>&
             ++reported;
         }
     }
+    std::vector<Real> ends;
+    for (std::size_t i = 0; i < rays.size(); ++i) ends.push_back(shadowEnd(tree, rays[i], i, tMax));
+    out << shadowDisagreements(tree, rays, ends, packetSize);
     return out.str();
 }
 
@@ -78,6 +137,39 @@ std::vector<Ray> cameraTiles(const Camera& camera, int width, int height) {
         for (int x0 = 0; x0 < width; x0 += 4)
             for (int i = 0; i < kPacketSize; ++i)
                 rays.push_back(cameraRays.at(Real(x0 + i % 4) + Real(0.5), Real(y0 + i / 4) + Real(0.5)));
+    return rays;
+}
+
+// The shadow rays rt-render traces for a width x height view (Tracer::pixelRun): from above the
+// first hit of each pixel's camera ray, row by row, to each light of the scene, ending there, and
+// to a light at infinity (ending at kInfinity); `ends` receives where each ends.
+std::vector<Ray> shadowRaysOf(const Scene& scene, const Accelerator& tree, int width, int height,
+                              std::vector<Real>& ends) {
+    const CameraRays cameraRays(scene.camera, width, height);
+    const Real epsilon = secondaryRayOffset(scene.primitives);
+    std::vector<Vec3> origins;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const Ray ray = cameraRays.at(Real(x) + Real(0.5), Real(y) + Real(0.5));
+            Hit hit;
+            RayCounters unused;
+            if (!tree.intersect(ray, kInfinity, hit, unused)) continue;
+            const Vec3 p = ray.at(hit.t);
+            Vec3 n = scene.primitives.normal(hit.prim, p);
+            if (dot(n, ray.direction) > 0) n = -n;
+            origins.push_back(p + n * epsilon);
+        }
+    std::vector<Ray> rays;
+    for (const Light& light : scene.lights)
+        for (const Vec3& origin : origins) {
+            const Vec3 d = light.position - origin;
+            rays.push_back({origin, d / length(d), true});
+            ends.push_back(length(d));
+        }
+    for (const Vec3& origin : origins) {
+        rays.push_back({origin, normalize(Vec3{1, 2, 3}), true});
+        ends.push_back(kInfinity);
+    }
     return rays;
 }
 
@@ -187,18 +279,86 @@ TEST_P(KdPacket, EquallyNearHitsGoToTheSamePrimitiveAsSingleRays) {
     for (const auto& tree : trees(prims)) EXPECT_EQ(packetDisagreements(*tree, rays, kPacketSize, kInfinity), "");
 }
 
-// The packet counts the work of each of its rays: the same nodes and tests as single rays.
+// The packet counts the work of each of its rays: the same nodes and tests as single rays, for
+// the nearest hit and, stopping at the first blocking block or primitive, as shadow rays.
 TEST_P(KdPacket, CountsTheSameWorkAsSingleRays) {
     const Scene scene = thesisScene("ships");
     const auto tree = buildKdTree(scene.primitives, KdSettings{});
     const std::vector<Ray> rays = cameraTiles(scene.camera, 80, 60);
-    RayCounters packet, single;
+    RayCounters packet, single, packetShadows, singleShadows;
     for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
         Hit hits[kPacketSize];
-        bool found[kPacketSize];
+        bool found[kPacketSize], blocked[kPacketSize];
+        const Real ends[kPacketSize] = {1, 5, 10, 20, 40, 80, 160, kInfinity};
         tree->intersectPacket(&rays[first], kPacketSize, kInfinity, hits, found, packet);
-        for (int i = 0; i < kPacketSize; ++i) tree->intersect(rays[first + std::size_t(i)], kInfinity, hits[i], single);
+        tree->occludedPacket(&rays[first], kPacketSize, ends, blocked, packetShadows);
+        for (int i = 0; i < kPacketSize; ++i) {
+            tree->intersect(rays[first + std::size_t(i)], kInfinity, hits[i], single);
+            tree->occluded(rays[first + std::size_t(i)], ends[i], singleShadows);
+        }
     }
     EXPECT_EQ(packet.traversalSteps, single.traversalSteps);
     EXPECT_EQ(packet.intersectionTests, single.intersectionTests);
+    EXPECT_EQ(packetShadows.traversalSteps, singleShadows.traversalSteps);
+    EXPECT_EQ(packetShadows.intersectionTests, singleShadows.intersectionTests);
+}
+
+// The shadow rays of the thesis scenes' pixels to their lights, as rt-render traces them, through
+// KD and BSP trees: each ray's answer and the work counted as one by one.
+TEST_P(KdPacket, ShadowRaysOfThesisScenesAgreeWithSingleRays) {
+    for (const char* name : {"balls", "ships", "pyramid5"}) {
+        const Scene scene = thesisScene(name);
+        for (const auto& tree : trees(scene.primitives)) {
+            std::vector<Real> ends;
+            const std::vector<Ray> rays = shadowRaysOf(scene, *tree, 96, 72, ends);
+            EXPECT_EQ(shadowDisagreements(*tree, rays, ends, kPacketSize), "") << name;
+            EXPECT_EQ(shadowDisagreements(*tree, rays, ends, 3), "") << name;
+        }
+    }
+}
+
+// Shadow rays that end nowhere (tMax 0, negative, tiny), graze the triangles' planes, start on
+// them or have zero direction components (traced one by one), and a tree with a hit filter
+// (traced one by one too): the answers and counts of single rays.
+TEST_P(KdPacket, DegenerateShadowRaysAgreeWithSingleRays) {
+    Scene scene = generateScene({300, 20, Placement::Clustered, 25});
+    for (int i = 0; i < 4; ++i) {  // a floor z = -1 split along its diagonal, and walls along x and y
+        const Real w = Real(i);
+        scene.primitives.add<Triangle>({{-2, -2, -1}, {2, -2, -1}, {2, 2, -1}}, 0);
+        scene.primitives.add<Triangle>({{-2, -2, -1}, {2, 2, -1}, {-2, 2, -1}}, 0);
+        scene.primitives.add<Triangle>({{w / 2, -2, -2}, {w / 2, 2, -2}, {w / 2, 0, 2}}, 0);
+    }
+    std::vector<Ray> rays;
+    std::vector<Real> ends;
+    const Real kinds[] = {0, -1, Real(1e-6), Real(0.5), 2, kInfinity};
+    for (int p = 0; p < 300; ++p) {
+        const Real s = Real(p) / 150 - 1;
+        for (int i = 0; i < kPacketSize; ++i) {
+            const Real o = s + Real(i) / 100;
+            switch (p % 4) {
+                case 0:
+                    rays.push_back({{o, o, -1}, normalize(Vec3{1, Real(0.5), Real(1e-7) * Real(i)}), true});
+                    break;
+                case 1:
+                    rays.push_back({{o, -o, -1}, normalize(Vec3{Real(0.3), Real(0.2), 1}), true});
+                    break;
+                case 2:
+                    rays.push_back({{o, s, 3}, Vec3{0, 0, -1}, true});
+                    break;
+                default:
+                    rays.push_back({{Real(0.5), o, s}, normalize(Vec3{Real(1e-9), 1, Real(i % 3) - 1}), true});
+                    break;
+            }
+            ends.push_back(kinds[(std::size_t(p) + std::size_t(i)) % std::size(kinds)]);
+        }
+    }
+    for (const auto& tree : trees(scene.primitives)) {
+        EXPECT_EQ(shadowDisagreements(*tree, rays, ends, kPacketSize), "");
+        struct Rejects : HitFilter {
+            bool accepts(const Ray&, const Hit& hit) const override { return hit.prim % 2 == 0; }
+        } filter;
+        tree->setHitFilter(&filter);
+        EXPECT_EQ(shadowDisagreements(*tree, rays, ends, kPacketSize), "");
+        tree->setHitFilter(nullptr);
+    }
 }

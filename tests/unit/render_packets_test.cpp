@@ -1,7 +1,8 @@
-// rt-render's camera rays as packets (Tracer::pixelRun, --packets) give the picture and the
-// counters of the one-by-one path, bit for bit, on SSE2 and AVX2 lanes, for any thread count and
-// region split; the thesis scenes through the KD tree. (Models with textures, cut-outs and
-// single-sided surfaces: tests/cli/render_packets.sh.)
+// rt-render's camera rays and their shadow rays as packets (Tracer::pixelRun, --packets) give the
+// picture and the counters of the one-by-one path, bit for bit, on SSE2 and AVX2 lanes, for any
+// thread count and region split; the thesis scenes through the KD tree, and point, spot and
+// directional lights, hard and soft shadows, with and without glass, through both trees. (Models
+// with textures, cut-outs and single-sided surfaces: tests/cli/render_packets.sh.)
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -10,6 +11,7 @@
 #include "packet_lanes.h"
 #include "render/renderer.h"
 #include "render/tracer.h"
+#include "render_test_scenes.h"
 #include "scene/thesis_scenes.h"
 
 using namespace rt;
@@ -34,6 +36,46 @@ RenderSettings picture(bool packets, int threads) {
     return r;
 }
 
+// Every counter of the two renders is the same.
+void expectSameCounters(const RenderCounters& packets, const RenderCounters& single) {
+    const auto expectSame = [](const RayCounters& a, const RayCounters& b, const char* kind) {
+        EXPECT_EQ(a.rays, b.rays) << kind;
+        EXPECT_EQ(a.traversalSteps, b.traversalSteps) << kind;
+        EXPECT_EQ(a.intersectionTests, b.intersectionTests) << kind;
+    };
+    expectSame(packets.camera, single.camera, "camera");
+    expectSame(packets.shadow, single.shadow, "shadow");
+    expectSame(packets.reflection, single.reflection, "reflection");
+}
+
+// Spheres on a floor and a field of small triangles (leaves of triangle blocks) under a point, a
+// spot, a directional light and a point light with a size (soft shadows sample it pixel by
+// pixel); with `glass`, the mirror sphere is glass, whose shadow rays walk through it per pixel.
+Scene shadowedScene(bool glass) {
+    Scene s = test::floorAndLights();
+    s.lights[1].size = 0;
+    s.lights.push_back({.position = {1, 5, -3},
+                        .color = {0.4f, 0.3f, 0.3f},
+                        .type = Light::Type::Spot,
+                        .direction = normalize(Vec3{-0.2, -1, 0.5}),
+                        .outerConeDegrees = 35});
+    s.lights.push_back({.position = {},
+                        .color = {0.2f, 0.2f, 0.25f},
+                        .type = Light::Type::Directional,
+                        .direction = normalize(Vec3{0.3, -1, 0.6})});
+    if (glass) s.materials[2].transmission.weight = 0.8f;
+    s.looseObjects.add<Sphere>({{-1.8, 0.8, 0.5}, 0.8}, 1);
+    s.looseObjects.add<Sphere>({{0.2, 1.1, 1.2}, 1.1}, 2);
+    for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 6; ++j) {
+            const Vec3 c{Real(i) * Real(0.35) - 2, Real(0.3) + Real(j) * Real(0.3),
+                         Real(-1.5) + Real(i % 3) * Real(0.1)};
+            s.looseObjects.add<Triangle>({c, c + Vec3{0.3, 0.05, 0}, c + Vec3{0.1, 0.25, 0.1}}, 3);
+        }
+    s.flatten();
+    return s;
+}
+
 class RenderPackets : public test::PacketLanes {};
 
 }  // namespace
@@ -47,9 +89,33 @@ TEST_P(RenderPackets, ThesisScenesAreTheSameBitsAndCountsAsSingleRays) {
         const Framebuffer reference = render(scene, *accel, picture(false, 1), single);
         const Framebuffer traced = render(scene, *accel, picture(true, 2), packets);
         EXPECT_TRUE(sameBits(traced, reference));
-        EXPECT_EQ(packets.counters.rays(), single.counters.rays());
-        EXPECT_EQ(packets.counters.camera.traversalSteps, single.counters.camera.traversalSteps);
-        EXPECT_EQ(packets.counters.total().intersectionTests, single.counters.total().intersectionTests);
+        expectSameCounters(packets.counters, single.counters);
+    }
+}
+
+// Shadow rays of every kind of light, as packets where the light takes one ray per pixel and the
+// scene has no glass: the same bits and counters, with hard and soft shadows, through both trees.
+TEST_P(RenderPackets, ShadowsOfEveryLightAreTheSameBitsAndCountsAsSingleRays) {
+    for (const bool glass : {false, true}) {
+        const Scene scene = shadowedScene(glass);
+        for (const AccelKind kind : {AccelKind::Kd, AccelKind::Bsp}) {
+            AccelSettings accelSettings;
+            accelSettings.kind = kind;
+            const std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, accelSettings);
+            for (const bool soft : {false, true}) {
+                SCOPED_TRACE(testing::Message()
+                             << "glass " << glass << ", " << accel->stats().name << ", soft " << soft);
+                RenderSettings off = picture(false, 1), on = picture(true, 2);
+                off.softShadows = on.softShadows = soft;
+                off.distributedSamples = on.distributedSamples = 8;
+                RenderStats single, packets;
+                const Framebuffer reference = render(scene, *accel, off, single);
+                const Framebuffer traced = render(scene, *accel, on, packets);
+                EXPECT_TRUE(sameBits(traced, reference));
+                expectSameCounters(packets.counters, single.counters);
+                EXPECT_GT(single.counters.shadow.rays, 0u);
+            }
+        }
     }
 }
 
