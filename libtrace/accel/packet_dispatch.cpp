@@ -1,5 +1,5 @@
 // SplitTree::intersectPacket: the packet traversal (kd_packet.cpp) on the lanes core/simd.h's
-// packetSimd() chooses, AVX2 where the CPU has it, else SSE2. Apart from kd_packet.cpp, which is
+// packetSimd() chooses, the widest the CPU has: AVX-512, AVX2 or SSE2. Apart from kd_packet.cpp, which is
 // compiled once per set of lanes and holds only that set's traversal.
 #include "accel/split_tree.h"
 
@@ -7,6 +7,10 @@ namespace rt {
 
 void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                                 RayCounters& counters) const {
+#if RT_SIMD_AVX512
+    if (packetSimd() == SimdLevel::avx512)
+        return tracePacket<SimdLevel::avx512>(rays, count, tMax, hits, found, counters);
+#endif
 #if RT_SIMD_AVX2
     if (packetSimd() == SimdLevel::avx2) return tracePacket<SimdLevel::avx2>(rays, count, tMax, hits, found, counters);
 #endif
