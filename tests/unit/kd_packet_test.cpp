@@ -1,8 +1,8 @@
 // Packet traversal (accel/kd_packet.cpp): every ray of a packet gets, bit for bit, the hit the
 // single-ray traversal gives it (the same primitive, t, u and v), which agrees with the naive
 // list; on camera rays of the thesis scenes, random triangles and the hard cases, in both
-// precisions (the float build runs the same tests), on the SSE2 lanes and on the AVX2 lanes
-// (core/simd.h; skipped where the CPU has no AVX2).
+// precisions (the float build runs the same tests), on the SSE2, AVX2 and AVX-512 lanes
+// (core/simd.h; skipped where the CPU lacks the level).
 #include <cstring>
 #include <memory>
 #include <sstream>
