@@ -1,6 +1,6 @@
 // SplitTree::intersectPacket: the packet traversal (kd_packet.cpp) on the lanes core/simd.h's
-// packetSimd() chooses, the widest the CPU has: AVX-512, AVX2 or SSE2. Apart from kd_packet.cpp, which is
-// compiled once per set of lanes and holds only that set's traversal.
+// packetSimd() chooses, by default the widest the CPU has: AVX-512, AVX2 or SSE2. Apart from
+// kd_packet.cpp, which is compiled once per set of lanes and holds only that set's traversal.
 #include "accel/split_tree.h"
 
 namespace rt {

@@ -38,11 +38,12 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define RT_SIMD_AVX2 1
-// The functions defined between these two are compiled for AVX2 (and not FMA), whatever the
-// file's flags; headers included outside them keep the file's flags, so no inline function that
-// other files share is ever built for AVX2 (the avx2_isolation test checks the object's code).
-// RT_AVX512_BEGIN/END the same for AVX-512: F (ZMM registers, k masks), DQ (the bitwise
-// operations on doubles and the moves between k masks and lanes), VL (EVEX on YMM registers).
+// The functions defined between RT_AVX2_BEGIN and RT_AVX2_END are compiled for AVX2 (and not
+// FMA), whatever the file's flags; headers included outside them keep the file's flags, so no
+// inline function that other files share is ever built for AVX2 (the avx2_isolation and
+// avx512_isolation tests check the objects' code). RT_AVX512_BEGIN/END the same for AVX-512: F
+// (ZMM registers, k masks), DQ (the bitwise operations on doubles and the moves between k masks
+// and lanes), VL (EVEX on YMM registers, and registers 16-31 for the float build's YMM lanes).
 #if defined(__clang__)
 #define RT_SIMD_TARGET_BEGIN(isa) \
     _Pragma(RT_SIMD_STRING(clang attribute push(__attribute__((target(isa))), apply_to = function)))
