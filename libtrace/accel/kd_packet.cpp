@@ -27,11 +27,12 @@
 // reciprocal overflows (their plane distances can be NaN, and the single traversal then orders
 // the children by the origin), and a tree with a hit filter are traced one by one.
 //
-// Compiled twice (libtrace/CMakeLists.txt): as it is, on SSE2 lanes (core/simd.h, simd_base),
-// and with RT_PACKET_AVX2 defined, on AVX2 lanes: the same code in namespace simd_avx2, its
-// functions compiled for AVX2. SplitTree::intersectPacket and occludedPacket
-// (packet_dispatch.cpp) choose one at run time. The headers are included before the AVX2 region,
-// so the inline functions they define, which other files share, keep the baseline instructions.
+// Compiled three times (libtrace/CMakeLists.txt): as it is, on SSE2 lanes (core/simd.h,
+// simd_base); with RT_PACKET_AVX2 defined, on AVX2 lanes: the same code in namespace simd_avx2,
+// its functions compiled for AVX2; with RT_PACKET_AVX512, the same on AVX-512 lanes in
+// simd_avx512. SplitTree::intersectPacket and occludedPacket (packet_dispatch.cpp) choose one at
+// run time. The headers are included before the AVX2 or AVX-512 region, so the inline functions
+// they define, which other files share, keep the baseline instructions.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -46,6 +47,14 @@
 #define RT_PACKET_LEVEL SimdLevel::avx2
 #define RT_PACKET_NAMESPACE simd_avx2
 RT_AVX2_BEGIN
+#elif RT_PACKET_AVX512
+#if !RT_SIMD_AVX512
+#error "RT_PACKET_AVX512 needs core/simd.h's AVX-512 lanes (x86-64, GCC or clang)"
+#endif
+#define RT_PACKET_LANES simd_avx512
+#define RT_PACKET_LEVEL SimdLevel::avx512
+#define RT_PACKET_NAMESPACE simd_avx512
+RT_AVX512_BEGIN
 #else
 #define RT_PACKET_LANES simd_base
 #define RT_PACKET_LEVEL SimdLevel::sse2
@@ -57,7 +66,8 @@ namespace rt::RT_PACKET_NAMESPACE {
 namespace {
 
 // The packet in groups of one register's lanes (core/simd.h): SSE2 takes four groups of two
-// doubles or two of four floats, AVX2 two of four doubles or one of eight floats.
+// doubles or two of four floats, AVX2 two of four doubles or one of eight floats, AVX-512 one of
+// eight doubles or eight floats.
 constexpr int kGroups = kPacketSize / kLanes;
 static_assert(kGroups * kLanes == kPacketSize);
 
@@ -459,4 +469,6 @@ template void SplitTree::traceShadowPacket<RT_PACKET_LEVEL>(const Ray* rays, int
 
 #if RT_PACKET_AVX2
 RT_AVX2_END
+#elif RT_PACKET_AVX512
+RT_AVX512_END
 #endif

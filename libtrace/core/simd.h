@@ -11,12 +11,21 @@
 // traversal only. Its functions are compiled for AVX2 whatever the flags of the file
 // (RT_AVX2_BEGIN/END), so the default build still runs on any x86-64; code may call them only
 // where packetSimd() says the CPU has AVX2 (accel/kd_packet.cpp is compiled a second time into
-// that namespace, and SplitTree::intersectPacket chooses at run time). RT_SIMD=sse2 in the
-// environment, or setPacketSimd, keeps the packets on SSE2 on any CPU (the tests run both).
+// that namespace, and SplitTree::intersectPacket chooses at run time).
 //
-// Each lane of either set rounds exactly as the scalar code does (IEEE add, sub, mul, div; no
-// fused multiply-add: the AVX2 functions are compiled without FMA), so a lane's answer has the
-// scalar test's bits: the trees, their packets and the naive list agree to the last bit.
+// simd_avx512::RealLanes: the same for AVX-512 (F, DQ, VL; RT_AVX512_BEGIN/END), kd_packet.cpp's
+// third copy. With doubles one ZMM register holds the whole packet of eight rays, so each step
+// is one instruction where AVX2 needs two. With floats AVX2's one YMM register already holds the
+// eight, and a ZMM register would hold sixteen lanes, half of them always empty: the level keeps
+// AVX2's eight-float lanes, compiled for AVX-512VL, which gives the traversal 32 vector registers
+// instead of 16. RT_SIMD=sse2|avx2|avx512 in the environment, or setPacketSimd, picks a level the
+// CPU has (the tests run each).
+//
+// Each lane of every set rounds exactly as the scalar code does (IEEE add, sub, mul, div; no
+// fused multiply-add: the AVX2 functions are compiled without FMA, and as AVX-512F has fused
+// instructions of its own, code on the AVX-512 lanes is compiled with -ffp-contract=off, see
+// libtrace/CMakeLists.txt), so a lane's answer has the scalar test's bits: the trees, their
+// packets and the naive list agree to the last bit.
 #pragma once
 
 #include "core/real.h"
@@ -29,16 +38,26 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define RT_SIMD_AVX2 1
-// The functions defined between these two are compiled for AVX2 (and not FMA), whatever the
-// file's flags; headers included outside them keep the file's flags, so no inline function that
-// other files share is ever built for AVX2 (the avx2_isolation test checks the object's code).
+// The functions defined between RT_AVX2_BEGIN and RT_AVX2_END are compiled for AVX2 (and not
+// FMA), whatever the file's flags; headers included outside them keep the file's flags, so no
+// inline function that other files share is ever built for AVX2 (the avx2_isolation and
+// avx512_isolation tests check the objects' code). RT_AVX512_BEGIN/END the same for AVX-512: F
+// (ZMM registers, k masks), DQ (the bitwise operations on doubles and the moves between k masks
+// and lanes), VL (EVEX on YMM registers, and registers 16-31 for the float build's YMM lanes).
 #if defined(__clang__)
-#define RT_AVX2_BEGIN _Pragma("clang attribute push(__attribute__((target(\"avx2\"))), apply_to = function)")
-#define RT_AVX2_END _Pragma("clang attribute pop")
+#define RT_SIMD_TARGET_BEGIN(isa) \
+    _Pragma(RT_SIMD_STRING(clang attribute push(__attribute__((target(isa))), apply_to = function)))
+#define RT_SIMD_TARGET_END _Pragma("clang attribute pop")
 #else
-#define RT_AVX2_BEGIN _Pragma("GCC push_options") _Pragma("GCC target(\"avx2\")")
-#define RT_AVX2_END _Pragma("GCC pop_options")
+#define RT_SIMD_TARGET_BEGIN(isa) _Pragma("GCC push_options") _Pragma(RT_SIMD_STRING(GCC target(isa)))
+#define RT_SIMD_TARGET_END _Pragma("GCC pop_options")
 #endif
+#define RT_SIMD_STRING(...) #__VA_ARGS__
+#define RT_AVX2_BEGIN RT_SIMD_TARGET_BEGIN("avx2")
+#define RT_AVX2_END RT_SIMD_TARGET_END
+#define RT_SIMD_AVX512 1
+#define RT_AVX512_BEGIN RT_SIMD_TARGET_BEGIN("avx512f,avx512dq,avx512vl")
+#define RT_AVX512_END RT_SIMD_TARGET_END
 #endif
 
 namespace rt {
@@ -173,16 +192,42 @@ inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
 
 }  // namespace simd_base
 
-// Which lanes the packet traversal uses. Chosen once, at the first call: AVX2 where the CPU has
-// it, unless the environment says RT_SIMD=sse2; setPacketSimd changes it (tests).
-enum class SimdLevel { sse2, avx2 };  // sse2: simd_base (plain C++ off x86-64)
-bool cpuHasAvx2();
+// Which lanes the packet traversal uses. Chosen once, at the first call: the widest the CPU has,
+// AVX-512 then AVX2, unless the environment names another the CPU has (RT_SIMD=sse2|avx2|avx512);
+// setPacketSimd changes it (tests).
+enum class SimdLevel { sse2, avx2, avx512 };  // sse2: simd_base (plain C++ off x86-64)
+inline constexpr SimdLevel kSimdLevels[] = {SimdLevel::sse2, SimdLevel::avx2, SimdLevel::avx512};
+bool cpuHas(SimdLevel level);
 SimdLevel packetSimd();
 // False, changing nothing, where the CPU cannot run `level`.
 bool setPacketSimd(SimdLevel level);
 const char* simdLevelName(SimdLevel level);
 
 #if RT_SIMD_AVX2
+
+// The operations that are one intrinsic each, named OP(add) and so on for the level's register
+// (_mm256_add_pd, _mm512_add_pd, ...): the AVX2 and the AVX-512 lanes define them alike.
+#define RT_SIMD_ONE_INTRINSIC_OPERATIONS(OP)                                             \
+    inline RealLanes loadLanes(const Real* p) { return {OP(loadu)(p)}; }                 \
+    inline RealLanes broadcast(Real x) { return {OP(set1)(x)}; }                         \
+    inline void storeLanes(Real* p, RealLanes a) { OP(storeu)(p, a.v); }                 \
+    inline RealLanes operator+(RealLanes a, RealLanes b) { return {OP(add)(a.v, b.v)}; } \
+    inline RealLanes operator-(RealLanes a, RealLanes b) { return {OP(sub)(a.v, b.v)}; } \
+    inline RealLanes operator*(RealLanes a, RealLanes b) { return {OP(mul)(a.v, b.v)}; } \
+    inline RealLanes operator/(RealLanes a, RealLanes b) { return {OP(div)(a.v, b.v)}; } \
+    inline RealLanes operator&(RealLanes a, RealLanes b) { return {OP(and)(a.v, b.v)}; } \
+    inline RealLanes operator|(RealLanes a, RealLanes b) { return {OP(or)(a.v, b.v)}; }  \
+    inline RealLanes andNot(RealLanes a, RealLanes b) { return {OP(andnot)(a.v, b.v)}; } /* ~a & b */
+
+// The SSE2 comparisons' answers, NaN included: ordered where SSE2's are (false on NaN),
+// unordered where they are negated (true on NaN); quiet, as no flag is read. COMPARE(a, b,
+// predicate) gives the level's mask.
+#define RT_SIMD_COMPARISONS(COMPARE)                                                                     \
+    inline RealLanes lessThan(RealLanes a, RealLanes b) { return COMPARE(a.v, b.v, _CMP_LT_OQ); }        \
+    inline RealLanes lessEqual(RealLanes a, RealLanes b) { return COMPARE(a.v, b.v, _CMP_LE_OQ); }       \
+    inline RealLanes notLessThan(RealLanes a, RealLanes b) { return COMPARE(a.v, b.v, _CMP_NLT_UQ); }    \
+    inline RealLanes notGreaterThan(RealLanes a, RealLanes b) { return COMPARE(a.v, b.v, _CMP_NGT_UQ); } \
+    inline RealLanes notEqual(RealLanes a, RealLanes b) { return COMPARE(a.v, b.v, _CMP_NEQ_UQ); }
 
 namespace simd_avx2 {
 
@@ -201,32 +246,67 @@ struct RealLanes {
 };
 #define RT_AVX2_OP(name) _mm256_##name##_pd
 #endif
+#define RT_AVX2_COMPARE(a, b, predicate) \
+    RealLanes { RT_AVX2_OP(cmp)(a, b, predicate) }
 
-inline RealLanes loadLanes(const Real* p) { return {RT_AVX2_OP(loadu)(p)}; }
-inline RealLanes broadcast(Real x) { return {RT_AVX2_OP(set1)(x)}; }
-inline void storeLanes(Real* p, RealLanes a) { RT_AVX2_OP(storeu)(p, a.v); }
-inline RealLanes operator+(RealLanes a, RealLanes b) { return {RT_AVX2_OP(add)(a.v, b.v)}; }
-inline RealLanes operator-(RealLanes a, RealLanes b) { return {RT_AVX2_OP(sub)(a.v, b.v)}; }
-inline RealLanes operator*(RealLanes a, RealLanes b) { return {RT_AVX2_OP(mul)(a.v, b.v)}; }
-inline RealLanes operator/(RealLanes a, RealLanes b) { return {RT_AVX2_OP(div)(a.v, b.v)}; }
-inline RealLanes operator&(RealLanes a, RealLanes b) { return {RT_AVX2_OP(and)(a.v, b.v)}; }
-inline RealLanes operator|(RealLanes a, RealLanes b) { return {RT_AVX2_OP(or)(a.v, b.v)}; }
-inline RealLanes andNot(RealLanes a, RealLanes b) { return {RT_AVX2_OP(andnot)(a.v, b.v)}; }  // ~a & b
-// The SSE2 comparisons' answers, NaN included: ordered where SSE2's are (false on NaN),
-// unordered where they are negated (true on NaN); quiet, as no flag is read.
-inline RealLanes lessThan(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_LT_OQ)}; }
-inline RealLanes lessEqual(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_LE_OQ)}; }
-inline RealLanes notLessThan(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_NLT_UQ)}; }
-inline RealLanes notGreaterThan(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_NGT_UQ)}; }
-inline RealLanes notEqual(RealLanes a, RealLanes b) { return {RT_AVX2_OP(cmp)(a.v, b.v, _CMP_NEQ_UQ)}; }
+RT_SIMD_ONE_INTRINSIC_OPERATIONS(RT_AVX2_OP)
+RT_SIMD_COMPARISONS(RT_AVX2_COMPARE)
 inline unsigned laneBits(RealLanes mask) { return unsigned(RT_AVX2_OP(movemask)(mask.v)); }
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) { return {RT_AVX2_OP(blendv)(b.v, a.v, mask.v)}; }
 
+#undef RT_AVX2_COMPARE
 #undef RT_AVX2_OP
 
 RT_AVX2_END
 
 }  // namespace simd_avx2
+
+namespace simd_avx512 {
+
+RT_AVX512_BEGIN
+
+#if defined(RT_REAL_FLOAT)
+
+// Eight floats: AVX2's lanes (see the top), in functions compiled for AVX-512, which inline them.
+using simd_avx2::kLanes;
+using simd_avx2::loadLanes, simd_avx2::broadcast, simd_avx2::storeLanes, simd_avx2::andNot, simd_avx2::lessThan,
+    simd_avx2::lessEqual, simd_avx2::notLessThan, simd_avx2::notGreaterThan, simd_avx2::notEqual, simd_avx2::laneBits,
+    simd_avx2::select;
+using simd_avx2::RealLanes;
+
+#else
+
+// Eight doubles. A mask stays a register of all-ones lanes, as on SSE2 and AVX2, so that the
+// traversal combines masks with the same &, | and andNot on every level: a comparison's k mask
+// becomes lanes (AVX512DQ's vpmovm2q), and laneBits and select read the k mask back (vpmovq2m),
+// one instruction each way.
+inline constexpr int kLanes = 8;
+struct RealLanes {
+    __m512d v;
+};
+#define RT_AVX512_OP(name) _mm512_##name##_pd
+#define RT_AVX512_COMPARE(a, b, predicate) \
+    RealLanes { _mm512_castsi512_pd(_mm512_movm_epi64(_mm512_cmp_pd_mask(a, b, predicate))) }
+
+RT_SIMD_ONE_INTRINSIC_OPERATIONS(RT_AVX512_OP)
+RT_SIMD_COMPARISONS(RT_AVX512_COMPARE)
+inline __mmask8 kMask(RealLanes mask) { return _mm512_movepi64_mask(_mm512_castpd_si512(mask.v)); }
+inline unsigned laneBits(RealLanes mask) { return kMask(mask); }
+inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
+    return {_mm512_mask_blend_pd(kMask(mask), b.v, a.v)};
+}
+
+#undef RT_AVX512_COMPARE
+#undef RT_AVX512_OP
+
+#endif
+
+RT_AVX512_END
+
+}  // namespace simd_avx512
+
+#undef RT_SIMD_COMPARISONS
+#undef RT_SIMD_ONE_INTRINSIC_OPERATIONS
 
 #endif
 

@@ -1,6 +1,7 @@
 # --packets on (camera rays eight at a time) gives the bits of --packets off on real models:
 # textures with ray differentials (jeep1), cut-outs and single-sided surfaces under a hit
-# filter (AlphaBlendModeTest), on SSE2 and AVX2 lanes (RT_SIMD) and on one or two threads.
+# filter (AlphaBlendModeTest), on SSE2, AVX2 and AVX-512 lanes (RT_SIMD; a level the CPU lacks
+# runs the default) and on one or two threads.
 source "$(dirname "$0")/common.bash"
 need_shared_models
 models=("$RT_SHARED_DIR/models/3ds/jeep1/jeep1.3ds" "$RT_SHARED_DIR/models/glb/AlphaBlendModeTest/AlphaBlendModeTest.glb")
@@ -8,7 +9,7 @@ opts=(-q -x 90 -y 70 -s --tx-cache off --progress none)
 for model in "${models[@]}"; do
     name=$(basename "$model")
     RT_SIMD=sse2 "$RT_RENDER" "$model" "${opts[@]}" --packets off --threads 1 -f "$WORK/off.png" --stats-json "$WORK/off.json"
-    for simd in sse2 avx2; do
+    for simd in sse2 avx2 avx512; do
         for threads in 1 2; do
             RT_SIMD=$simd "$RT_RENDER" "$model" "${opts[@]}" --packets on --threads $threads -f "$WORK/on.png" \
                 --stats-json "$WORK/on.json"

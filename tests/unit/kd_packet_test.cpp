@@ -3,8 +3,8 @@
 // list; and as a shadow ray (occludedPacket), each ending at its own distance, the answer and
 // the counted work occluded() gives it. On camera and shadow rays of the thesis scenes, random
 // triangles and the hard cases, through KD and BSP trees, in both precisions (the float build
-// runs the same tests), on the SSE2 lanes and on the AVX2 lanes (core/simd.h; skipped where the
-// CPU has no AVX2).
+// runs the same tests), on the SSE2, AVX2 and AVX-512 lanes (core/simd.h; skipped where the CPU
+// lacks the level).
 #include <cmath>
 #include <cstring>
 #include <memory>

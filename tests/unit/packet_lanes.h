@@ -1,5 +1,5 @@
 // A fixture running each test once per set of lanes the packet traversal can use (core/simd.h):
-// SSE2, and AVX2 where the CPU has it (skipped, with a message, where not).
+// SSE2, and AVX2 and AVX-512 where the CPU has them (skipped, with a message, where not).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -19,10 +19,10 @@ private:
     SimdLevel before_ = packetSimd();
 };
 
-// INSTANTIATE_PACKET_LANES(Suite): Suite's tests on both sets of lanes, named sse2 and avx2.
-#define INSTANTIATE_PACKET_LANES(Suite)                                                \
-    INSTANTIATE_TEST_SUITE_P(                                                          \
-        Lanes, Suite, ::testing::Values(::rt::SimdLevel::sse2, ::rt::SimdLevel::avx2), \
+// INSTANTIATE_PACKET_LANES(Suite): Suite's tests on every set of lanes, named sse2, avx2, avx512.
+#define INSTANTIATE_PACKET_LANES(Suite)                       \
+    INSTANTIATE_TEST_SUITE_P(                                 \
+        Lanes, Suite, ::testing::ValuesIn(::rt::kSimdLevels), \
         [](const ::testing::TestParamInfo<::rt::SimdLevel>& level) { return ::rt::simdLevelName(level.param); })
 
 }  // namespace rt::test

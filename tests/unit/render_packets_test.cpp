@@ -1,8 +1,8 @@
 // rt-render's camera rays and their shadow rays as packets (Tracer::pixelRun, --packets) give the
-// picture and the counters of the one-by-one path, bit for bit, on SSE2 and AVX2 lanes, for any
-// thread count and region split; the thesis scenes through the KD tree, and point, spot and
-// directional lights, hard and soft shadows, with and without glass, through both trees. (Models
-// with textures, cut-outs and single-sided surfaces: tests/cli/render_packets.sh.)
+// picture and the counters of the one-by-one path, bit for bit, on SSE2, AVX2 and AVX-512 lanes,
+// for any thread count and region split; the thesis scenes through the KD tree, and point, spot
+// and directional lights, hard and soft shadows, with and without glass, through both trees.
+// (Models with textures, cut-outs and single-sided surfaces: tests/cli/render_packets.sh.)
 #include <gtest/gtest.h>
 
 #include <cstring>

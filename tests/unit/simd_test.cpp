@@ -1,5 +1,5 @@
-// core/simd.h: the AVX2 lanes of the packet traversal give, lane by lane, the scalar operations'
-// bits (arithmetic) and answers (comparisons, NaN and infinities included), as the SSE2 lanes do;
+// core/simd.h: the AVX2 and AVX-512 lanes of the packet traversal give, lane by lane, the scalar
+// operations' bits (arithmetic) and answers (comparisons, NaN and infinities included), as the SSE2 lanes do;
 // and the choice of lanes follows the CPU.
 #include "core/simd.h"
 
@@ -16,25 +16,34 @@ namespace {
 
 // Operations on lanes a and b, one output row each: + - * / < <= !< !> != and select(a < b, a, b).
 constexpr int kOps = 10;
+constexpr int kMaxLanes = 8;
+using LaneOps = void (*)(const Real* a, const Real* b, Real (*out)[kMaxLanes]);
+
+// LANES##Ops: the operations on namespace LANES's lanes, defined between its level's BEGIN and END.
+#define RT_LANE_OPS(LANES)                                                         \
+    void LANES##Ops(const Real* a, const Real* b, Real(*out)[kMaxLanes]) {         \
+        using LANES::RealLanes;                                                    \
+        const RealLanes x = LANES::loadLanes(a), y = LANES::loadLanes(b);          \
+        const RealLanes results[kOps] = {x + y,                                    \
+                                         x - y,                                    \
+                                         x * y,                                    \
+                                         x / y,                                    \
+                                         lessThan(x, y),                           \
+                                         lessEqual(x, y),                          \
+                                         notLessThan(x, y),                        \
+                                         notGreaterThan(x, y),                     \
+                                         notEqual(x, y),                           \
+                                         select(lessThan(x, y), x, y)};            \
+        for (int op = 0; op < kOps; ++op) LANES::storeLanes(out[op], results[op]); \
+    }
 
 #if RT_SIMD_AVX2
 RT_AVX2_BEGIN
-void avx2Ops(const Real* a, const Real* b, Real (*out)[simd_avx2::kLanes]) {
-    using simd_avx2::RealLanes;
-    const RealLanes x = simd_avx2::loadLanes(a), y = simd_avx2::loadLanes(b);
-    const RealLanes results[kOps] = {x + y,
-                                     x - y,
-                                     x * y,
-                                     x / y,
-                                     lessThan(x, y),
-                                     lessEqual(x, y),
-                                     notLessThan(x, y),
-                                     notGreaterThan(x, y),
-                                     notEqual(x, y),
-                                     select(lessThan(x, y), x, y)};
-    for (int op = 0; op < kOps; ++op) simd_avx2::storeLanes(out[op], results[op]);
-}
+RT_LANE_OPS(simd_avx2)
 RT_AVX2_END
+RT_AVX512_BEGIN
+RT_LANE_OPS(simd_avx512)
+RT_AVX512_END
 #endif
 
 // What a lane of each operation must hold: the scalar result, or for a comparison a mask lane
@@ -68,12 +77,11 @@ bool laneAgrees(int op, Real a, Real b, Real lane) {
     }
 }
 
-}  // namespace
-
-TEST(Simd, Avx2LanesHaveTheScalarOperationsBits) {
-#if RT_SIMD_AVX2
-    if (!cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2";
+// The lanes of `ops` that differ from the scalar operations, on every pair of special and
+// ordinary values: zeros of both signs, infinities, NaN, subnormals, the largest finite value.
+int differingLanes(LaneOps ops, int lanes) {
     const Real inf = std::numeric_limits<Real>::infinity(), nan = std::numeric_limits<Real>::quiet_NaN();
+    const Real tiny = std::numeric_limits<Real>::denorm_min(), smallest = std::numeric_limits<Real>::min();
     const std::vector<Real> values = {0,
                                       Real(-0.0),
                                       1,
@@ -84,32 +92,55 @@ TEST(Simd, Avx2LanesHaveTheScalarOperationsBits) {
                                       inf,
                                       -inf,
                                       nan,
-                                      std::numeric_limits<Real>::denorm_min(),
+                                      tiny,
+                                      -tiny,
+                                      smallest / 3,
+                                      smallest,
                                       std::numeric_limits<Real>::max()};
-    // Every pair of values, lane by lane, kLanes pairs at a time.
+    // Every pair of values, lane by lane, `lanes` pairs at a time.
     std::vector<Real> as, bs;
     for (Real a : values)
         for (Real b : values) as.push_back(a), bs.push_back(b);
-    while (as.size() % simd_avx2::kLanes != 0) as.push_back(1), bs.push_back(2);
+    while (as.size() % lanes != 0) as.push_back(1), bs.push_back(2);
     int differing = 0;
-    for (std::size_t first = 0; first < as.size(); first += simd_avx2::kLanes) {
-        Real out[kOps][simd_avx2::kLanes];
-        avx2Ops(&as[first], &bs[first], out);
+    for (std::size_t first = 0; first < as.size(); first += lanes) {
+        Real out[kOps][kMaxLanes];
+        ops(&as[first], &bs[first], out);
         for (int op = 0; op < kOps; ++op)
-            for (int lane = 0; lane < simd_avx2::kLanes; ++lane)
+            for (int lane = 0; lane < lanes; ++lane)
                 differing += !laneAgrees(op, as[first + lane], bs[first + lane], out[op][lane]);
     }
-    EXPECT_EQ(differing, 0);
+    return differing;
+}
+
+}  // namespace
+
+TEST(Simd, Avx2LanesHaveTheScalarOperationsBits) {
+#if RT_SIMD_AVX2
+    if (!cpuHas(SimdLevel::avx2)) GTEST_SKIP() << "this CPU has no AVX2";
+    EXPECT_EQ(differingLanes(simd_avx2Ops, simd_avx2::kLanes), 0);
 #else
     GTEST_SKIP() << "no AVX2 lanes on this platform";
 #endif
 }
 
+TEST(Simd, Avx512LanesHaveTheScalarOperationsBits) {
+#if RT_SIMD_AVX512
+    if (!cpuHas(SimdLevel::avx512)) GTEST_SKIP() << "this CPU has no AVX-512 (F, DQ and VL)";
+    EXPECT_EQ(differingLanes(simd_avx512Ops, simd_avx512::kLanes), 0);
+#else
+    GTEST_SKIP() << "no AVX-512 lanes on this platform";
+#endif
+}
+
+// Each level can be chosen exactly where the CPU has it; SSE2 always.
 TEST(Simd, PacketLanesFollowTheCpu) {
     const SimdLevel before = packetSimd();
-    EXPECT_TRUE(setPacketSimd(SimdLevel::sse2));
-    EXPECT_EQ(packetSimd(), SimdLevel::sse2);
-    EXPECT_EQ(setPacketSimd(SimdLevel::avx2), cpuHasAvx2());  // refused where the CPU lacks it
-    EXPECT_EQ(packetSimd(), cpuHasAvx2() ? SimdLevel::avx2 : SimdLevel::sse2);
+    EXPECT_TRUE(cpuHas(SimdLevel::sse2));
+    for (SimdLevel level : kSimdLevels) {
+        EXPECT_TRUE(setPacketSimd(SimdLevel::sse2));
+        EXPECT_EQ(setPacketSimd(level), cpuHas(level)) << simdLevelName(level);  // refused where the CPU lacks it
+        EXPECT_EQ(packetSimd(), cpuHas(level) ? level : SimdLevel::sse2) << simdLevelName(level);
+    }
     setPacketSimd(before);
 }
