@@ -23,6 +23,9 @@
 // which one of its triangles lies in (0, tMax), or the first other primitive that does, and its
 // tLimit drops to -infinity, so no node left on the stack is open to it any more. Until then it
 // counts, node by node and block by block, what the single ray counts.
+// A ray left alone in a node, the others having gone elsewhere or ended, goes on from there with
+// the single traversal (SplitTree::searchNearest and searchBlocker, the same code the single
+// queries run): the same nodes, tests and counts, without the packet's work for its idle lanes.
 // Rays that do not share an octant, have a direction component that is zero or whose
 // reciprocal overflows (their plane distances can be NaN, and the single traversal then orders
 // the children by the origin), and a tree with a hit filter are traced one by one.
@@ -277,13 +280,26 @@ Lanes stillOpen(const Span& span, const Lanes& tLimit) {
     return open;
 }
 
+// Lane `ray` of `lanes`.
+Real laneOf(const Lanes& lanes, int ray) {
+    alignas(64) Real values[kPacketSize];
+    store(lanes, values);
+    return values[ray];
+}
+
 // The packet's walk through the tree's `nodes`, both queries': front to back, each ray visiting
 // the nodes its single traversal visits, in its order. visitLeaf(unit, inLeaf, active) is called
 // at each non-empty leaf with its primitiveOffset() and the rays in it (lanes and bits); it may
 // lower `tLimit`, per ray the distance from which on nothing is sought: the nearest hit so far,
 // or -infinity for a shadow ray found blocked. Returns the nodes visited, once per ray.
-template <typename VisitLeaf>
-std::uint64_t walk(const SplitNode* nodes, const Packet& packet, const Lanes& tLimit, const VisitLeaf& visitLeaf) {
+// A ray left alone in a node is handed on: searchAlone(ray, node, tMin, tMax) searches the node's
+// subtree with the single traversal (SplitTree::searchNearest or searchBlocker), which visits and
+// counts there what the packet would, at a fraction of a packet's work per node and triangle
+// (the rays of a packet part after a few levels in scenes of many small triangles), and lowers the
+// ray's tLimit as a leaf would.
+template <typename VisitLeaf, typename SearchAlone>
+std::uint64_t walk(const SplitNode* nodes, const Packet& packet, const Lanes& tLimit, const VisitLeaf& visitLeaf,
+                   const SearchAlone& searchAlone) {
     struct Pending {
         std::uint32_t node;
         Span span;
@@ -296,7 +312,7 @@ std::uint64_t walk(const SplitNode* nodes, const Packet& packet, const Lanes& tL
     LaneBits active = bitsOf(span.active);
     while (active != 0) {
         SplitNode node = nodes[index];
-        while (!node.isLeaf()) {
+        while (!node.isLeaf() && !std::has_single_bit(active)) {
             steps += std::uint64_t(std::popcount(active));
             const int axis = node.axis();
             const bool belowIsNear = packet.belowIsNear[axis];
@@ -318,8 +334,13 @@ std::uint64_t walk(const SplitNode* nodes, const Packet& packet, const Lanes& tL
             }
             node = nodes[index];
         }
-        steps += std::uint64_t(std::popcount(active));
-        if (node.primitiveCount() != 0) visitLeaf(node.primitiveOffset(), span.active, active);
+        if (std::has_single_bit(active)) {
+            const int ray = std::countr_zero(active);
+            searchAlone(ray, index, laneOf(span.tMin, ray), laneOf(span.tMax, ray));
+        } else {
+            steps += std::uint64_t(std::popcount(active));
+            if (node.primitiveCount() != 0) visitLeaf(node.primitiveOffset(), span.active, active);
+        }
         // The next node with a ray for which something may still lie in it.
         active = 0;
         while (active == 0 && size > 0) {
@@ -415,14 +436,30 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
     nearest.t = packet.tMax;
     std::uint64_t tests = 0;
     const PrimitiveView prims = view_;
-    counters.traversalSteps +=
-        walk(nodes_.data(), packet, nearest.t, [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
+    counters.traversalSteps += walk(
+        nodes_.data(), packet, nearest.t,
+        [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
             const LeafPrimitives& leaf = leafAt(unit);
             tests += std::uint64_t(std::popcount(active)) * (leaf.triangles + leaf.others);
             // As SplitTree::intersect: the triangles in leaf order, then the other primitives.
             for (std::uint32_t k = 0; k < leaf.triangles; ++k)
                 nearestTriangle(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
             if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
+        },
+        [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
+            alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
+            store(nearest.t, t);
+            store(nearest.u, u);
+            store(nearest.v, v);
+            Hit hit{t[ray], nearest.prim[ray], u[ray], v[ray]};
+            searchNearest(rays[ray], node, tMin, tEnd, hit, counters);
+            t[ray] = hit.t;
+            u[ray] = hit.u;
+            v[ray] = hit.v;
+            nearest.prim[ray] = hit.prim;
+            nearest.t = load(t);
+            nearest.u = load(u);
+            nearest.v = load(v);
         });
     counters.intersectionTests += tests;
     alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
@@ -449,12 +486,18 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
     LaneBits found = 0;
     std::uint64_t tests = 0;
     const PrimitiveView prims = view_;
-    counters.traversalSteps +=
-        walk(nodes_.data(), packet, tLimit, [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
+    counters.traversalSteps += walk(
+        nodes_.data(), packet, tLimit,
+        [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
             const LaneBits now =
                 blockedInLeaf(prims, leafAt(unit), rays, tMax, packet.rays, inLeaf, active, tLimit, tests);
             found |= now;
             if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
+        },
+        [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
+            if (!searchBlocker(rays[ray], node, tMin, tEnd, tMax[ray], counters)) return;
+            found |= 1u << ray;
+            closeRays(1u << ray, tLimit);
         });
     counters.intersectionTests += tests;
     for (int i = 0; i < count; ++i) blocked[i] = (found >> i) & 1u;

@@ -105,14 +105,13 @@ void SplitTree::layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes
 // half the speed, each node's load then waiting for the last one's arithmetic instead of being
 // issued on a prediction (docs/benchmarks.md, branch `descent`). What it adds is prefetching: a
 // pushed far child's node, and at a leaf the next leaf on the stack, are fetched ahead of use.
+// It starts at `index` with the part [tMin, tMax] of the ray inside that node, and ends when the
+// subtree is searched: from the root for a whole ray, from a deeper node for a ray that a packet
+// hands on alone (kd_packet.cpp), which then visits what its own traversal would have visited there.
 template <typename LeafVisitor>
-void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCounters& counters,
-                         const LeafVisitor& visitLeaf) const {
-    Real tMin = 0;
-    if (nodes_.empty() || bounds_.empty()) return;
+void SplitTree::traverse(const Ray& ray, std::uint32_t index, Real tMin, Real tMax, const Real& tLimit,
+                         RayCounters& counters, const LeafVisitor& visitLeaf) const {
     const Vec3 invDir = reciprocal(ray.direction);
-    if (!clipRay(bounds_, ray, invDir, tMin, tMax)) return;
-
     // Indexed by the split axis in the loop: arrays, not Vec3's branching operator[].
     const Real origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     const Real direction[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
@@ -123,7 +122,6 @@ void SplitTree::traverse(const Ray& ray, Real tMax, const Real& tLimit, RayCount
     };
     Pending stack[kMaxTreeDepth];
     int size = 0;
-    std::uint32_t index = 0;
     std::uint64_t steps = 0;            // in a register; added to the caller's counters once
     const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     for (;;) {
@@ -188,16 +186,32 @@ void SplitTree::prefetchLeafOf(std::uint32_t index) const {
     __builtin_prefetch(at + kLeafPrefetchBytes - 1);  // the last cache line, when the leaf starts inside one
 }
 
-// Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
-// triangles, each only if nearer than the nearest so far (a lane before it may have come nearer)
-// and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
+// The part [tMin, tMax] of the ray inside the root voxel; false if it misses the voxel.
+bool SplitTree::enters(const Ray& ray, Real& tMin, Real& tMax) const {
+    tMin = 0;
+    return !nodes_.empty() && !bounds_.empty() && clipRay(bounds_, ray, reciprocal(ray.direction), tMin, tMax);
+}
+
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;
+    Real tMin = 0, tEnd = tMax;
+    if (enters(ray, tMin, tEnd)) searchNearest(ray, 0, tMin, tEnd, nearest, counters);
+    // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
+    if (!(nearest.t < tMax)) return false;
+    hit = nearest;
+    return true;
+}
+
+// Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
+// triangles, each only if nearer than the nearest so far (a lane before it may have come nearer)
+// and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
+void SplitTree::searchNearest(const Ray& ray, std::uint32_t node, Real tMin, Real tMax, Hit& nearest,
+                              RayCounters& counters) const {
     const RayLanes lanes(ray);
     const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
-    traverse(ray, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
+    traverse(ray, node, tMin, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
         tests += leaf.triangles + leaf.others;
         const TriangleBlock* blocks = leaf.blocks();
         for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
@@ -220,13 +234,16 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
         return false;  // a nearer hit may still lie in a later node; traverse() knows when not
     });
     counters.intersectionTests += tests;
-    // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
-    if (!(nearest.t < tMax)) return false;
-    hit = nearest;
-    return true;
 }
 
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
+    Real tMin = 0, tEnd = tMax;
+    return enters(ray, tMin, tEnd) && searchBlocker(ray, 0, tMin, tEnd, tMax, counters);
+}
+
+// Any hit before `rayTMax`, the whole shadow ray's end, in the subtree at `node`.
+bool SplitTree::searchBlocker(const Ray& ray, std::uint32_t node, Real tMin, Real tMax, Real rayTMax,
+                              RayCounters& counters) const {
     const RayLanes lanes(ray);
     std::uint64_t tests = 0;
     bool found = false;
@@ -240,17 +257,17 @@ bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const
         }
         return false;
     };
-    traverse(ray, tMax, tMax, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
+    traverse(ray, node, tMin, tMax, rayTMax, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
         for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
             tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
             const TriangleBlock& block = leaf.blocks()[b];
-            if (counts(block, intersectBlock(block, lanes, tMax))) return found = true;
+            if (counts(block, intersectBlock(block, lanes, rayTMax))) return found = true;
         }
         const std::uint32_t* otherIds = leaf.otherIds();
         for (std::uint32_t i = 0; i < leaf.others; ++i) {
             ++tests;
-            const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, tMax, *filter)
-                                     : prims.intersectsAny(otherIds[i], ray, tMax);
+            const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, rayTMax, *filter)
+                                     : prims.intersectsAny(otherIds[i], ray, rayTMax);
             if (hits) return found = true;
         }
         return false;
