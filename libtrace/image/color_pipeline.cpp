@@ -83,6 +83,14 @@ ColorPipeline::ColorPipeline(const ColorSettings& s) : impl_(std::make_unique<Im
         displayView->setDisplay(display_.c_str());
         displayView->setView(view_.c_str());
         OCIO::GroupTransformRcPtr group = OCIO::GroupTransform::Create();
+        // Exposure in the scene-linear space, as Blender's Color Management and ociodisplay's
+        // exposure slider apply it: the display-referred outputs only, the linear files keep the render.
+        if (s.exposure != 0) {
+            OCIO::ExposureContrastTransformRcPtr exposure = OCIO::ExposureContrastTransform::Create();
+            exposure->setStyle(OCIO::EXPOSURE_CONTRAST_LINEAR);
+            exposure->setExposure(s.exposure);
+            group->appendTransform(exposure);
+        }
         if (!s.look.empty()) {
             checkLooks(*config, s.look);
             OCIO::LookTransformRcPtr look = OCIO::LookTransform::Create();

@@ -18,6 +18,7 @@ struct ColorSettings {
     std::string display;     // --display; empty: the config's default display
     std::string view;        // --view; empty: the display's default view
     std::string look;        // --look; empty: none (several may be given as "a,b")
+    double exposure = 0;     // --exposure: stops (2^exposure times the linear values) before the looks and the view
 };
 
 // How errors and EXR headers name the built-in config.

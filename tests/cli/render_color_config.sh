@@ -34,4 +34,15 @@ for output in "-f $WORK/x.exr" "-o null" "-o text" "-f $WORK/x.png"; do
     done
 done
 [ ! -e "$WORK/x.exr" ] || fail "an EXR was written with an unknown view"
+# --exposure brightens the display-referred outputs by 2^EV before the view and leaves the linear
+# ones as rendered; out of range is a usage error.
+expect_exit 0 render -f "$WORK/plain.png" -f "$WORK/plain.exr"
+expect_exit 0 render --exposure 1 -f "$WORK/bright.png" -f "$WORK/bright.exr"
+idiff -fail 0 -warn 0 "$WORK/plain.exr" "$WORK/bright.exr" >/dev/null || fail "--exposure changed the EXR"
+expect_exit 0 render --look Brighter -f "$WORK/look.png"
+idiff -fail 0.003 -warn 0.003 "$WORK/look.png" "$WORK/bright.png" >/dev/null ||
+    fail "--exposure 1 is not the one-stop look Brighter"
+if idiff -fail 0 -warn 0 "$WORK/plain.png" "$WORK/bright.png" >/dev/null; then fail "--exposure 1 changed no pixel"; fi
+expect_exit 2 render --exposure 100 -f "$WORK/x.png"
+expect_exit 2 render --exposure bright -f "$WORK/x.png"
 echo "render_color_config: ok"

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -66,6 +67,22 @@ TEST(ColorPipeline, AliasesViewsAndLooks) {
     EXPECT_NEAR(displayed(s, 0.09f), 0.461356f, 1e-5);
     s.look = "Contrast";
     EXPECT_GT(displayed(s, 0.5f), displayed(shipped(), 0.5f));
+}
+
+TEST(ColorPipeline, ExposureScalesTheLinearValuesBeforeTheLooksAndTheView) {
+    ColorSettings s = shipped();
+    s.exposure = 1;  // one stop: 0.09 displays like 0.18
+    EXPECT_NEAR(displayed(s, 0.09f), 0.461356f, 1e-5);
+    s.exposure = -2;  // two stops down: 0.72 displays like 0.18
+    EXPECT_NEAR(displayed(s, 0.72f), 0.461356f, 1e-5);
+    s.exposure = 1.5;
+    EXPECT_NEAR(displayed(s, 0.18f / std::exp2(1.5f)), 0.461356f, 1e-5);
+    s.exposure = 1;
+    s.look = "Darker";  // and a look after it: the stops add up
+    EXPECT_NEAR(displayed(s, 0.18f), 0.461356f, 1e-5);
+    s.view = "Raw";
+    s.look.clear();
+    EXPECT_NEAR(displayed(s, 0.25f), 0.5f, 1e-6);
 }
 
 TEST(ColorPipeline, UnknownNamesAreInputErrors) {

@@ -150,6 +150,11 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
         ->group(group);
     app.add_option("--view", o.color.view, "OCIO view (default: the display's default, Standard)")->group(group);
     app.add_option("--look", o.color.look, "OCIO look(s) applied before the view, e.g. Contrast")->group(group);
+    app.add_option("--exposure", o.color.exposure,
+                   "Stops of exposure for PNG, TGA, JPEG, WebP, TIFF, text and the window: 2^EV times the linear "
+                   "values before the looks and the view (EXR, HDR, PFM and float TIFF keep the render's values)")
+        ->check(CLI::Range(-64.0, 64.0))
+        ->group(group);
     addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")->group(group);
     app.add_option_function<std::string>(
            "--alpha", [&o](const std::string& name) { o.alpha = rt::parseNamed(rt::kOnOffNames, name); },
