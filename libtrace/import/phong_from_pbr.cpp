@@ -21,10 +21,17 @@ Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
     const float f0 = clamp01((1 - metallic) * dielectricF0 + metallic * luminance(base));
     const float alpha = std::max(roughness * roughness, 1e-3f);
 
+    // A metal's lobe of width alpha: Phong's highlight, (R.V)^n, ends 90 degrees from the mirror
+    // direction and has the light's colour, so a rough metal drawn as a highlight alone is black
+    // but for a white patch (the glTF default, metallic 1 and roughness 1, under a point light).
+    // The share alpha of the metal's reflectance goes to the diffuse term, tinted by its colour: a
+    // fully rough metal is diffuse in its colour, as its microfacet lobe is nearly uniform; a
+    // polished one keeps the highlight and the mirror.
+    const float roughMetal = metallic * roughness * roughness;
     Material m;
     m.color = base;
-    m.diffuse = 0.9f * (1 - metallic);
-    m.specular = f0;
+    m.diffuse = 0.9f * (1 - metallic) + roughMetal;
+    m.specular = clamp01(f0 - roughMetal * luminance(base));
     m.shininess = std::clamp(2 / (alpha * alpha) - 2, 1.0f, 10000.0f);
     m.reflection = f0 * (1 - roughness);
     m.spread = alpha;

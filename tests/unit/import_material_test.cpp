@@ -32,6 +32,25 @@ TEST(ImportMaterial, PolishedMetalIsAMirrorOfItsColour) {
     EXPECT_LT(m.spread, 0.01f);
 }
 
+// glTF's default metal (metallic 1, roughness 1, as files with only a baseColorFactor have it): its
+// lobe is too broad for Phong's highlight, so its colour goes to the diffuse term, which it tints.
+TEST(ImportMaterial, RoughMetalIsDiffuseInItsColour) {
+    MetallicRoughness in;
+    in.baseColor = {0.0055f, 0.3686f, 0.0041f};  // issue-261's green cube
+    in.metallic = 1;
+    in.roughness = 1;
+    const Material m = phongFromMetallicRoughness(in);
+    EXPECT_FLOAT_EQ(m.diffuse, 1);
+    EXPECT_NEAR(m.specular, 0, 1e-6);
+    EXPECT_FLOAT_EQ(m.reflection, 0);
+    in.roughness = 0.5f;  // half way: a quarter of the metal's reflectance is diffuse
+    const Material satin = phongFromMetallicRoughness(in);
+    EXPECT_FLOAT_EQ(satin.diffuse, 0.25f);
+    EXPECT_NEAR(satin.specular, 0.75f * luminance(in.baseColor), 1e-6);
+    in.metallic = 0.5f;  // and half a metal: the dielectric's diffuse beside it
+    EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).diffuse, 0.9f * 0.5f + 0.5f * 0.25f);
+}
+
 // The path tracer renders the factors themselves (docs/path-tracing.md), clamped as the mapping clamps them.
 TEST(ImportMaterial, TheFactorsAreKeptForThePathTracer) {
     MetallicRoughness in;
