@@ -354,17 +354,18 @@ std::uint64_t walk(const SplitNode* nodes, const Packet& packet, const Lanes& tL
     return steps;
 }
 
-// The leaf's primitives that are not triangles, ray by ray (the packet has no hit filter).
-void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
-                   PacketHits& nearest) {
+// Lets update(ray, hit) change the nearest hit of each ray of `rays` as a Hit, ray by ray: the
+// hits leave the lanes once and go back once.
+template <typename Update>
+void updateHits(PacketHits& nearest, LaneBits rays, const Update& update) {
     alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
     store(nearest.t, t);
     store(nearest.u, u);
     store(nearest.v, v);
-    for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
+    for (LaneBits bits = rays; bits != 0; bits &= bits - 1) {
         const int r = std::countr_zero(bits);
         Hit hit{t[r], nearest.prim[r], u[r], v[r]};
-        for (std::uint32_t i = 0; i < leaf.others; ++i) prims.intersect(leaf.otherIds()[i], rays[r], hit.t, hit);
+        update(r, hit);
         t[r] = hit.t;
         nearest.prim[r] = hit.prim;
         u[r] = hit.u;
@@ -373,6 +374,14 @@ void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const
     nearest.t = load(t);
     nearest.u = load(u);
     nearest.v = load(v);
+}
+
+// The leaf's primitives that are not triangles, ray by ray (the packet has no hit filter).
+void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
+                   PacketHits& nearest) {
+    updateHits(nearest, active, [&](int r, Hit& hit) {
+        for (std::uint32_t i = 0; i < leaf.others; ++i) prims.intersect(leaf.otherIds()[i], rays[r], hit.t, hit);
+    });
 }
 
 // The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
@@ -447,19 +456,9 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
             if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
-            alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
-            store(nearest.t, t);
-            store(nearest.u, u);
-            store(nearest.v, v);
-            Hit hit{t[ray], nearest.prim[ray], u[ray], v[ray]};
-            searchNearest(rays[ray], node, tMin, tEnd, hit, counters);
-            t[ray] = hit.t;
-            u[ray] = hit.u;
-            v[ray] = hit.v;
-            nearest.prim[ray] = hit.prim;
-            nearest.t = load(t);
-            nearest.u = load(u);
-            nearest.v = load(v);
+            updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {
+                searchNearest(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
+            });
         });
     counters.intersectionTests += tests;
     alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
@@ -495,7 +494,8 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
             if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
-            if (!searchBlocker(rays[ray], node, tMin, tEnd, tMax[ray], counters)) return;
+            if (!searchBlocker(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray], counters))
+                return;
             found |= 1u << ray;
             closeRays(1u << ray, tLimit);
         });

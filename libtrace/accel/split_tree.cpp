@@ -109,9 +109,8 @@ void SplitTree::layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes
 // subtree is searched: from the root for a whole ray, from a deeper node for a ray that a packet
 // hands on alone (kd_packet.cpp), which then visits what its own traversal would have visited there.
 template <typename LeafVisitor>
-void SplitTree::traverse(const Ray& ray, std::uint32_t index, Real tMin, Real tMax, const Real& tLimit,
-                         RayCounters& counters, const LeafVisitor& visitLeaf) const {
-    const Vec3 invDir = reciprocal(ray.direction);
+void SplitTree::traverse(const Ray& ray, const Vec3& invDir, std::uint32_t index, Real tMin, Real tMax,
+                         const Real& tLimit, RayCounters& counters, const LeafVisitor& visitLeaf) const {
     // Indexed by the split axis in the loop: arrays, not Vec3's branching operator[].
     const Real origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
     const Real direction[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
@@ -187,16 +186,17 @@ void SplitTree::prefetchLeafOf(std::uint32_t index) const {
 }
 
 // The part [tMin, tMax] of the ray inside the root voxel; false if it misses the voxel.
-bool SplitTree::enters(const Ray& ray, Real& tMin, Real& tMax) const {
+bool SplitTree::enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const {
     tMin = 0;
-    return !nodes_.empty() && !bounds_.empty() && clipRay(bounds_, ray, reciprocal(ray.direction), tMin, tMax);
+    return !nodes_.empty() && !bounds_.empty() && clipRay(bounds_, ray, invDir, tMin, tMax);
 }
 
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;
     nearest.t = tMax;
+    const Vec3 invDir = reciprocal(ray.direction);
     Real tMin = 0, tEnd = tMax;
-    if (enters(ray, tMin, tEnd)) searchNearest(ray, 0, tMin, tEnd, nearest, counters);
+    if (enters(ray, invDir, tMin, tEnd)) searchNearest(ray, invDir, 0, tMin, tEnd, nearest, counters);
     // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
     if (!(nearest.t < tMax)) return false;
     hit = nearest;
@@ -206,44 +206,46 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
 // Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
 // triangles, each only if nearer than the nearest so far (a lane before it may have come nearer)
 // and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
-void SplitTree::searchNearest(const Ray& ray, std::uint32_t node, Real tMin, Real tMax, Hit& nearest,
-                              RayCounters& counters) const {
+void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
+                              Hit& nearest, RayCounters& counters) const {
     const RayLanes lanes(ray);
     const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
-    traverse(ray, node, tMin, tMax, nearest.t, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
-        tests += leaf.triangles + leaf.others;
-        const TriangleBlock* blocks = leaf.blocks();
-        for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
-            const BlockHits hits = intersectBlock(blocks[b], lanes, nearest.t);
-            for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
-                const int lane = std::countr_zero(bits);
-                if (!(hits.t[lane] < nearest.t)) continue;
-                const Hit candidate{hits.t[lane], blocks[b].id[lane], hits.u[lane], hits.v[lane]};
-                if (filter && !filter->accepts(ray, candidate)) continue;
-                nearest = candidate;
-            }
-        }
-        const std::uint32_t* otherIds = leaf.otherIds();
-        for (std::uint32_t i = 0; i < leaf.others; ++i) {
-            if (filter)
-                intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
-            else
-                prims.intersect(otherIds[i], ray, nearest.t, nearest);
-        }
-        return false;  // a nearer hit may still lie in a later node; traverse() knows when not
-    });
+    traverse(ray, invDir, node, tMin, tMax, nearest.t, counters,
+             [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
+                 tests += leaf.triangles + leaf.others;
+                 const TriangleBlock* blocks = leaf.blocks();
+                 for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
+                     const BlockHits hits = intersectBlock(blocks[b], lanes, nearest.t);
+                     for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
+                         const int lane = std::countr_zero(bits);
+                         if (!(hits.t[lane] < nearest.t)) continue;
+                         const Hit candidate{hits.t[lane], blocks[b].id[lane], hits.u[lane], hits.v[lane]};
+                         if (filter && !filter->accepts(ray, candidate)) continue;
+                         nearest = candidate;
+                     }
+                 }
+                 const std::uint32_t* otherIds = leaf.otherIds();
+                 for (std::uint32_t i = 0; i < leaf.others; ++i) {
+                     if (filter)
+                         intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
+                     else
+                         prims.intersect(otherIds[i], ray, nearest.t, nearest);
+                 }
+                 return false;  // a nearer hit may still lie in a later node; traverse() knows when not
+             });
     counters.intersectionTests += tests;
 }
 
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
+    const Vec3 invDir = reciprocal(ray.direction);
     Real tMin = 0, tEnd = tMax;
-    return enters(ray, tMin, tEnd) && searchBlocker(ray, 0, tMin, tEnd, tMax, counters);
+    return enters(ray, invDir, tMin, tEnd) && searchBlocker(ray, invDir, 0, tMin, tEnd, tMax, counters);
 }
 
 // Any hit before `rayTMax`, the whole shadow ray's end, in the subtree at `node`.
-bool SplitTree::searchBlocker(const Ray& ray, std::uint32_t node, Real tMin, Real tMax, Real rayTMax,
-                              RayCounters& counters) const {
+bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
+                              Real rayTMax, RayCounters& counters) const {
     const RayLanes lanes(ray);
     std::uint64_t tests = 0;
     bool found = false;
@@ -257,21 +259,22 @@ bool SplitTree::searchBlocker(const Ray& ray, std::uint32_t node, Real tMin, Rea
         }
         return false;
     };
-    traverse(ray, node, tMin, tMax, rayTMax, counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
-        for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
-            tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
-            const TriangleBlock& block = leaf.blocks()[b];
-            if (counts(block, intersectBlock(block, lanes, rayTMax))) return found = true;
-        }
-        const std::uint32_t* otherIds = leaf.otherIds();
-        for (std::uint32_t i = 0; i < leaf.others; ++i) {
-            ++tests;
-            const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, rayTMax, *filter)
-                                     : prims.intersectsAny(otherIds[i], ray, rayTMax);
-            if (hits) return found = true;
-        }
-        return false;
-    });
+    traverse(ray, invDir, node, tMin, tMax, rayTMax, counters,
+             [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
+                 for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
+                     tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
+                     const TriangleBlock& block = leaf.blocks()[b];
+                     if (counts(block, intersectBlock(block, lanes, rayTMax))) return found = true;
+                 }
+                 const std::uint32_t* otherIds = leaf.otherIds();
+                 for (std::uint32_t i = 0; i < leaf.others; ++i) {
+                     ++tests;
+                     const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, rayTMax, *filter)
+                                              : prims.intersectsAny(otherIds[i], ray, rayTMax);
+                     if (hits) return found = true;
+                 }
+                 return false;
+             });
     counters.intersectionTests += tests;
     return found;
 }

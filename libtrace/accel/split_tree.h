@@ -127,16 +127,17 @@ private:
     void traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const;
     // Whether `count` rays may walk the tree as a packet (kd_packet.cpp checks that they are coherent).
     bool tracesTogether(int count) const { return !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty(); }
-    bool enters(const Ray& ray, Real& tMin, Real& tMax) const;
+    bool enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const;
     // The single-ray queries in the subtree at `node`, for the part [tMin, tMax] of the ray inside
     // it: from the root for intersect() and occluded(), from deeper for a ray a packet hands on alone.
-    void searchNearest(const Ray& ray, std::uint32_t node, Real tMin, Real tMax, Hit& nearest,
+    // invDir: reciprocal(ray.direction), found once per ray by the caller.
+    void searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax, Hit& nearest,
                        RayCounters& counters) const;
-    bool searchBlocker(const Ray& ray, std::uint32_t node, Real tMin, Real tMax, Real rayTMax,
+    bool searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax, Real rayTMax,
                        RayCounters& counters) const;
     template <typename LeafVisitor>
-    void traverse(const Ray& ray, std::uint32_t index, Real tMin, Real tMax, const Real& tLimit, RayCounters& counters,
-                  const LeafVisitor& visitLeaf) const;
+    void traverse(const Ray& ray, const Vec3& invDir, std::uint32_t index, Real tMin, Real tMax, const Real& tLimit,
+                  RayCounters& counters, const LeafVisitor& visitLeaf) const;
     void prefetchNode(std::uint32_t index) const;
     void prefetchLeafOf(std::uint32_t index) const;
     AccelStats computeStats(std::string name, SahCosts costs) const;

@@ -18,7 +18,8 @@ Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
     const float fresnel = (ior - 1) / (ior + 1);
     const float dielectricF0 =
         clamp01(fresnel * fresnel * std::max(pbr.specularFactor, 0.0f) * luminance(clampColor(pbr.specularColor)));
-    const float f0 = clamp01((1 - metallic) * dielectricF0 + metallic * luminance(base));
+    const float metalF0 = luminance(base);
+    const float f0 = clamp01((1 - metallic) * dielectricF0 + metallic * metalF0);
     const float alpha = std::max(roughness * roughness, 1e-3f);
 
     // A metal's lobe of width alpha: Phong's highlight, (R.V)^n, ends 90 degrees from the mirror
@@ -31,7 +32,7 @@ Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
     Material m;
     m.color = base;
     m.diffuse = 0.9f * (1 - metallic) + roughMetal;
-    m.specular = clamp01(f0 - roughMetal * luminance(base));
+    m.specular = clamp01(f0 - roughMetal * metalF0);
     m.shininess = std::clamp(2 / (alpha * alpha) - 2, 1.0f, 10000.0f);
     m.reflection = f0 * (1 - roughness);
     m.spread = alpha;
