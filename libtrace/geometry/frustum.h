@@ -43,13 +43,13 @@ struct Frustum {
 struct Cylinder : Frustum {
     static constexpr const char* kName = "cylinder";
     // Two quadratic roots and two caps against a triangle's one test: measured like the
-    // sphere's 0.4 would be (docs/trees.md); a first estimate, not yet tuned.
-    static constexpr double kTestCost = 1.5;
+    // sphere's 0.8 would be (docs/trees.md); a first estimate, not yet tuned.
+    static constexpr double kTestCost = 3;
 };
 
 struct Cone : Frustum {
     static constexpr const char* kName = "cone";
-    static constexpr double kTestCost = 1.5;
+    static constexpr double kTestCost = 3;
 };
 
 // The side (a quadric) and both caps (discs); a hit with 0 < t < tMax sets t, u (from 0 at
