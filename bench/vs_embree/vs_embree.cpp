@@ -2,6 +2,7 @@
 //
 //   build/release/bench/vs_embree            all scenes, about 5 minutes on 2 cores
 //   build/release/bench/vs_embree --quick    two small scenes, one pass: a smoke test
+//   build/release/bench/vs_embree --kd-intersection-cost 1.5    another KD tree (rt-render's --kd-* options)
 //
 // Scenes: the five thesis scenes (rt::thesisScene), 10k/100k/1M uniform random triangles
 // and the "teapot in a stadium" (bench_scenes.h). Rays, all made once with rt's KD tree:
@@ -44,6 +45,7 @@
 #include <vector>
 
 #include "accel/kdtree.h"
+#include "accel_options.h"
 #include "bench_scenes.h"
 #include "core/simd.h"
 #include "core/stopwatch.h"
@@ -403,7 +405,7 @@ std::string buildRow(const std::string& name, const Primitives& prims, const Acc
            fixed(double(embree.memoryBytes()) / n, 1) + " |";
 }
 
-SceneReport measureScene(const std::string& name, int passes, bool buildsOnly) {
+SceneReport measureScene(const std::string& name, const KdSettings& kdSettings, int passes, bool buildsOnly) {
     std::cerr << "vs_embree: " << name << ": generating\n";
     const Scene scene = loadScene(name);
     const Primitives& prims = scene.primitives;
@@ -416,7 +418,7 @@ SceneReport measureScene(const std::string& name, int passes, bool buildsOnly) {
     for (int b = 0; b < kBuilds; ++b) {
         kd.reset();
         embreeScene.reset();
-        kdTime.keepBest([&] { kd = buildKdTree(prims, KdSettings{}); });
+        kdTime.keepBest([&] { kd = buildKdTree(prims, kdSettings); });
         embreeTime.keepBest([&] { embreeScene = std::make_unique<EmbreeScene>(prims, kBuildThreads); });
     }
     const EmbreeScene& embree = *embreeScene;
@@ -461,24 +463,28 @@ int main(int argc, char** argv) {
                                        "tri10k", "tri100k", "tri1M", "stadium100k"};
     int passes = 3;
     bool quick = false, buildsOnly = false;
+    KdSettings kd;  // rt-render's defaults unless the --kd-* options say otherwise
     app.add_option("--scenes", scenes, "Scenes to measure (thesis scenes and tri10k, tri100k, tri1M, stadium100k)");
     app.add_option("--passes", passes, "Timed passes over each ray set; the best counts")->check(CLI::Range(1, 100));
     app.add_flag("--quick", quick, "Smoke test: ships and tri10k, one pass");
     app.add_flag("--builds", buildsOnly, "Builds only: no rays, only the build table");
+    tool::addKdOptions(app, kd);
     CLI11_PARSE(app, argc, argv);
     if (quick) scenes = {"ships", "tri10k"}, passes = 1;
 
     omp_set_num_threads(kBuildThreads);
     std::vector<SceneReport> reports;
     try {
-        for (const std::string& name : scenes) reports.push_back(measureScene(name, passes, buildsOnly));
+        for (const std::string& name : scenes) reports.push_back(measureScene(name, kd, passes, buildsOnly));
     } catch (const std::exception& e) {
         std::cerr << "vs_embree ERROR: " << e.what() << "\n";
         return 1;
     }
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
               << kHeight << ", best of " << passes << " passes, rt packets on " << simdLevelName(packetSimd())
-              << " lanes (RT_SIMD=sse2|avx2|avx512 for another)\n";
+              << " lanes (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree with C_T " << kd.traversalCost << ", C_I "
+              << kd.intersectionCost << ", empty bonus " << kd.emptyBonus << ", least gain " << kd.minimumGain
+              << " (--kd-*)\n";
     printTables(reports);
     if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
     std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement

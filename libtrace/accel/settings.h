@@ -1,5 +1,6 @@
 // Every tunable of the accelerators, with its default, in one place (as Embree's
-// builder settings). rt-render and rt-inspect expose the same names on their command lines.
+// builder settings). rt-render and rt-inspect expose them on their command lines (--bsp-*, --kd-*), all
+// but the binning's two, which say how the build finds a split rather than what tree it makes.
 #pragma once
 
 #include <cstddef>

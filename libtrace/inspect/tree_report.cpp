@@ -98,6 +98,7 @@ void writeSettingsJson(JsonWriter& json, const AccelSettings& settings, std::uin
         json.member("maxDepthAuto", !settings.kd.maxDepth.has_value());
         json.member("split", kdSplitMethodName(settings.kd.splitMethod));
         json.member("samples", settings.kd.samples);
+        json.member("minimumGain", settings.kd.minimumGain);
     }
     json.endObject();
 }

@@ -26,6 +26,17 @@ expect_exit 0 "$RT_INSPECT" --tree kd --json "$WORK/cylinder_cones.xml"
 [ "$(json_number cones "$WORK/stdout")" = 2 ] || fail "JSON: 2 cones expected"
 [ "$(json_number cylinders "$WORK/stdout")" = 1 ] || fail "JSON: 1 cylinder expected"
 
+# The least gain (--kd-min-gain, docs/trees.md): a bound above any split's saving leaves the root a
+# leaf, 0 lets every split through that beats its leaf; the JSON reports the bound used.
+expect_exit 0 "$RT_INSPECT" --tree kd --json --kd-min-gain 1000 "$WORK/two_clusters.xml"
+[ "$(json_number nodes "$WORK/stdout")" = 1 ] || fail "--kd-min-gain 1000: one leaf expected"
+[ "$(json_number minimumGain "$WORK/stdout")" = 1000 ] || fail "--kd-min-gain 1000 not in the JSON"
+expect_exit 0 "$RT_INSPECT" --tree kd --json --kd-min-gain 0 "$WORK/two_clusters.xml"
+ungated=$(json_number nodes "$WORK/stdout")
+expect_exit 0 "$RT_INSPECT" --tree kd --json "$WORK/two_clusters.xml"
+[ "$ungated" -ge "$(json_number nodes "$WORK/stdout")" ] || fail "--kd-min-gain 0 built fewer nodes than the default"
+[ "$ungated" -ge 3 ] || fail "--kd-min-gain 0: the clusters were not split ($ungated nodes)"
+
 # Two separated clusters: both trees split between them at the root, on x, and every
 # sphere is referenced at least once.
 for tree in bsp kd; do

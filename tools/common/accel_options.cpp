@@ -4,10 +4,15 @@
 
 namespace rt::tool {
 
+namespace {
+
+constexpr const char* kGroup = "Tree options";
+
+}  // namespace
+
 void addAccelOptions(CLI::App& app, AccelSettings& settings) {
-    const char* group = "Tree options";
+    const char* group = kGroup;
     BspSettings& bsp = settings.bsp;
-    KdSettings& kd = settings.kd;
     app.add_option("--bsp-max-depth", bsp.maxDepth, "BSP: maximum depth")
         ->check(numberIn(1, kMaxTreeDepth))
         ->capture_default_str()
@@ -18,6 +23,11 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
         ->group(group);
     app.add_flag("--bsp-round-robin", bsp.roundRobin, "BSP: split X, Y, Z in turn instead of the longest axis")
         ->group(group);
+    addKdOptions(app, settings.kd);
+}
+
+void addKdOptions(CLI::App& app, KdSettings& kd) {
+    const char* group = kGroup;
     // Only their ratio matters; beyond these bounds a cost is a typo, and products of it overflow.
     app.add_option("--kd-traversal-cost", kd.traversalCost, "KD: SAH cost of a traversal step")
         ->check(numberIn(1e-3, 1e3))
@@ -39,6 +49,11 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
         ->group(group);
     app.add_option("--kd-samples", kd.samples, "KD: candidate planes per axis for --kd-split sample")
         ->check(numberIn(1, kMaxKdSamples))
+        ->capture_default_str()
+        ->group(group);
+    app.add_option("--kd-min-gain", kd.minimumGain,
+                   "KD: least SAH cost per ray a split must save, its saving times its area over the root's (0 = none)")
+        ->check(numberIn(0.0, 1e3))
         ->capture_default_str()
         ->group(group);
 }

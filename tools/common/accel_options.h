@@ -11,5 +11,7 @@ namespace rt::tool {
 
 // Adds the --bsp-* and --kd-* options; they write into `settings` when the command line is parsed.
 void addAccelOptions(CLI::App& app, AccelSettings& settings);
+// The --kd-* options alone, for a program that builds only KD trees (bench/vs_embree).
+void addKdOptions(CLI::App& app, KdSettings& kd);
 
 }  // namespace rt::tool
