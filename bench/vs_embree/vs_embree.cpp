@@ -1,6 +1,6 @@
 // rt's KD tree against Intel Embree 3 on the same scenes and the same rays (issue 14).
 //
-//   build/release/bench/vs_embree            all scenes, about 5 minutes on 2 cores
+//   build/release/bench/vs_embree            all scenes, about a minute on 2 cores
 //   build/release/bench/vs_embree --quick    two small scenes, one pass: a smoke test
 //   build/release/bench/vs_embree --kd-intersection-cost 1.5    another KD tree (rt-render's --kd-* options)
 //
@@ -482,9 +482,12 @@ int main(int argc, char** argv) {
     }
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
               << kHeight << ", best of " << passes << " passes, rt packets on " << simdLevelName(packetSimd())
-              << " lanes (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree with C_T " << kd.traversalCost << ", C_I "
-              << kd.intersectionCost << ", empty bonus " << kd.emptyBonus << ", least gain " << kd.minimumGain
-              << " (--kd-*)\n";
+              << " lanes (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree (--kd-*): "
+              << kdSplitMethodName(kd.splitMethod) << ", C_T " << kd.traversalCost << ", C_I " << kd.intersectionCost
+              << ", empty bonus " << kd.emptyBonus << ", least gain " << kd.minimumGain << ", max depth "
+              << (kd.maxDepth ? std::to_string(*kd.maxDepth) : std::string("8 + 1.3 log2 N"))
+              << (kd.splitMethod == KdSplitMethod::Sample ? ", " + std::to_string(kd.samples) + " samples" : "")
+              << "\n";
     printTables(reports);
     if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
     std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement

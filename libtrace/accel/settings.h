@@ -1,6 +1,7 @@
 // Every tunable of the accelerators, with its default, in one place (as Embree's
 // builder settings). rt-render and rt-inspect expose them on their command lines (--bsp-*, --kd-*), all
-// but the binning's two, which say how the build finds a split rather than what tree it makes.
+// but the binning's two (binningMinimum, bins), which are tuned for the build's speed and kept
+// internal; they move the SAH cost a little (docs/benchmarks.md).
 #pragma once
 
 #include <cstddef>

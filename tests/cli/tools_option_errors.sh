@@ -21,6 +21,8 @@ for tool in "$RT_RENDER" "$RT_INSPECT"; do
     expect_one_error "$name" "--kd-traversal-cost: -2 is not in 0.001-1000"
     expect_exit 2 "$tool" "$SCENE" --kd-min-gain -1
     expect_one_error "$name" "--kd-min-gain: -1 is not in 0-1000"
+    expect_exit 2 "$tool" "$SCENE" --kd-min-gain 1001
+    expect_one_error "$name" "--kd-min-gain: 1001 is not in 0-1000"
 done
 
 for tool in "$RT_RENDER" "$RT_INSPECT" "$RT_CONVERT"; do

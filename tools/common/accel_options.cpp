@@ -28,7 +28,8 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
 
 void addKdOptions(CLI::App& app, KdSettings& kd) {
     const char* group = kGroup;
-    // Only their ratio matters; beyond these bounds a cost is a typo, and products of it overflow.
+    // Their ratio shapes the tree (and their scale --kd-min-gain's bound, an absolute cost); beyond
+    // these bounds a cost is a typo, and products of it overflow.
     app.add_option("--kd-traversal-cost", kd.traversalCost, "KD: SAH cost of a traversal step")
         ->check(numberIn(1e-3, 1e3))
         ->capture_default_str()
