@@ -47,6 +47,7 @@
 #include "accel/kdtree.h"
 #include "accel_options.h"
 #include "bench_scenes.h"
+#include "command_line.h"
 #include "core/simd.h"
 #include "core/stopwatch.h"
 #include "embree_scene.h"
@@ -455,6 +456,14 @@ void printTables(const std::vector<SceneReport>& reports) {
     for (const SceneReport& r : reports) std::cout << r.buildRow << "\n";
 }
 
+// The --kd-* options as given, else their defaults (tool::optionValues), to name the tree measured.
+std::string kdOptions(const CLI::App& app) {
+    std::string line;
+    for (const auto& [name, values] : tool::optionValues(app))
+        if (name.rfind("kd-", 0) == 0) line += " --" + name + " " + (values.empty() ? "(default)" : values.front());
+    return line;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -482,12 +491,7 @@ int main(int argc, char** argv) {
     }
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
               << kHeight << ", best of " << passes << " passes, rt packets on " << simdLevelName(packetSimd())
-              << " lanes (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree (--kd-*): "
-              << kdSplitMethodName(kd.splitMethod) << ", C_T " << kd.traversalCost << ", C_I " << kd.intersectionCost
-              << ", empty bonus " << kd.emptyBonus << ", least gain " << kd.minimumGain << ", max depth "
-              << (kd.maxDepth ? std::to_string(*kd.maxDepth) : std::string("8 + 1.3 log2 N"))
-              << (kd.splitMethod == KdSplitMethod::Sample ? ", " + std::to_string(kd.samples) + " samples" : "")
-              << "\n";
+              << " lanes (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree:" << kdOptions(app) << "\n";
     printTables(reports);
     if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
     std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement
