@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The AVX2 and AVX-512 copies of the packet traversal (libtrace/accel/kd_packet.cpp built with
-# RT_PACKET_AVX2 or RT_PACKET_AVX512, core/simd.h) may hold vector instructions only in their
-# own functions: the traversal and its helpers in namespace rt::simd_LEVEL. Any other function in
-# the object is an inline function of a header that other files share, and the linker may keep
-# this object's copy for every caller, the single rays and CPUs without the level included; it
-# must have the baseline instructions. Besides:
+# The AVX2 and AVX-512 copies of the traversals (libtrace/accel/kd_single.cpp and kd_packet.cpp
+# built with RT_LEVEL_AVX2 or RT_LEVEL_AVX512, accel/simd_level.h) may hold vector instructions
+# only in their own functions: the level's SplitTree::searchNearest, searchBlocker, tracePacket and
+# traceShadowPacket, and the helpers in namespace rt::simd_LEVEL. Any other function in the object
+# is an inline function of a header that other files share, and the linker may keep this object's
+# copy for every caller, CPUs without the level included; it must have the baseline instructions.
+# Besides:
 # - AVX-512 instructions (ZMM registers, k masks, registers 16 to 31, all EVEX-only) appear only
 #   in the AVX-512 copy, so none reaches a CPU that has AVX2 only;
 # - no copy holds a fused multiply-add, which would round differently from the scalar code.
@@ -34,7 +35,7 @@ for object in "$@"; do
         NF >= 2 && $2 ~ /%zmm|%k[0-7]|%[xy]mm(1[6-9]|2[0-9]|3[01])/ { avx512[fn]++ }
         NF >= 2 && $2 ~ /^vf(n)?m(add|sub)/ { fma[fn]++ }
         END {
-            own = "rt::simd_" level "::|trace(Shadow)?Packet<\\(rt::SimdLevel\\)" index_ ">"
+            own = "rt::simd_" level "::|(trace(Shadow)?Packet|search(Nearest|Blocker))<\\(rt::SimdLevel\\)" index_ ">"
             for (fn in vector)
                 if (fn !~ own)
                     printf "check-simd-isolation ERROR: %s: %s: %d vector instructions\n", object, fn, vector[fn]

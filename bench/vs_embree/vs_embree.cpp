@@ -490,8 +490,9 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
-              << kHeight << ", best of " << passes << " passes, rt packets on " << simdLevelName(packetSimd())
-              << " lanes (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree:" << kdOptions(app) << "\n";
+              << kHeight << ", best of " << passes << " passes, rt on " << simdLevelName(simdLevel())
+              << " lanes, single rays and packets (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree:"
+              << kdOptions(app) << "\n";
     printTables(reports);
     if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
     std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement

@@ -30,41 +30,20 @@
 // reciprocal overflows (their plane distances can be NaN, and the single traversal then orders
 // the children by the origin), and a tree with a hit filter are traced one by one.
 //
-// Compiled three times (libtrace/CMakeLists.txt): as it is, on SSE2 lanes (core/simd.h,
-// simd_base); with RT_PACKET_AVX2 defined, on AVX2 lanes: the same code in namespace simd_avx2,
-// its functions compiled for AVX2; with RT_PACKET_AVX512, the same on AVX-512 lanes in
-// simd_avx512. SplitTree::intersectPacket and occludedPacket (packet_dispatch.cpp) choose one at
-// run time. The headers are included before the AVX2 or AVX-512 region, so the inline functions
-// they define, which other files share, keep the baseline instructions.
+// Compiled three times (accel/simd_level.h): on SSE2 lanes (core/simd.h, simd_base), on AVX2 lanes
+// in namespace simd_avx2 and on AVX-512 lanes in simd_avx512. SplitTree::intersectPacket and
+// occludedPacket (simd_dispatch.cpp) choose one at run time; a lone ray goes on with the single
+// traversal of the same level (kd_single.cpp).
 #include <algorithm>
 #include <bit>
 #include <cmath>
 
 #include "accel/split_tree.h"
 
-#if RT_PACKET_AVX2
-#if !RT_SIMD_AVX2
-#error "RT_PACKET_AVX2 needs core/simd.h's AVX2 lanes (x86-64, GCC or clang)"
-#endif
-#define RT_PACKET_LANES simd_avx2
-#define RT_PACKET_LEVEL SimdLevel::avx2
-#define RT_PACKET_NAMESPACE simd_avx2
-RT_AVX2_BEGIN
-#elif RT_PACKET_AVX512
-#if !RT_SIMD_AVX512
-#error "RT_PACKET_AVX512 needs core/simd.h's AVX-512 lanes (x86-64, GCC or clang)"
-#endif
-#define RT_PACKET_LANES simd_avx512
-#define RT_PACKET_LEVEL SimdLevel::avx512
-#define RT_PACKET_NAMESPACE simd_avx512
-RT_AVX512_BEGIN
-#else
-#define RT_PACKET_LANES simd_base
-#define RT_PACKET_LEVEL SimdLevel::sse2
-#define RT_PACKET_NAMESPACE inline simd_base  // reopened as what core/simd.h declares it
-#endif
+// Last, in a block of its own (clang-format sorts a block): the level's region starts here.
+#include "accel/simd_level.h"
 
-namespace rt::RT_PACKET_NAMESPACE {
+namespace rt::RT_LEVEL_NAMESPACE {
 
 namespace {
 
@@ -425,15 +404,15 @@ void closeRays(LaneBits bits, Lanes& tLimit) {
 
 }  // namespace
 
-}  // namespace rt::RT_PACKET_NAMESPACE
+}  // namespace rt::RT_LEVEL_NAMESPACE
 
 namespace rt {
 
 template <SimdLevel level>
 void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                             RayCounters& counters) const {
-    using namespace RT_PACKET_LANES;
-    static_assert(level == RT_PACKET_LEVEL, "each compilation of this file holds its own level's traversal");
+    using namespace RT_LEVEL_LANES;
+    static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
     Real ends[kPacketSize];
     std::fill(std::begin(ends), std::end(ends), tMax);
     Packet packet;
@@ -457,7 +436,7 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
             updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {
-                searchNearest(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
+                searchNearest<level>(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
             });
         });
     counters.intersectionTests += tests;
@@ -474,8 +453,8 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
 template <SimdLevel level>
 void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
                                   RayCounters& counters) const {
-    using namespace RT_PACKET_LANES;
-    static_assert(level == RT_PACKET_LEVEL, "each compilation of this file holds its own level's traversal");
+    using namespace RT_LEVEL_LANES;
+    static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
     Packet packet;
     if (!tracesTogether(count) || !loadPacket(rays, count, tMax, bounds_, packet)) {
         Accelerator::occludedPacket(rays, count, tMax, blocked, counters);
@@ -494,7 +473,8 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
             if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
-            if (!searchBlocker(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray], counters))
+            if (!searchBlocker<level>(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray],
+                                      counters))
                 return;
             found |= 1u << ray;
             closeRays(1u << ray, tLimit);
@@ -503,15 +483,11 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
     for (int i = 0; i < count; ++i) blocked[i] = (found >> i) & 1u;
 }
 
-template void SplitTree::tracePacket<RT_PACKET_LEVEL>(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
-                                                      RayCounters& counters) const;
-template void SplitTree::traceShadowPacket<RT_PACKET_LEVEL>(const Ray* rays, int count, const Real* tMax, bool* blocked,
-                                                            RayCounters& counters) const;
+template void SplitTree::tracePacket<RT_LEVEL>(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                                               RayCounters& counters) const;
+template void SplitTree::traceShadowPacket<RT_LEVEL>(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                                                     RayCounters& counters) const;
 
 }  // namespace rt
 
-#if RT_PACKET_AVX2
-RT_AVX2_END
-#elif RT_PACKET_AVX512
-RT_AVX512_END
-#endif
+RT_LEVEL_END

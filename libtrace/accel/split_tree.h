@@ -102,7 +102,7 @@ public:
 
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
-    // Wald's packet traversal (accel/kd_packet.cpp) on the lanes packetSimd() chooses (core/simd.h).
+    // Wald's packet traversal (accel/kd_packet.cpp) on the lanes simdLevel() chooses (core/simd.h).
     void intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                          RayCounters& counters) const override;
     // Its any-hit form, each ray stopping where occluded() stops (accel/kd_packet.cpp).
@@ -130,16 +130,33 @@ private:
     bool enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const;
     // The single-ray queries in the subtree at `node`, for the part [tMin, tMax] of the ray inside
     // it: from the root for intersect() and occluded(), from deeper for a ray a packet hands on alone.
-    // invDir: reciprocal(ray.direction), found once per ray by the caller.
+    // invDir: reciprocal(ray.direction), found once per ray by the caller. On one level's lanes:
+    // kd_single.cpp, compiled once per level.
+    template <SimdLevel level>
     void searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax, Hit& nearest,
                        RayCounters& counters) const;
+    template <SimdLevel level>
     bool searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax, Real rayTMax,
                        RayCounters& counters) const;
     template <typename LeafVisitor>
     void traverse(const Ray& ray, const Vec3& invDir, std::uint32_t index, Real tMin, Real tMax, const Real& tLimit,
                   RayCounters& counters, const LeafVisitor& visitLeaf) const;
-    void prefetchNode(std::uint32_t index) const;
-    void prefetchLeafOf(std::uint32_t index) const;
+    // The far child waits on the stack while the near one is searched: its node is fetched meanwhile.
+    void prefetchNode(std::uint32_t index) const { __builtin_prefetch(&nodes_[index]); }
+    // Called at a leaf for the node next on the stack (fetched when it was pushed): if that node is
+    // a leaf, its record and first block are fetched while this leaf is tested, so that the two
+    // leaves' cache misses overlap instead of following each other. No branch on the node, whose
+    // load may still be on its way: an inner node fetches its own cache line again, which is there.
+    void prefetchLeafOf(std::uint32_t index) const {
+        const SplitNode node = nodes_[index];
+        // As integers: an inner node's offset is its split's bits, no place in leafData_.
+        const auto leafBytes =
+            std::uintptr_t(leafData_.data()) + std::uintptr_t(node.primitiveOffset()) * sizeof(LeafUnit);
+        const auto nodeBytes = std::uintptr_t(&nodes_[index]);
+        const auto* at = reinterpret_cast<const char*>(node.isLeaf() ? leafBytes : nodeBytes);
+        for (std::size_t line = 0; line < kLeafPrefetchBytes; line += 64) __builtin_prefetch(at + line);
+        __builtin_prefetch(at + kLeafPrefetchBytes - 1);  // the last cache line, when the leaf starts inside one
+    }
     AccelStats computeStats(std::string name, SahCosts costs) const;
 
     const Primitives& prims_;

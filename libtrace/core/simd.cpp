@@ -1,4 +1,4 @@
-// The packet traversal's choice of lanes (core/simd.h): made once, from the CPU and RT_SIMD.
+// The traversals' choice of lanes (core/simd.h): made once, from the CPU and RT_SIMD.
 #include "core/simd.h"
 
 #include <atomic>
@@ -44,9 +44,9 @@ bool cpuHas(SimdLevel level) {
     }
 }
 
-SimdLevel packetSimd() { return chosenLevel().load(std::memory_order_relaxed); }
+SimdLevel simdLevel() { return chosenLevel().load(std::memory_order_relaxed); }
 
-bool setPacketSimd(SimdLevel level) {
+bool setSimdLevel(SimdLevel level) {
     if (!cpuHas(level)) return false;
     chosenLevel().store(level, std::memory_order_relaxed);
     return true;

@@ -5,20 +5,22 @@
 // so the default build runs anywhere): two lanes with Real = double, four with float; four in
 // plain C++ elsewhere. The leaves' triangle blocks are kSimdWidth wide, this register's width,
 // whatever the packets use: a leaf holds few triangles (2-3 in a KD tree), so wider blocks would
-// mostly test and store empty lanes.
+// mostly test and store empty lanes. The single-ray traversal (accel/kd_single.cpp) tests them on
+// these lanes on every level: its AVX2 and AVX-512 copies are the same code compiled for those
+// instruction sets (three-operand forms, more registers), not wider lanes.
 //
 // simd_avx2::RealLanes: one AVX2 register, four doubles or eight floats, for the packet
 // traversal only. Its functions are compiled for AVX2 whatever the flags of the file
 // (RT_AVX2_BEGIN/END), so the default build still runs on any x86-64; code may call them only
-// where packetSimd() says the CPU has AVX2 (accel/kd_packet.cpp is compiled a second time into
-// that namespace, and SplitTree::intersectPacket chooses at run time).
+// where simdLevel() says the CPU has AVX2 (accel/kd_packet.cpp is compiled a second time into
+// that namespace, accel/simd_level.h, and SplitTree::intersectPacket chooses at run time).
 //
 // simd_avx512::RealLanes: the same for AVX-512 (F, DQ, VL; RT_AVX512_BEGIN/END), kd_packet.cpp's
 // third copy. With doubles one ZMM register holds the whole packet of eight rays, so each step
 // is one instruction where AVX2 needs two. With floats AVX2's one YMM register already holds the
 // eight, and a ZMM register would hold sixteen lanes, half of them always empty: the level keeps
 // AVX2's eight-float lanes, compiled for AVX-512VL, which gives the traversal 32 vector registers
-// instead of 16. RT_SIMD=sse2|avx2|avx512 in the environment, or setPacketSimd, picks a level the
+// instead of 16. RT_SIMD=sse2|avx2|avx512 in the environment, or setSimdLevel, picks a level the
 // CPU has (the tests run each).
 //
 // Each lane of every set rounds exactly as the scalar code does (IEEE add, sub, mul, div; no
@@ -192,15 +194,15 @@ inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
 
 }  // namespace simd_base
 
-// Which lanes the packet traversal uses. Chosen once, at the first call: the widest the CPU has,
-// AVX-512 then AVX2, unless the environment names another the CPU has (RT_SIMD=sse2|avx2|avx512);
-// setPacketSimd changes it (tests).
+// Which copy of the traversals (single rays and packets) runs. Chosen once, at the first call: the
+// widest the CPU has, AVX-512 then AVX2, unless the environment names another the CPU has
+// (RT_SIMD=sse2|avx2|avx512); setSimdLevel changes it (tests).
 enum class SimdLevel { sse2, avx2, avx512 };  // sse2: simd_base (plain C++ off x86-64)
 inline constexpr SimdLevel kSimdLevels[] = {SimdLevel::sse2, SimdLevel::avx2, SimdLevel::avx512};
 bool cpuHas(SimdLevel level);
-SimdLevel packetSimd();
+SimdLevel simdLevel();
 // False, changing nothing, where the CPU cannot run `level`.
-bool setPacketSimd(SimdLevel level);
+bool setSimdLevel(SimdLevel level);
 const char* simdLevelName(SimdLevel level);
 
 #if RT_SIMD_AVX2

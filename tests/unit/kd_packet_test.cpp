@@ -1,10 +1,10 @@
 // Packet traversal (accel/kd_packet.cpp): every ray of a packet gets, bit for bit, the hit the
-// single-ray traversal gives it (the same primitive, t, u and v), which agrees with the naive
+// single-ray traversal (accel/kd_single.cpp) gives it (the same primitive, t, u and v), which agrees with the naive
 // list; and as a shadow ray (occludedPacket), each ending at its own distance, the answer and
 // the counted work occluded() gives it. On camera and shadow rays of the thesis scenes, random
 // triangles and the hard cases, through KD and BSP trees, in both precisions (the float build
 // runs the same tests), on the SSE2, AVX2 and AVX-512 lanes (core/simd.h; skipped where the CPU
-// lacks the level).
+// lacks the level). And the single-ray traversal of each level gives SSE2's bits.
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -16,11 +16,11 @@
 #include "accel/naive.h"
 #include "core/random.h"
 #include "core/simd.h"
-#include "packet_lanes.h"
 #include "render/camera_rays.h"
 #include "render/surface.h"
 #include "scene/generate.h"
 #include "scene/thesis_scenes.h"
+#include "simd_lanes.h"
 #include "test_util.h"
 
 using namespace rt;
@@ -197,11 +197,11 @@ std::vector<std::unique_ptr<Accelerator>> trees(const Primitives& prims) {
 }
 
 // Runs each test once per set of lanes the packet traversal can use.
-class KdPacket : public test::PacketLanes {};
+class KdPacket : public test::SimdLanes {};
 
 }  // namespace
 
-INSTANTIATE_PACKET_LANES(KdPacket);
+INSTANTIATE_SIMD_LANES(KdPacket);
 
 TEST_P(KdPacket, RandomTrianglesAgreeWithSingleRaysAndTheNaiveList) {
     const Scene scene = generateScene({2000, 0, Placement::Uniform, 21});
@@ -361,4 +361,51 @@ TEST_P(KdPacket, DegenerateShadowRaysAgreeWithSingleRays) {
         EXPECT_EQ(shadowDisagreements(*tree, rays, ends, kPacketSize), "");
         tree->setHitFilter(nullptr);
     }
+}
+
+// The single-ray traversal on this level's lanes against SSE2's, the baseline every x86-64 runs:
+// the same nearest hit to the last bit, the same answer as a shadow ray, the same work counted.
+// Through KD and BSP trees, with and without a hit filter, on triangles, spheres, cylinders and
+// cones, rays in every direction and rays along the axes (zero direction components).
+TEST_P(KdPacket, SingleRaysGiveTheBitsOfTheBaselineLanes) {
+    const Scene scene = generateScene({600, 150, Placement::Clustered, 26, 50, 50});
+    std::vector<Ray> rays = coneRays(200, 8);
+    for (int p = 0; p < 200; ++p)
+        rays.push_back({{Real(p % 20) / 10 - 1, Real(p / 20) / 10 - 1, 3}, p % 2 ? Vec3{0, 0, -1} : Vec3{0, -1, 0}});
+    struct Answer {
+        bool found, blocked;
+        Hit hit;
+    };
+    const auto trace = [&](const Accelerator& tree, SimdLevel level, RayCounters& counters) {
+        EXPECT_TRUE(setSimdLevel(level));
+        std::vector<Answer> answers;
+        for (const Ray& ray : rays) {
+            Answer a{};
+            a.found = tree.intersect(ray, kInfinity, a.hit, counters);
+            a.blocked = tree.occluded(ray, a.found ? a.hit.t * Real(0.999) : Real(2), counters);
+            answers.push_back(a);
+        }
+        return answers;
+    };
+    struct Rejects : HitFilter {
+        bool accepts(const Ray&, const Hit& hit) const override { return hit.prim % 3 != 0; }
+    } filter;
+    for (const auto& tree : trees(scene.primitives))
+        for (const HitFilter* f : {static_cast<const HitFilter*>(nullptr), static_cast<const HitFilter*>(&filter)}) {
+            tree->setHitFilter(f);
+            RayCounters baseline, lanes;
+            const std::vector<Answer> expected = trace(*tree, SimdLevel::sse2, baseline);
+            const std::vector<Answer> got = trace(*tree, GetParam(), lanes);
+            int found = 0;
+            for (std::size_t i = 0; i < rays.size(); ++i) {
+                found += expected[i].found;
+                EXPECT_TRUE(identical(got[i].found, got[i].hit, expected[i].found, expected[i].hit))
+                    << tree->stats().name << " ray " << i << ": prim " << got[i].hit.prim << " t " << got[i].hit.t
+                    << ", on SSE2 prim " << expected[i].hit.prim << " t " << expected[i].hit.t;
+                EXPECT_EQ(got[i].blocked, expected[i].blocked) << tree->stats().name << " shadow ray " << i;
+            }
+            EXPECT_GT(found, 50) << tree->stats().name;  // the rays do meet the scene
+            EXPECT_EQ(lanes.traversalSteps, baseline.traversalSteps) << tree->stats().name;
+            EXPECT_EQ(lanes.intersectionTests, baseline.intersectionTests) << tree->stats().name;
+        }
 }

@@ -8,11 +8,11 @@
 #include <cstring>
 
 #include "accel/build.h"
-#include "packet_lanes.h"
 #include "render/renderer.h"
 #include "render/tracer.h"
 #include "render_test_scenes.h"
 #include "scene/thesis_scenes.h"
+#include "simd_lanes.h"
 
 using namespace rt;
 
@@ -76,7 +76,7 @@ Scene shadowedScene(bool glass) {
     return s;
 }
 
-class RenderPackets : public test::PacketLanes {};
+class RenderPackets : public test::SimdLanes {};
 
 }  // namespace
 
@@ -151,4 +151,4 @@ TEST_P(RenderPackets, OnlyOneSampleRendersWithoutAovsTakePackets) {
     EXPECT_FALSE(Tracer(scene, *accel, s).tracesPackets());
 }
 
-INSTANTIATE_PACKET_LANES(RenderPackets);
+INSTANTIATE_SIMD_LANES(RenderPackets);

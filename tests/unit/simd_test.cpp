@@ -134,13 +134,13 @@ TEST(Simd, Avx512LanesHaveTheScalarOperationsBits) {
 }
 
 // Each level can be chosen exactly where the CPU has it; SSE2 always.
-TEST(Simd, PacketLanesFollowTheCpu) {
-    const SimdLevel before = packetSimd();
+TEST(Simd, LevelsFollowTheCpu) {
+    const SimdLevel before = simdLevel();
     EXPECT_TRUE(cpuHas(SimdLevel::sse2));
     for (SimdLevel level : kSimdLevels) {
-        EXPECT_TRUE(setPacketSimd(SimdLevel::sse2));
-        EXPECT_EQ(setPacketSimd(level), cpuHas(level)) << simdLevelName(level);  // refused where the CPU lacks it
-        EXPECT_EQ(packetSimd(), cpuHas(level) ? level : SimdLevel::sse2) << simdLevelName(level);
+        EXPECT_TRUE(setSimdLevel(SimdLevel::sse2));
+        EXPECT_EQ(setSimdLevel(level), cpuHas(level)) << simdLevelName(level);  // refused where the CPU lacks it
+        EXPECT_EQ(simdLevel(), cpuHas(level) ? level : SimdLevel::sse2) << simdLevelName(level);
     }
-    setPacketSimd(before);
+    setSimdLevel(before);
 }

@@ -8,19 +8,19 @@
 
 namespace rt::test {
 
-class PacketLanes : public ::testing::TestWithParam<SimdLevel> {
+class SimdLanes : public ::testing::TestWithParam<SimdLevel> {
 protected:
     void SetUp() override {
-        if (!setPacketSimd(GetParam())) GTEST_SKIP() << "this CPU has no " << simdLevelName(GetParam());
+        if (!setSimdLevel(GetParam())) GTEST_SKIP() << "this CPU has no " << simdLevelName(GetParam());
     }
-    void TearDown() override { setPacketSimd(before_); }
+    void TearDown() override { setSimdLevel(before_); }
 
 private:
-    SimdLevel before_ = packetSimd();
+    SimdLevel before_ = simdLevel();
 };
 
-// INSTANTIATE_PACKET_LANES(Suite): Suite's tests on every set of lanes, named sse2, avx2, avx512.
-#define INSTANTIATE_PACKET_LANES(Suite)                       \
+// INSTANTIATE_SIMD_LANES(Suite): Suite's tests on every set of lanes, named sse2, avx2, avx512.
+#define INSTANTIATE_SIMD_LANES(Suite)                         \
     INSTANTIATE_TEST_SUITE_P(                                 \
         Lanes, Suite, ::testing::ValuesIn(::rt::kSimdLevels), \
         [](const ::testing::TestParamInfo<::rt::SimdLevel>& level) { return ::rt::simdLevelName(level.param); })

@@ -1,0 +1,60 @@
+// SplitTree's queries on the lanes core/simd.h's simdLevel() chooses, by default the widest the CPU
+// has: AVX-512, AVX2 or SSE2. The single-ray traversal (kd_single.cpp) and the packet traversal
+// (kd_packet.cpp) are each compiled once per level and hold only that level's code; this file,
+// compiled once, picks the copy.
+#include <type_traits>
+
+#include "accel/split_tree.h"
+
+namespace rt {
+
+namespace {
+
+// call(level) with the chosen level as a compile-time constant (std::integral_constant), so that
+// it names that level's copy: call(level) runs SplitTree::X<decltype(level)::value>.
+template <typename Call>
+decltype(auto) onChosenLevel(const Call& call) {
+#if RT_SIMD_AVX512
+    if (simdLevel() == SimdLevel::avx512) return call(std::integral_constant<SimdLevel, SimdLevel::avx512>{});
+#endif
+#if RT_SIMD_AVX2
+    if (simdLevel() == SimdLevel::avx2) return call(std::integral_constant<SimdLevel, SimdLevel::avx2>{});
+#endif
+    return call(std::integral_constant<SimdLevel, SimdLevel::sse2>{});
+}
+
+}  // namespace
+
+bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
+    Hit nearest;
+    nearest.t = tMax;
+    const Vec3 invDir = reciprocal(ray.direction);
+    Real tMin = 0, tEnd = tMax;
+    if (enters(ray, invDir, tMin, tEnd))
+        onChosenLevel(
+            [&](auto level) { searchNearest<decltype(level)::value>(ray, invDir, 0, tMin, tEnd, nearest, counters); });
+    // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
+    if (!(nearest.t < tMax)) return false;
+    hit = nearest;
+    return true;
+}
+
+bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
+    const Vec3 invDir = reciprocal(ray.direction);
+    Real tMin = 0, tEnd = tMax;
+    return enters(ray, invDir, tMin, tEnd) && onChosenLevel([&](auto level) {
+               return searchBlocker<decltype(level)::value>(ray, invDir, 0, tMin, tEnd, tMax, counters);
+           });
+}
+
+void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                                RayCounters& counters) const {
+    onChosenLevel([&](auto level) { tracePacket<decltype(level)::value>(rays, count, tMax, hits, found, counters); });
+}
+
+void SplitTree::occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                               RayCounters& counters) const {
+    onChosenLevel([&](auto level) { traceShadowPacket<decltype(level)::value>(rays, count, tMax, blocked, counters); });
+}
+
+}  // namespace rt
