@@ -1,12 +1,12 @@
 // The single-ray queries of the KD and BSP trees (SplitTree::intersect, occluded): front to back
 // down the tree's 8-byte nodes, a leaf's triangles tested in blocks (geometry/triangle_block.h).
-// Compiled three times (accel/simd_level.h), once per set of lanes: the traversal is the same, but
-// with AVX2 or AVX-512 the compiler's code for it has three-operand instructions (no register
-// copies) and, for AVX-512, 32 registers: 13 % fewer instructions per camera ray than SSE2's
-// (docs/benchmarks.md). Each level's arithmetic is IEEE's, operation by operation (no fused
-// multiply-add), so every copy gives the same bits. SplitTree::intersect and occluded choose a
-// copy at run time (simd_dispatch.cpp); the packet traversal of a level hands its lone rays to that
-// level's copy (kd_packet.cpp).
+// Compiled three times (accel/simd_level.h), once per set of lanes: on AVX2 and AVX-512 a leaf's
+// blocks are tested two at a time, and the compiler's code has three-operand instructions (no
+// register copies) and, for AVX-512, 32 registers: with AVX2, 25 % fewer instructions per camera
+// ray than SSE2's took before (docs/benchmarks.md). Each level's arithmetic is IEEE's, operation by
+// operation (no fused multiply-add), so every copy gives the same bits. SplitTree::intersect and
+// occluded choose a copy at run time (simd_dispatch.cpp); the packet traversal of a level hands its
+// lone rays to that level's copy (kd_packet.cpp).
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -18,6 +18,42 @@
 
 // Last, in a block of its own (clang-format sorts a block): the level's region starts here.
 #include "accel/simd_level.h"
+
+// AVX2 and AVX-512 test a leaf's blocks two at a time, in one register twice SSE2's width (four
+// doubles or eight floats; AVX-512 takes AVX2's register, compiled for its own level): one test's
+// instructions for two blocks' triangles, each lane computing what it computes in a block alone.
+#define RT_BLOCK_PAIRS (RT_LEVEL_AVX2 || RT_LEVEL_AVX512)
+
+#if RT_BLOCK_PAIRS
+namespace rt::RT_LEVEL_NAMESPACE {
+
+namespace {
+
+struct PairLanes {
+    using Type = simd_avx2::RealLanes;
+    static Type all(Real x) { return simd_avx2::broadcast(x); }
+};
+constexpr int kPairLanes = 2 * kSimdWidth;
+static_assert(kPairLanes == simd_avx2::kLanes);
+using PairHits = LaneHits<kPairLanes>;
+// The lanes of a pair's first block.
+constexpr unsigned kFirstOfPair = (1u << kSimdWidth) - 1;
+
+// The blocks `first` and `first + 1`, lane i of the pair being lane i of the first and lane
+// kSimdWidth + i of the second. Always inlined, as the one-block test is in its loop.
+[[gnu::always_inline]] inline PairHits intersectBlockPair(const TriangleBlock* first, const RayLanesOf<PairLanes>& ray,
+                                                          Real tMax) {
+    return mollerTrumboreLanes<PairLanes, kPairLanes>(
+        [&](auto component, int axis) {
+            return simd_avx2::loadHalves((first[0].*component)[axis], (first[1].*component)[axis]);
+        },
+        ray, tMax);
+}
+
+}  // namespace
+
+}  // namespace rt::RT_LEVEL_NAMESPACE
+#endif
 
 namespace rt {
 
@@ -105,71 +141,106 @@ void SplitTree::traverse(const Ray& ray, const Vec3& invDir, std::uint32_t index
 // Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
 // triangles, each only if nearer than the nearest so far (a lane before it may have come nearer)
 // and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
+// A pair of blocks is the same: its second block is tested with the nearest t from before the
+// first's hits, and its hits that the first's then beat are dropped here.
 template <SimdLevel level>
 void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Hit& nearest, RayCounters& counters) const {
     const RayLanes lanes(ray);
+#if RT_BLOCK_PAIRS
+    const RayLanesOf<RT_LEVEL_LANES::PairLanes> pairLanes(ray);
+#endif
     const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
-    traverse(ray, invDir, node, tMin, tMax, nearest.t, counters,
-             [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
-                 tests += leaf.triangles + leaf.others;
-                 const TriangleBlock* blocks = leaf.blocks();
-                 for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
-                     const BlockHits hits = intersectBlock(blocks[b], lanes, nearest.t);
-                     for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
-                         const int lane = std::countr_zero(bits);
-                         if (!(hits.t[lane] < nearest.t)) continue;
-                         const Hit candidate{hits.t[lane], blocks[b].id[lane], hits.u[lane], hits.v[lane]};
-                         if (filter && !filter->accepts(ray, candidate)) continue;
-                         nearest = candidate;
-                     }
-                 }
-                 const std::uint32_t* otherIds = leaf.otherIds();
-                 for (std::uint32_t i = 0; i < leaf.others; ++i) {
-                     if (filter)
-                         intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
-                     else
-                         prims.intersect(otherIds[i], ray, nearest.t, nearest);
-                 }
-                 return false;  // a nearer hit may still lie in a later node; traverse() knows when not
-             });
+    // The hits of the blocks from `first` on (one block, or a pair), lane i in block i / kSimdWidth.
+    const auto take = [&](const TriangleBlock* first, const auto& hits) {
+        for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
+            const int lane = std::countr_zero(bits);
+            if (!(hits.t[lane] < nearest.t)) continue;
+            const Hit candidate{hits.t[lane], first[lane / kSimdWidth].id[lane % kSimdWidth], hits.u[lane],
+                                hits.v[lane]};
+            if (filter && !filter->accepts(ray, candidate)) continue;
+            nearest = candidate;
+        }
+    };
+    traverse(
+        ray, invDir, node, tMin, tMax, nearest.t,
+        counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
+            tests += leaf.triangles + leaf.others;
+            const TriangleBlock* blocks = leaf.blocks();
+            std::uint32_t b = 0;
+#if RT_BLOCK_PAIRS
+            for (; b + 2 <= leaf.blockCount(); b += 2)
+                take(blocks + b, RT_LEVEL_LANES::intersectBlockPair(blocks + b, pairLanes, nearest.t));
+#endif
+            for (; b < leaf.blockCount(); ++b) take(blocks + b, intersectBlock(blocks[b], lanes, nearest.t));
+            const std::uint32_t* otherIds = leaf.otherIds();
+            for (std::uint32_t i = 0; i < leaf.others; ++i) {
+                if (filter)
+                    intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
+                else
+                    prims.intersect(otherIds[i], ray, nearest.t, nearest);
+            }
+            return false;  // a nearer hit may still lie in a later node; traverse() knows when not
+        });
     counters.intersectionTests += tests;
 }
 
-// Any hit before `rayTMax`, the whole shadow ray's end, in the subtree at `node`.
+// Any hit before `rayTMax`, the whole shadow ray's end, in the subtree at `node`. The triangles
+// are counted block by block up to the first that blocks; a pair of blocks is counted as its two
+// blocks would be, the second only if the first does not block.
 template <SimdLevel level>
 bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Real rayTMax, RayCounters& counters) const {
     const RayLanes lanes(ray);
+#if RT_BLOCK_PAIRS
+    const RayLanesOf<RT_LEVEL_LANES::PairLanes> pairLanes(ray);
+#endif
     std::uint64_t tests = 0;
     bool found = false;
     const HitFilter* filter = filter_;
-    // whether a block's hits count: any of them without a filter, else one the filter accepts
-    const auto counts = [&](const TriangleBlock& block, const BlockHits& hits) {
-        if (!filter) return hits.lanes != 0;
-        for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
+    // Whether the hits `bits` of the blocks from `first` on count (lane i in block i / kSimdWidth):
+    // any of them without a filter, else one the filter accepts.
+    const auto counts = [&](const TriangleBlock* first, const auto& hits, unsigned bits) {
+        if (!filter) return bits != 0;
+        for (; bits != 0; bits &= bits - 1) {
             const int lane = std::countr_zero(bits);
-            if (filter->accepts(ray, {hits.t[lane], block.id[lane], hits.u[lane], hits.v[lane]})) return true;
+            const Hit hit{hits.t[lane], first[lane / kSimdWidth].id[lane % kSimdWidth], hits.u[lane], hits.v[lane]};
+            if (filter->accepts(ray, hit)) return true;
         }
         return false;
     };
-    traverse(ray, invDir, node, tMin, tMax, rayTMax, counters,
-             [&](const PrimitiveView& prims, const LeafPrimitives& leaf) {
-                 for (std::uint32_t b = 0; b < leaf.blockCount(); ++b) {
-                     tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
-                     const TriangleBlock& block = leaf.blocks()[b];
-                     if (counts(block, intersectBlock(block, lanes, rayTMax))) return found = true;
-                 }
-                 const std::uint32_t* otherIds = leaf.otherIds();
-                 for (std::uint32_t i = 0; i < leaf.others; ++i) {
-                     ++tests;
-                     const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, rayTMax, *filter)
-                                              : prims.intersectsAny(otherIds[i], ray, rayTMax);
-                     if (hits) return found = true;
-                 }
-                 return false;
-             });
+    traverse(
+        ray, invDir, node, tMin, tMax, rayTMax,
+        counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
+            const TriangleBlock* blocks = leaf.blocks();
+            const auto blockTests = [&](std::uint32_t b) {
+                return std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
+            };
+            std::uint32_t b = 0;
+#if RT_BLOCK_PAIRS
+            for (; b + 2 <= leaf.blockCount(); b += 2) {
+                const auto hits = RT_LEVEL_LANES::intersectBlockPair(blocks + b, pairLanes, rayTMax);
+                tests += blockTests(b);
+                if (counts(blocks + b, hits, hits.lanes & RT_LEVEL_LANES::kFirstOfPair)) return found = true;
+                tests += blockTests(b + 1);
+                if (counts(blocks + b, hits, hits.lanes & ~RT_LEVEL_LANES::kFirstOfPair)) return found = true;
+            }
+#endif
+            for (; b < leaf.blockCount(); ++b) {
+                tests += blockTests(b);
+                const BlockHits hits = intersectBlock(blocks[b], lanes, rayTMax);
+                if (counts(blocks + b, hits, hits.lanes)) return found = true;
+            }
+            const std::uint32_t* otherIds = leaf.otherIds();
+            for (std::uint32_t i = 0; i < leaf.others; ++i) {
+                ++tests;
+                const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, rayTMax, *filter)
+                                         : prims.intersectsAny(otherIds[i], ray, rayTMax);
+                if (hits) return found = true;
+            }
+            return false;
+        });
     counters.intersectionTests += tests;
     return found;
 }

@@ -97,12 +97,6 @@ void SplitTree::layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes
     }
 }
 
-// The part [tMin, tMax] of the ray inside the root voxel; false if it misses the voxel.
-bool SplitTree::enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const {
-    tMin = 0;
-    return !nodes_.empty() && !bounds_.empty() && clipRay(bounds_, ray, invDir, tMin, tMax);
-}
-
 void SplitTree::forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const {
     if (nodes_.empty()) return;
     struct Pending {

@@ -127,7 +127,11 @@ private:
     void traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const;
     // Whether `count` rays may walk the tree as a packet (kd_packet.cpp checks that they are coherent).
     bool tracesTogether(int count) const { return !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty(); }
-    bool enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const;
+    // The part [tMin, tMax] of the ray inside the root voxel; false if it misses the voxel.
+    bool enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const {
+        tMin = 0;
+        return !nodes_.empty() && !bounds_.empty() && clipRay(bounds_, ray, invDir, tMin, tMax);
+    }
     // The single-ray queries in the subtree at `node`, for the part [tMin, tMax] of the ray inside
     // it: from the root for intersect() and occluded(), from deeper for a ray a packet hands on alone.
     // invDir: reciprocal(ray.direction), found once per ray by the caller. On one level's lanes:

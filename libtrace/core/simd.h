@@ -255,6 +255,13 @@ RT_SIMD_ONE_INTRINSIC_OPERATIONS(RT_AVX2_OP)
 RT_SIMD_COMPARISONS(RT_AVX2_COMPARE)
 inline unsigned laneBits(RealLanes mask) { return unsigned(RT_AVX2_OP(movemask)(mask.v)); }
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) { return {RT_AVX2_OP(blendv)(b.v, a.v, mask.v)}; }
+// The lanes of two SSE2 registers' worth, `low` in the lower half: two leaf blocks tested at once
+// (accel/kd_single.cpp).
+#if defined(RT_REAL_FLOAT)
+inline RealLanes loadHalves(const Real* low, const Real* high) { return {_mm256_loadu2_m128(high, low)}; }
+#else
+inline RealLanes loadHalves(const Real* low, const Real* high) { return {_mm256_loadu2_m128d(high, low)}; }
+#endif
 
 #undef RT_AVX2_COMPARE
 #undef RT_AVX2_OP

@@ -34,53 +34,76 @@ struct alignas(16) TriangleBlock {
     }
 };
 
+// A set of lanes the block test runs on: Type, a register of Real lanes with core/simd.h's
+// operations (found by argument-dependent lookup), and all(x), x in every lane. BaseLanes is
+// simd_base's register, one block's width; accel/kd_single.cpp adds a register two blocks wide.
+struct BaseLanes {
+    using Type = RealLanes;
+    static RealLanes all(Real x) { return broadcast(x); }
+};
+
 // The ray, once per ray in every lane.
-struct RayLanes {
-    RealLanes origin[3], direction[3];
-    explicit RayLanes(const Ray& ray) {
+template <class Lanes>
+struct RayLanesOf {
+    typename Lanes::Type origin[3], direction[3];
+    // Always inlined, as the block test (mollerTrumboreLanes) is.
+    [[gnu::always_inline]] explicit RayLanesOf(const Ray& ray) {
         for (int axis = 0; axis < 3; ++axis) {
-            origin[axis] = broadcast(ray.origin[axis]);
-            direction[axis] = broadcast(ray.direction[axis]);
+            origin[axis] = Lanes::all(ray.origin[axis]);
+            direction[axis] = Lanes::all(ray.direction[axis]);
         }
     }
 };
+using RayLanes = RayLanesOf<BaseLanes>;
 
 // One lane per triangle of the hits with 0 < t < tMax, as intersectTriangle decides them.
-struct BlockHits {
+template <int N>
+struct LaneHits {
     unsigned lanes = 0;  // bit i: lane i hits
-    Real t[kSimdWidth], u[kSimdWidth], v[kSimdWidth];
+    Real t[N], u[N], v[N];
 };
+using BlockHits = LaneHits<kSimdWidth>;
 
-// Moller-Trumbore on a block's triangles (see intersectTriangle: the same operations in the same
-// order; every lane is computed, the rejections become masks).
-inline BlockHits intersectBlock(const TriangleBlock& b, const RayLanes& ray, Real tMax) {
-    const auto load = [](const Real(&c)[3][kSimdWidth], int axis) { return loadLanes(c[axis]); };
-    const RealLanes e1x = load(b.e1, 0), e1y = load(b.e1, 1), e1z = load(b.e1, 2);
-    const RealLanes e2x = load(b.e2, 0), e2y = load(b.e2, 1), e2z = load(b.e2, 2);
-    const RealLanes &dx = ray.direction[0], &dy = ray.direction[1], &dz = ray.direction[2];
+// Moller-Trumbore with one triangle per lane (see intersectTriangle: the same operations in the
+// same order; every lane is computed, the rejections become masks). load(component, axis) gives
+// the lanes' triangles' TriangleBlock::p0, e1 or e2 (a pointer to the member) on one axis. Always
+// inlined: in a function compiled for AVX2 or AVX-512 (core/simd.h) the test is compiled for it too.
+template <class Lanes, int N, class Load>
+[[gnu::always_inline]] inline LaneHits<N> mollerTrumboreLanes(const Load& load, const RayLanesOf<Lanes>& ray,
+                                                              Real tMax) {
+    using L = typename Lanes::Type;
+    const L e1x = load(&TriangleBlock::e1, 0), e1y = load(&TriangleBlock::e1, 1), e1z = load(&TriangleBlock::e1, 2);
+    const L e2x = load(&TriangleBlock::e2, 0), e2y = load(&TriangleBlock::e2, 1), e2z = load(&TriangleBlock::e2, 2);
+    const L &dx = ray.direction[0], &dy = ray.direction[1], &dz = ray.direction[2];
     // p = cross(d, e2), det = dot(e1, p)
-    const RealLanes px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
-    const RealLanes det = e1x * px + e1y * py + e1z * pz;
-    const RealLanes invDet = broadcast(1) / det;
+    const L px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
+    const L det = e1x * px + e1y * py + e1z * pz;
+    const L invDet = Lanes::all(1) / det;
     // s = origin - p0, u = dot(s, p) / det
-    const RealLanes sx = ray.origin[0] - load(b.p0, 0), sy = ray.origin[1] - load(b.p0, 1),
-                    sz = ray.origin[2] - load(b.p0, 2);
-    const RealLanes u = (sx * px + sy * py + sz * pz) * invDet;
+    const L sx = ray.origin[0] - load(&TriangleBlock::p0, 0), sy = ray.origin[1] - load(&TriangleBlock::p0, 1),
+            sz = ray.origin[2] - load(&TriangleBlock::p0, 2);
+    const L u = (sx * px + sy * py + sz * pz) * invDet;
     // q = cross(s, e1), v = dot(d, q) / det, t = dot(e2, q) / det
-    const RealLanes qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
-    const RealLanes v = (dx * qx + dy * qy + dz * qz) * invDet;
-    const RealLanes t = (e2x * qx + e2y * qy + e2z * qz) * invDet;
-    const RealLanes zero = broadcast(0), one = broadcast(1);
-    const RealLanes inside = notEqual(det, zero) & notLessThan(u, zero) & notGreaterThan(u, one) &
-                             notLessThan(v, zero) & notGreaterThan(u + v, one);
-    BlockHits hits;
-    hits.lanes = laneBits(inside & lessThan(zero, t) & lessThan(t, broadcast(tMax)));
+    const L qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
+    const L v = (dx * qx + dy * qy + dz * qz) * invDet;
+    const L t = (e2x * qx + e2y * qy + e2z * qz) * invDet;
+    const L zero = Lanes::all(0), one = Lanes::all(1);
+    const L inside = notEqual(det, zero) & notLessThan(u, zero) & notGreaterThan(u, one) & notLessThan(v, zero) &
+                     notGreaterThan(u + v, one);
+    LaneHits<N> hits;
+    hits.lanes = laneBits(inside & lessThan(zero, t) & lessThan(t, Lanes::all(tMax)));
     if (hits.lanes) {
         storeLanes(hits.t, t);
         storeLanes(hits.u, u);
         storeLanes(hits.v, v);
     }
     return hits;
+}
+
+// The test on one block's triangles.
+inline BlockHits intersectBlock(const TriangleBlock& b, const RayLanes& ray, Real tMax) {
+    return mollerTrumboreLanes<BaseLanes, kSimdWidth>(
+        [&](auto component, int axis) { return loadLanes((b.*component)[axis]); }, ray, tMax);
 }
 
 }  // namespace rt
