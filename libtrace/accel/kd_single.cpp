@@ -24,36 +24,74 @@
 // instructions for two blocks' triangles, each lane computing what it computes in a block alone.
 #define RT_BLOCK_PAIRS (RT_LEVEL_AVX2 || RT_LEVEL_AVX512)
 
-#if RT_BLOCK_PAIRS
 namespace rt::RT_LEVEL_NAMESPACE {
 
 namespace {
 
+#if RT_BLOCK_PAIRS
 struct PairLanes {
     using Type = simd_avx2::RealLanes;
     static Type all(Real x) { return simd_avx2::broadcast(x); }
 };
-constexpr int kPairLanes = 2 * kSimdWidth;
-static_assert(kPairLanes == simd_avx2::kLanes);
-using PairHits = LaneHits<kPairLanes>;
-// The lanes of a pair's first block.
-constexpr unsigned kFirstOfPair = (1u << kSimdWidth) - 1;
+static_assert(2 * kSimdWidth == simd_avx2::kLanes);
 
 // The blocks `first` and `first + 1`, lane i of the pair being lane i of the first and lane
 // kSimdWidth + i of the second. Always inlined, as the one-block test is in its loop.
-[[gnu::always_inline]] inline PairHits intersectBlockPair(const TriangleBlock* first, const RayLanesOf<PairLanes>& ray,
-                                                          Real tMax) {
-    return mollerTrumboreLanes<PairLanes, kPairLanes>(
+[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const TriangleBlock* first,
+                                                                          const RayLanesOf<PairLanes>& ray, Real tMax) {
+    return mollerTrumboreLanes<PairLanes, 2 * kSimdWidth>(
         [&](auto component, int axis) {
             return simd_avx2::loadHalves((first[0].*component)[axis], (first[1].*component)[axis]);
         },
         ray, tMax);
 }
+#endif
+
+// A leaf's triangle blocks tested against one ray, in order: two at a time where the level has
+// pairs, the last alone when their number is odd.
+class BlockTests {
+public:
+    explicit BlockTests(const Ray& ray)
+        : one_(ray)
+#if RT_BLOCK_PAIRS
+          ,
+          two_(ray)
+#endif
+    {
+    }
+
+    // visit(b, hits, count) for each group of `count` blocks from block b on, lane i of `hits` in
+    // block b + i / kSimdWidth, each group tested against tMax as it is then; stops when visit
+    // returns true, and returns whether it did.
+    template <typename Visit>
+    [[gnu::always_inline]] bool operator()(const LeafPrimitives& leaf, const Real& tMax, const Visit& visit) const {
+        const TriangleBlock* blocks = leaf.blocks();
+        std::uint32_t b = 0;
+#if RT_BLOCK_PAIRS
+        for (; b + 2 <= leaf.blockCount(); b += 2)
+            if (visit(b, intersectBlockPair(blocks + b, two_, tMax), 2)) return true;
+#endif
+        for (; b < leaf.blockCount(); ++b)
+            if (visit(b, intersectBlock(blocks[b], one_, tMax), 1)) return true;
+        return false;
+    }
+
+private:
+    RayLanes one_;
+#if RT_BLOCK_PAIRS
+    RayLanesOf<PairLanes> two_;
+#endif
+};
+
+// Lane `lane` of the hits of the blocks from `first` on as a Hit.
+template <int N>
+Hit laneHit(const TriangleBlock* first, const LaneHits<N>& hits, int lane) {
+    return {hits.t[lane], first[lane / kSimdWidth].id[lane % kSimdWidth], hits.u[lane], hits.v[lane]};
+}
 
 }  // namespace
 
 }  // namespace rt::RT_LEVEL_NAMESPACE
-#endif
 
 namespace rt {
 
@@ -146,34 +184,23 @@ void SplitTree::traverse(const Ray& ray, const Vec3& invDir, std::uint32_t index
 template <SimdLevel level>
 void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Hit& nearest, RayCounters& counters) const {
-    const RayLanes lanes(ray);
-#if RT_BLOCK_PAIRS
-    const RayLanesOf<RT_LEVEL_LANES::PairLanes> pairLanes(ray);
-#endif
+    const RT_LEVEL_LANES::BlockTests testBlocks(ray);
     const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
-    // The hits of the blocks from `first` on (one block, or a pair), lane i in block i / kSimdWidth.
-    const auto take = [&](const TriangleBlock* first, const auto& hits) {
-        for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
-            const int lane = std::countr_zero(bits);
-            if (!(hits.t[lane] < nearest.t)) continue;
-            const Hit candidate{hits.t[lane], first[lane / kSimdWidth].id[lane % kSimdWidth], hits.u[lane],
-                                hits.v[lane]};
-            if (filter && !filter->accepts(ray, candidate)) continue;
-            nearest = candidate;
-        }
-    };
     traverse(
         ray, invDir, node, tMin, tMax, nearest.t,
         counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
             tests += leaf.triangles + leaf.others;
-            const TriangleBlock* blocks = leaf.blocks();
-            std::uint32_t b = 0;
-#if RT_BLOCK_PAIRS
-            for (; b + 2 <= leaf.blockCount(); b += 2)
-                take(blocks + b, RT_LEVEL_LANES::intersectBlockPair(blocks + b, pairLanes, nearest.t));
-#endif
-            for (; b < leaf.blockCount(); ++b) take(blocks + b, intersectBlock(blocks[b], lanes, nearest.t));
+            testBlocks(leaf, nearest.t, [&](std::uint32_t b, const auto& hits, int) {
+                for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
+                    const int lane = std::countr_zero(bits);
+                    if (!(hits.t[lane] < nearest.t)) continue;
+                    const Hit candidate = RT_LEVEL_LANES::laneHit(leaf.blocks() + b, hits, lane);
+                    if (filter && !filter->accepts(ray, candidate)) continue;
+                    nearest = candidate;
+                }
+                return false;
+            });
             const std::uint32_t* otherIds = leaf.otherIds();
             for (std::uint32_t i = 0; i < leaf.others; ++i) {
                 if (filter)
@@ -192,46 +219,29 @@ void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t 
 template <SimdLevel level>
 bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Real rayTMax, RayCounters& counters) const {
-    const RayLanes lanes(ray);
-#if RT_BLOCK_PAIRS
-    const RayLanesOf<RT_LEVEL_LANES::PairLanes> pairLanes(ray);
-#endif
+    const RT_LEVEL_LANES::BlockTests testBlocks(ray);
     std::uint64_t tests = 0;
     bool found = false;
     const HitFilter* filter = filter_;
-    // Whether the hits `bits` of the blocks from `first` on count (lane i in block i / kSimdWidth):
-    // any of them without a filter, else one the filter accepts.
-    const auto counts = [&](const TriangleBlock* first, const auto& hits, unsigned bits) {
-        if (!filter) return bits != 0;
-        for (; bits != 0; bits &= bits - 1) {
-            const int lane = std::countr_zero(bits);
-            const Hit hit{hits.t[lane], first[lane / kSimdWidth].id[lane % kSimdWidth], hits.u[lane], hits.v[lane]};
-            if (filter->accepts(ray, hit)) return true;
-        }
-        return false;
-    };
     traverse(
         ray, invDir, node, tMin, tMax, rayTMax,
         counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
-            const TriangleBlock* blocks = leaf.blocks();
-            const auto blockTests = [&](std::uint32_t b) {
-                return std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
+            // Block by block within a group: its tests counted, then whether one of its hits counts
+            // (any without a filter, else one the filter accepts).
+            const auto blockedIn = [&](std::uint32_t first, const auto& hits, int count) {
+                for (int k = 0; k < count; ++k) {
+                    const std::uint32_t b = first + std::uint32_t(k);
+                    tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
+                    unsigned bits = hits.lanes & (((1u << kSimdWidth) - 1) << (k * kSimdWidth));
+                    if (!filter && bits != 0) return true;
+                    for (; bits != 0; bits &= bits - 1)
+                        if (filter->accepts(
+                                ray, RT_LEVEL_LANES::laneHit(leaf.blocks() + first, hits, std::countr_zero(bits))))
+                            return true;
+                }
+                return false;
             };
-            std::uint32_t b = 0;
-#if RT_BLOCK_PAIRS
-            for (; b + 2 <= leaf.blockCount(); b += 2) {
-                const auto hits = RT_LEVEL_LANES::intersectBlockPair(blocks + b, pairLanes, rayTMax);
-                tests += blockTests(b);
-                if (counts(blocks + b, hits, hits.lanes & RT_LEVEL_LANES::kFirstOfPair)) return found = true;
-                tests += blockTests(b + 1);
-                if (counts(blocks + b, hits, hits.lanes & ~RT_LEVEL_LANES::kFirstOfPair)) return found = true;
-            }
-#endif
-            for (; b < leaf.blockCount(); ++b) {
-                tests += blockTests(b);
-                const BlockHits hits = intersectBlock(blocks[b], lanes, rayTMax);
-                if (counts(blocks + b, hits, hits.lanes)) return found = true;
-            }
+            if (testBlocks(leaf, rayTMax, blockedIn)) return found = true;
             const std::uint32_t* otherIds = leaf.otherIds();
             for (std::uint32_t i = 0; i < leaf.others; ++i) {
                 ++tests;

@@ -1,9 +1,7 @@
 #include "accel/split_tree.h"
 
-#include <bit>
-#include <cmath>
+#include <algorithm>
 #include <cstring>
-#include <limits>
 #include <optional>
 #include <utility>
 
