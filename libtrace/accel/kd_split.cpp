@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <limits>
 #include <utility>
 
 #include "accel/build_chunks.h"
@@ -136,20 +137,27 @@ SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& 
 namespace {
 
 // The planes base + extent k / divisions for k = first..last, rounded to float, without
-// repeats. A box's place among them is found by arithmetic, then corrected for the rounding
-// by a step or two: the binned nodes are the largest, where a binary search per bound counts.
+// repeats. A bound's place among them is guessed by arithmetic and then corrected against the
+// planes themselves, so it is exact: a step each way without a branch (the planes sit between
+// two sentinels, -inf and +inf), then loops for a guess off by more, which the rounding of
+// the planes leaves rare. The binned nodes are the largest, and their boxes many: a binary
+// search, or a mispredicted branch, per bound cost more than the counting.
 class EvenPlanes {
 public:
     EvenPlanes(double base, double extent, int divisions, int first, int last)
-        : base_(base), scale_(extent > 0 ? divisions / extent : 0), first_(first) {
+        : base_(base), scale_(extent > 0 ? divisions / extent : 0), offset_(1 - first) {
+        constexpr float inf = std::numeric_limits<float>::infinity();
+        guarded_.push_back(-inf);
         for (int k = first; k <= last; ++k) {
             const float p = float(base + extent * k / divisions);
-            if (planes_.empty() || p > planes_.back()) planes_.push_back(p);
+            if (guarded_.size() == 1 || p > guarded_.back()) guarded_.push_back(p);
         }
+        size_ = guarded_.size() - 1;
+        guarded_.push_back(inf);
     }
 
-    std::size_t size() const { return planes_.size(); }
-    float operator[](std::size_t k) const { return planes_[k]; }
+    std::size_t size() const { return size_; }
+    float operator[](std::size_t k) const { return guarded_[k + 1]; }
     // The number of planes p <= x (std::upper_bound's index).
     std::size_t atOrBelow(float x) const {
         return count(x, [x](float p) { return p <= x; });
@@ -160,44 +168,69 @@ public:
     }
 
 private:
+    // The k with before(plane k - 1) and !before(plane k): the planes before x are a prefix.
     template <typename Before>
     std::size_t count(float x, const Before& before) const {
-        const double guess = (double(x) - base_) * scale_ - first_ + 1;
-        std::size_t k = guess > 0 ? (guess < double(size()) ? std::size_t(guess) : size()) : 0;
-        while (k < size() && before(planes_[k])) ++k;
-        while (k > 0 && !before(planes_[k - 1])) --k;
+        const float* plane = guarded_.data() + 1;                     // plane[-1] = -inf, plane[size_] = +inf
+        const double guess = (double(x) - base_) * scale_ + offset_;  // NaN and infinities give 0 or size_
+        std::size_t k = guess > 0 ? (guess < double(size_) ? std::size_t(guess) : size_) : 0;
+        k += before(plane[k]);
+        k -= !before(plane[k - 1]);
+        while (before(plane[k])) ++k;
+        while (!before(plane[k - 1])) --k;
         return k;
     }
 
-    double base_, scale_;
-    int first_;
-    std::vector<float> planes_;
-};
-
-// How many boxes start, end and lie in each plane of one axis's EvenPlanes: starts[k] counts
-// the boxes whose first plane above their lower bound is k, ends[k] those whose first plane at
-// or above their upper bound is k, planars[k] those lying in plane k.
-struct PlaneCounts {
-    std::vector<std::size_t> starts, ends, planars;
-
-    explicit PlaneCounts(std::size_t planes) : starts(planes + 1, 0), ends(planes + 1, 0), planars(planes, 0) {}
-
-    void add(const FloatBox& b, int axis, const EvenPlanes& planes) {
-        ++starts[planes.atOrBelow(b.lo[axis])];
-        const std::size_t end = planes.below(b.hi[axis]);
-        ++ends[end];
-        if (b.planar(axis) && end != planes.size() && planes[end] == b.lo[axis]) ++planars[end];
-    }
-    void add(const PlaneCounts& o) {
-        for (std::size_t k = 0; k < starts.size(); ++k) starts[k] += o.starts[k];
-        for (std::size_t k = 0; k < ends.size(); ++k) ends[k] += o.ends[k];
-        for (std::size_t k = 0; k < planars.size(); ++k) planars[k] += o.planars[k];
-    }
+    double base_, scale_, offset_;
+    std::size_t size_;
+    std::vector<float> guarded_;
 };
 
 struct AxisPlanes {
     int axis;
     EvenPlanes planes;
+};
+
+// How many boxes start, end and lie in each plane of each axis's EvenPlanes: starts[k] counts
+// the boxes whose first plane above their lower bound is k, ends[k] those whose first plane at
+// or above their upper bound is k, planars[k] those lying in plane k (a planar box lying in no
+// plane is counted in an unused last slot, so that no branch decides). One array of 32-bit
+// counts per axis.
+class PlaneCounts {
+public:
+    explicit PlaneCounts(const std::vector<AxisPlanes>& axes) : axes_(axes) {
+        for (const AxisPlanes& a : axes) {
+            first_.push_back(counts_.size());
+            counts_.resize(counts_.size() + 3 * (a.planes.size() + 1), 0);
+        }
+    }
+
+    std::uint32_t starts(std::size_t a, std::size_t k) const { return counts_[first_[a] + k]; }
+    std::uint32_t ends(std::size_t a, std::size_t k) const { return counts_[first_[a] + stride(a) + k]; }
+    std::uint32_t planars(std::size_t a, std::size_t k) const { return counts_[first_[a] + 2 * stride(a) + k]; }
+
+    void add(const FloatBox& b) {
+        for (std::size_t a = 0; a < axes_.size(); ++a) {
+            const int axis = axes_[a].axis;
+            const EvenPlanes& planes = axes_[a].planes;
+            std::uint32_t* counts = counts_.data() + first_[a];
+            const std::size_t end = planes.below(b.hi[axis]);
+            const bool inPlane = b.planar(axis) && planes[end] == b.lo[axis];
+            ++counts[planes.atOrBelow(b.lo[axis])];
+            ++counts[stride(a) + end];
+            ++counts[2 * stride(a) + (inPlane ? end : planes.size())];
+        }
+    }
+    void add(const PlaneCounts& o) {
+        for (std::size_t k = 0; k < counts_.size(); ++k) counts_[k] += o.counts_[k];
+    }
+
+private:
+    std::size_t stride(std::size_t a) const { return axes_[a].planes.size() + 1; }
+
+    const std::vector<AxisPlanes>& axes_;
+    std::vector<std::size_t> first_;  // per axis, where its counts start
+    std::vector<std::uint32_t> counts_;
 };
 
 // Offers every plane of `axes` to `best`, axis by axis in order, with the boxes below, above
@@ -206,22 +239,18 @@ struct AxisPlanes {
 SahSplit bestOfPlanes(const std::vector<FloatBox>& boxes, const std::vector<AxisPlanes>& axes, const SahModel& sah) {
     const std::size_t n = boxes.size();
     const Chunks chunks = nodeChunks(n);
-    std::vector<std::vector<PlaneCounts>> counts(chunks.count());  // per chunk, per axis
+    std::vector<PlaneCounts> counts(chunks.count(), PlaneCounts(axes));  // per chunk
     forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
-        for (const AxisPlanes& a : axes) counts[c].emplace_back(a.planes.size());
-        for (std::size_t i = begin; i < end; ++i)
-            for (std::size_t a = 0; a < axes.size(); ++a) counts[c][a].add(boxes[i], axes[a].axis, axes[a].planes);
+        for (std::size_t i = begin; i < end; ++i) counts[c].add(boxes[i]);
     });
-    for (std::size_t c = 1; c < counts.size(); ++c)
-        for (std::size_t a = 0; a < axes.size(); ++a) counts[0][a].add(counts[c][a]);
+    for (std::size_t c = 1; c < counts.size(); ++c) counts[0].add(counts[c]);
     SahSplit best;
     for (std::size_t a = 0; a < axes.size(); ++a) {
-        const PlaneCounts& count = counts[0][a];
         std::size_t started = 0, ended = 0;
         for (std::size_t k = 0; k < axes[a].planes.size(); ++k) {
-            started += count.starts[k];
-            ended += count.ends[k];
-            sah.consider(axes[a].axis, axes[a].planes[k], started, n - ended, count.planars[k], best);
+            started += counts[0].starts(a, k);
+            ended += counts[0].ends(a, k);
+            sah.consider(axes[a].axis, axes[a].planes[k], started, n - ended, counts[0].planars(a, k), best);
         }
     }
     return best;
