@@ -139,9 +139,10 @@ namespace {
 // The planes base + extent k / divisions for k = first..last, rounded to float, without
 // repeats. A bound's place among them is guessed by arithmetic and then corrected against the
 // planes themselves, so it is exact: a step each way without a branch (the planes sit between
-// two sentinels, -inf and +inf), then loops for a guess off by more, which the rounding of
-// the planes leaves rare. The binned nodes are the largest, and their boxes many: a binary
-// search, or a mispredicted branch, per bound cost more than the counting.
+// two sentinels, -inf and +inf, so that the step may look one past either end), then loops for
+// a guess off by more, which the rounding of the planes leaves rare. The binned nodes are the
+// largest, and their boxes many: a binary search, or a mispredicted branch, per bound cost more
+// than the counting.
 class EvenPlanes {
 public:
     EvenPlanes(double base, double extent, int divisions, int first, int last)
@@ -174,10 +175,11 @@ private:
         const float* plane = guarded_.data() + 1;                     // plane[-1] = -inf, plane[size_] = +inf
         const double guess = (double(x) - base_) * scale_ + offset_;  // NaN and infinities give 0 or size_
         std::size_t k = guess > 0 ? (guess < double(size_) ? std::size_t(guess) : size_) : 0;
-        k += before(plane[k]);
-        k -= !before(plane[k - 1]);
-        while (before(plane[k])) ++k;
-        while (!before(plane[k - 1])) --k;
+        // Bounded as well, so that even a bound of inf or NaN ends within [0, size_].
+        k += std::size_t((k < size_) & before(plane[k]));
+        k -= std::size_t((k > 0) & !before(plane[k - 1]));
+        while (k < size_ && before(plane[k])) ++k;
+        while (k > 0 && !before(plane[k - 1])) --k;
         return k;
     }
 
