@@ -176,8 +176,8 @@ private:
         const double guess = (double(x) - base_) * scale_ + offset_;  // NaN and infinities give 0 or size_
         std::size_t k = guess > 0 ? (guess < double(size_) ? std::size_t(guess) : size_) : 0;
         // Bounded as well, so that even a bound of inf or NaN ends within [0, size_].
-        k += std::size_t((k < size_) & before(plane[k]));
-        k -= std::size_t((k > 0) & !before(plane[k - 1]));
+        k += std::size_t(before(plane[k])) & std::size_t(k < size_);
+        k -= std::size_t(!before(plane[k - 1])) & std::size_t(k > 0);
         while (k < size_ && before(plane[k])) ++k;
         while (k > 0 && !before(plane[k - 1])) --k;
         return k;
