@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -172,14 +173,15 @@ private:
     // The k with before(plane k - 1) and !before(plane k): the planes before x are a prefix.
     template <typename Before>
     std::size_t count(float x, const Before& before) const {
+        if (!std::isfinite(x)) return x > 0 ? size_ : 0;              // +inf is above every plane; -inf and NaN none
         const float* plane = guarded_.data() + 1;                     // plane[-1] = -inf, plane[size_] = +inf
         const double guess = (double(x) - base_) * scale_ + offset_;  // NaN and infinities give 0 or size_
         std::size_t k = guess > 0 ? (guess < double(size_) ? std::size_t(guess) : size_) : 0;
-        // Bounded as well, so that even a bound of inf or NaN ends within [0, size_].
-        k += std::size_t(before(plane[k])) & std::size_t(k < size_);
-        k -= std::size_t(!before(plane[k - 1])) & std::size_t(k > 0);
-        while (k < size_ && before(plane[k])) ++k;
-        while (k > 0 && !before(plane[k - 1])) --k;
+        // For a finite x the sentinels stop every step and loop within [0, size_].
+        k += std::size_t(before(plane[k]));
+        k -= std::size_t(!before(plane[k - 1]));
+        while (before(plane[k])) ++k;
+        while (!before(plane[k - 1])) --k;
         return k;
     }
 
