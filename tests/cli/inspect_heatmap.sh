@@ -12,7 +12,7 @@ green() {
 for tree in kd bsp; do
     expect_exit 0 "$RT_INSPECT" --tree $tree --heatmap "$WORK/heat.png" -x 120 -y 90 "$WORK/dense_left.xml"
     info=$(iinfo "$WORK/heat.png") || fail "iinfo cannot read the heat map"
-    echo "$info" | grep -q "120 x *1[0-9][0-9], 3 channel, uint8 png" || fail "unexpected heat map: $info"
+    grep -q "120 x *1[0-9][0-9], 3 channel, uint8 png" <<<"$info" || fail "unexpected heat map: $info"
     iinfo -v "$WORK/heat.png" | grep -q 'Software: "rt-inspect [0-9]' || fail "the heat map does not name rt-inspect"
     # The hottest pixel is in the dense cluster, on the left of the picture.
     left=$(green Max "$WORK/heat.png" 0 0 60 90)

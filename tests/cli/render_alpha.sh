@@ -15,7 +15,7 @@ iinfo "$WORK/b.png" | grep -q "3 channel, uint8 png" || fail "--alpha off wrote 
 "$RT_RENDER" "$scene" "${opts[@]}" -S 4 --exr-pixels float --alpha off -f "$WORK/b.exr"
 iinfo -v "$WORK/a.exr" | grep -q "channel list: R, G, B, A" || fail "a.exr: $(iinfo -v "$WORK/a.exr")"
 stats=$(oiiotool "$WORK/a.exr" --printstats)
-echo "$stats" | grep -q "Min: 0.000000 0.000000 0.000000 0.000000" || fail "no empty pixel is all zero: $stats"
+grep -q "Min: 0.000000 0.000000 0.000000 0.000000" <<<"$stats" || fail "no empty pixel is all zero: $stats"
 # Fractional coverage from supersampling: some alpha strictly between 0 and 1.
 oiiotool "$WORK/a.exr" --ch A -o "$WORK/alpha.exr"
 oiiotool --dumpdata "$WORK/alpha.exr" | awk '/^ *Pixel/ && $NF > 0 && $NF < 1 {found = 1} END {exit !found}' ||
