@@ -175,7 +175,7 @@ private:
     std::size_t count(float x, const Before& before) const {
         if (!std::isfinite(x)) return x > 0 ? size_ : 0;              // +inf is above every plane; -inf and NaN none
         const float* plane = guarded_.data() + 1;                     // plane[-1] = -inf, plane[size_] = +inf
-        const double guess = (double(x) - base_) * scale_ + offset_;  // NaN and infinities give 0 or size_
+        const double guess = (double(x) - base_) * scale_ + offset_;  // clamped to [0, size_] below
         std::size_t k = guess > 0 ? (guess < double(size_) ? std::size_t(guess) : size_) : 0;
         // For a finite x the sentinels stop every step and loop within [0, size_].
         k += std::size_t(before(plane[k]));

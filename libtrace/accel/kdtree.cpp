@@ -161,7 +161,8 @@ private:
         Scratch own;
         Scratch& scratch = scratchFor(n, own);
         const std::array<std::size_t, 3> sides = placeSides(node, split, scratch);
-        if (sides[Both] == 0 && (sides[Below] == 0 || sides[Above] == 0) && double(n) <= node.referenceBudget) {
+        if (sides[Both] == 0 && (sides[Below] == 0 || sides[Above] == 0) &&
+            withinBudget(node.referenceBudget, double(n))) {
             // The plane cuts off empty space: the other child gets the node's primitives, their
             // bounds and their sorted events as they are, so they move there instead of being
             // dealt out and merged (the same child). The tree scene's foliage in its large box
@@ -316,11 +317,14 @@ private:
         mergeSortedEvents(kept, kept + keptCount, fresh.data(), fresh.data() + fresh.size(), events.data());
     }
 
+    // Whether children holding `references` in all fit in their parent's `budget`.
+    static bool withinBudget(double budget, double references) { return references > 0 && references <= budget; }
+
     // Gives each child its share of the parent's budget, or returns false when the children's
     // references alone exceed it (the parent becomes a leaf).
     static bool shareBudget(double budget, KdNode& below, KdNode& above) {
         const double references = double(below.primitives.size() + above.primitives.size());
-        if (references == 0 || references > budget) return false;
+        if (!withinBudget(budget, references)) return false;
         below.referenceBudget = budget * double(below.primitives.size()) / references;
         above.referenceBudget = budget - below.referenceBudget;
         return true;
