@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "accel/build_chunks.h"
+#include "core/simd.h"
 
 namespace rt {
 
@@ -160,6 +161,12 @@ public:
 
     std::size_t size() const { return size_; }
     float operator[](std::size_t k) const { return guarded_[k + 1]; }
+    // The planes between their sentinels, -inf first and +inf last (size() + 2 of them), and the
+    // guess's arithmetic in float, for the AVX-512 counting below.
+    const float* guarded() const { return guarded_.data(); }
+    float guessBase() const { return float(base_); }
+    float guessScale() const { return float(scale_); }
+    float guessOffset() const { return float(offset_); }
     // The number of planes p <= x (std::upper_bound's index).
     std::size_t atOrBelow(float x) const {
         return count(x, [x](float p) { return p <= x; });
@@ -195,6 +202,79 @@ struct AxisPlanes {
     EvenPlanes planes;
 };
 
+}  // namespace
+
+#if RT_SIMD_AVX512
+RT_AVX512_BEGIN
+namespace simd_avx512 {
+
+namespace {
+
+// A plane looked up by its index among the guarded planes (-inf first), from three registers that
+// hold up to 48 of them: two permutes and a blend instead of a gather.
+__m512 planeAt(const __m512 (&table)[3], __m512i j) {
+    const __m512 first32 = _mm512_permutex2var_ps(table[0], j, table[1]);
+    const __m512 last16 = _mm512_maskz_permutexvar_ps(0xFFFF, j, table[2]);
+    return _mm512_mask_blend_ps(_mm512_cmpge_epi32_mask(j, _mm512_set1_epi32(32)), first32, last16);
+}
+
+// EvenPlanes::count for 16 bounds: the guess (in float here, which can only make it worse), the
+// two steps, and then the check that each lane's k has the planes before x below it and the others
+// from k on. A lane that fails (its guess was off by more than a step) is set in `unsure`, for the
+// scalar search. Before: _CMP_LE_OQ for p <= x (atOrBelow), _CMP_LT_OQ for p < x (below).
+template <int Before>
+__m512i countLanes(const __m512 (&table)[3], const float (&guess)[4], __m512 x, __mmask16& unsure) {
+    const __m512i one = _mm512_set1_epi32(1), size = _mm512_set1_epi32(int(guess[3]));
+    const __m512 zero = _mm512_setzero_ps();
+    __m512 g = _mm512_mul_ps(_mm512_sub_ps(x, _mm512_set1_ps(guess[0])), _mm512_set1_ps(guess[1]));
+    g = _mm512_maskz_min_ps(0xFFFF, _mm512_maskz_max_ps(0xFFFF, _mm512_add_ps(g, _mm512_set1_ps(guess[2])), zero),
+                            _mm512_set1_ps(guess[3]));
+    __m512i k = _mm512_maskz_cvttps_epi32(0xFFFF, g);  // plane k is entry k + 1 of the table
+    k = _mm512_mask_add_epi32(k, _mm512_cmp_ps_mask(planeAt(table, _mm512_add_epi32(k, one)), x, Before), k, one);
+    k = _mm512_mask_sub_epi32(k, _mm512_knot(_mm512_cmp_ps_mask(planeAt(table, k), x, Before)), k, one);
+    const __mmask16 finite = _mm512_cmp_ps_mask(_mm512_sub_ps(x, x), zero, _CMP_EQ_OQ);
+    const __mmask16 wrong = _mm512_cmp_ps_mask(planeAt(table, _mm512_add_epi32(k, one)), x, Before) |
+                            _mm512_knot(_mm512_cmp_ps_mask(planeAt(table, k), x, Before));
+    unsure = finite & wrong;
+    // As the scalar search: +inf is above every plane, -inf and NaN below them all.
+    const __m512i edge = _mm512_maskz_mov_epi32(_mm512_cmp_ps_mask(x, zero, _CMP_GT_OQ), size);
+    return _mm512_mask_blend_epi32(finite, edge, k);
+}
+
+}  // namespace
+
+// PlaneCounts::addAxis's three slots for 16 boxes on one axis (FloatBox: six floats, lo then hi),
+// with the guarded planes padded to 48 (`table`) and the guess's base, scale, offset and the plane
+// count (`guess`); bit i of the result set where box i needs the scalar search.
+static_assert(sizeof(FloatBox) == 6 * sizeof(float));
+unsigned binSlots(const float* boxes, int axis, const float* table, const float (&guess)[4], std::uint32_t* start,
+                  std::uint32_t* end, std::uint32_t* planar) {
+    const __m512 planes[3] = {_mm512_loadu_ps(table), _mm512_loadu_ps(table + 16), _mm512_loadu_ps(table + 32)};
+    const __m512i index =
+        _mm512_add_epi32(_mm512_mullo_epi32(_mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15),
+                                            _mm512_set1_epi32(6)),
+                         _mm512_set1_epi32(axis));
+    const __m512 lo = _mm512_mask_i32gather_ps(_mm512_setzero_ps(), 0xFFFF, index, boxes, 4);
+    const __m512 hi =
+        _mm512_mask_i32gather_ps(_mm512_setzero_ps(), 0xFFFF, _mm512_add_epi32(index, _mm512_set1_epi32(3)), boxes, 4);
+    __mmask16 unsureStart, unsureEnd;
+    const __m512i first = countLanes<_CMP_LE_OQ>(planes, guess, lo, unsureStart);
+    const __m512i last = countLanes<_CMP_LT_OQ>(planes, guess, hi, unsureEnd);
+    const __mmask16 inPlane =
+        _mm512_cmp_ps_mask(lo, hi, _CMP_EQ_OQ) &
+        _mm512_cmp_ps_mask(planeAt(planes, _mm512_add_epi32(last, _mm512_set1_epi32(1))), lo, _CMP_EQ_OQ);
+    _mm512_storeu_si512(start, first);
+    _mm512_storeu_si512(end, last);
+    _mm512_storeu_si512(planar, _mm512_mask_blend_epi32(inPlane, _mm512_set1_epi32(int(guess[3])), last));
+    return unsigned(unsureStart | unsureEnd);
+}
+
+}  // namespace simd_avx512
+RT_AVX512_END
+#endif
+
+namespace {
+
 // How many boxes start, end and lie in each plane of each axis's EvenPlanes: starts[k] counts
 // the boxes whose first plane above their lower bound is k, ends[k] those whose first plane at
 // or above their upper bound is k, planars[k] those lying in plane k (a planar box lying in no
@@ -207,23 +287,53 @@ public:
             first_.push_back(counts_.size());
             counts_.resize(counts_.size() + 3 * (a.planes.size() + 1), 0);
         }
+#if RT_SIMD_AVX512
+        lanes_ = simdLevel() == SimdLevel::avx512;
+        for (const AxisPlanes& a : axes) {
+            const std::size_t guarded = a.planes.size() + 2;
+            lanes_ = lanes_ && guarded <= kTablePlanes;
+            if (!lanes_) break;
+            AxisTable& table = tables_.emplace_back();
+            std::fill(std::copy(a.planes.guarded(), a.planes.guarded() + guarded, table.planes), std::end(table.planes),
+                      std::numeric_limits<float>::infinity());
+            table.guess[0] = a.planes.guessBase();
+            table.guess[1] = a.planes.guessScale();
+            table.guess[2] = a.planes.guessOffset();
+            table.guess[3] = float(a.planes.size());
+        }
+#endif
     }
 
     std::uint32_t starts(std::size_t a, std::size_t k) const { return counts_[first_[a] + k]; }
     std::uint32_t ends(std::size_t a, std::size_t k) const { return counts_[first_[a] + stride(a) + k]; }
     std::uint32_t planars(std::size_t a, std::size_t k) const { return counts_[first_[a] + 2 * stride(a) + k]; }
 
-    void add(const FloatBox& b) {
-        for (std::size_t a = 0; a < axes_.size(); ++a) {
-            const int axis = axes_[a].axis;
-            const EvenPlanes& planes = axes_[a].planes;
-            std::uint32_t* counts = counts_.data() + first_[a];
-            const std::size_t end = planes.below(b.hi[axis]);
-            const bool inPlane = b.planar(axis) && planes[end] == b.lo[axis];
-            ++counts[planes.atOrBelow(b.lo[axis])];
-            ++counts[stride(a) + end];
-            ++counts[2 * stride(a) + (inPlane ? end : planes.size())];
+    // Counts boxes[0, n): on AVX-512, 16 at a time per axis (the same slots, so the same counts:
+    // the searches' results are exact either way).
+    void add(const FloatBox* boxes, std::size_t n) {
+        std::size_t i = 0;
+#if RT_SIMD_AVX512
+        if (lanes_) {
+            alignas(64) std::uint32_t start[16], end[16], planar[16];
+            for (; i + 16 <= n; i += 16)
+                for (std::size_t a = 0; a < axes_.size(); ++a) {
+                    const unsigned unsure = simd_avx512::binSlots(&boxes[i].lo[0], axes_[a].axis, tables_[a].planes,
+                                                                  tables_[a].guess, start, end, planar);
+                    std::uint32_t* counts = counts_.data() + first_[a];
+                    for (int k = 0; k < 16; ++k) {
+                        if ((unsure >> k) & 1u) {
+                            addAxis(a, boxes[i + std::size_t(k)]);
+                            continue;
+                        }
+                        ++counts[start[k]];
+                        ++counts[stride(a) + end[k]];
+                        ++counts[2 * stride(a) + planar[k]];
+                    }
+                }
         }
+#endif
+        for (; i < n; ++i)
+            for (std::size_t a = 0; a < axes_.size(); ++a) addAxis(a, boxes[i]);
     }
     void add(const PlaneCounts& o) {
         for (std::size_t k = 0; k < counts_.size(); ++k) counts_[k] += o.counts_[k];
@@ -232,9 +342,31 @@ public:
 private:
     std::size_t stride(std::size_t a) const { return axes_[a].planes.size() + 1; }
 
+    void addAxis(std::size_t a, const FloatBox& b) {
+        const int axis = axes_[a].axis;
+        const EvenPlanes& planes = axes_[a].planes;
+        std::uint32_t* counts = counts_.data() + first_[a];
+        const std::size_t end = planes.below(b.hi[axis]);
+        const bool inPlane = b.planar(axis) && planes[end] == b.lo[axis];
+        ++counts[planes.atOrBelow(b.lo[axis])];
+        ++counts[stride(a) + end];
+        ++counts[2 * stride(a) + (inPlane ? end : planes.size())];
+    }
+
     const std::vector<AxisPlanes>& axes_;
     std::vector<std::size_t> first_;  // per axis, where its counts start
     std::vector<std::uint32_t> counts_;
+#if RT_SIMD_AVX512
+    // What simd_avx512::binSlots takes per axis: the guarded planes, padded with +inf to the 48
+    // its registers hold, and the guess's constants with the plane count.
+    struct AxisTable {
+        float planes[48];
+        float guess[4];
+    };
+    static constexpr std::size_t kTablePlanes = 48;
+    bool lanes_ = false;
+    std::vector<AxisTable> tables_;
+#endif
 };
 
 // Offers every plane of `axes` to `best`, axis by axis in order, with the boxes below, above
@@ -245,7 +377,7 @@ SahSplit bestOfPlanes(const std::vector<FloatBox>& boxes, const std::vector<Axis
     const Chunks chunks = nodeChunks(n);
     std::vector<PlaneCounts> counts(chunks.count(), PlaneCounts(axes));  // per chunk
     forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) counts[c].add(boxes[i]);
+        counts[c].add(boxes.data() + begin, end - begin);
     });
     for (std::size_t c = 1; c < counts.size(); ++c) counts[0].add(counts[c]);
     SahSplit best;

@@ -4,11 +4,13 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <sstream>
 
 #include "accel/build_chunks.h"
 #include "accel/kd_split.h"
+#include "core/simd.h"
 #include "geometry/triangle_block.h"
 #include "scene/generate.h"
 #include "test_util.h"
@@ -125,6 +127,68 @@ TEST(KdSplit, BinningFindsTheSweepsPlaneOnAGrid) {
         // Fewer bins see fewer planes: never a cheaper one.
         EXPECT_GE(findSplitByBinning(boxes, 3, sah).cost, sorted.cost);
     }
+}
+
+// Binning counts its boxes 16 at a time on AVX-512 (kd_split.cpp), with a guess of each bound's
+// plane that a check then confirms or hands to the scalar search: every level must count the same.
+// The boxes hold bounds on the planes, boxes lying in a plane, far-off clusters whose float planes
+// collapse (so that guesses miss by more than a step), and bounds of inf and NaN.
+TEST(KdSplit, BinningCountsTheSameOnEverySimdLevel) {
+    std::mt19937 gen(31);
+    std::uniform_real_distribution<float> unit(0, 1);
+    std::vector<FloatBox> boxes = randomBoxes(500, 12);  // on a grid of eighths: on binning's planes
+    for (int i = 0; i < 700; ++i) {
+        FloatBox b;
+        for (int a = 0; a < 3; ++a) {
+            const float x = unit(gen), y = i % 5 == 0 ? x : unit(gen);  // every fifth box lies in a plane
+            b.lo[a] = std::min(x, y);
+            b.hi[a] = std::max(x, y);
+        }
+        boxes.push_back(b);
+    }
+    std::vector<FloatBox> far;  // planes 1e-4 apart near 1e4, where a float's step is 1e-3
+    for (int i = 0; i < 300; ++i) {
+        FloatBox b;
+        for (int a = 0; a < 3; ++a) b.lo[a] = b.hi[a] = 1e4f + 3e-3f * unit(gen);
+        far.push_back(b);
+    }
+    std::vector<FloatBox> odd = boxes;  // bounds that are not finite
+    for (std::size_t i = 0; i < odd.size(); i += 37) odd[i].hi[i % 3] = std::numeric_limits<float>::infinity();
+    for (std::size_t i = 5; i < odd.size(); i += 41) odd[i].lo[i % 3] = -std::numeric_limits<float>::infinity();
+    for (std::size_t i = 9; i < odd.size(); i += 43) odd[i].lo[i % 3] = std::numeric_limits<float>::quiet_NaN();
+    const SimdLevel before = simdLevel();
+    for (const std::vector<FloatBox>* set : {&boxes, &far, &odd}) {
+        const Aabb voxel =
+            set == &far ? Aabb{{1e4, 1e4, 1e4}, {1e4 + 4e-3, 1e4 + 4e-3, 1e4 + 4e-3}} : Aabb{{0, 0, 0}, {1, 1, 1}};
+        const SahModel sah(voxel, KdSettings{});
+        for (int bins : {3, 8, 32, 45, 46}) {  // 45 bins: 48 guarded planes, the most the lanes take
+            ASSERT_TRUE(setSimdLevel(SimdLevel::sse2));
+            const SahSplit scalar = findSplitByBinning(*set, bins, sah);
+            const SahSplit sampled = findSplitBySampling(*set, voxel, bins, sah);
+            for (SimdLevel level : kSimdLevels) {
+                if (!setSimdLevel(level)) continue;
+                const SahSplit binned = findSplitByBinning(*set, bins, sah);
+                EXPECT_EQ(binned.axis, scalar.axis) << simdLevelName(level) << " " << bins;
+                EXPECT_EQ(binned.pos, scalar.pos) << simdLevelName(level) << " " << bins;
+                EXPECT_EQ(binned.cost, scalar.cost) << simdLevelName(level) << " " << bins;
+                EXPECT_EQ(findSplitBySampling(*set, voxel, bins, sah).cost, sampled.cost) << simdLevelName(level);
+            }
+        }
+    }
+    setSimdLevel(before);
+}
+
+// The same through whole trees that bin down to nodes of 16 primitives: every split chosen the same.
+TEST(KdTree, BinnedTreesAreTheSameOnEverySimdLevel) {
+    Primitives prims = generateScene({3000, 500, Placement::Clustered, 14}).primitives;
+    KdSettings settings;
+    settings.binningMinimum = 16;
+    const SimdLevel before = simdLevel();
+    ASSERT_TRUE(setSimdLevel(SimdLevel::sse2));
+    const std::string scalar = dump(*buildKdTree(prims, settings));
+    for (SimdLevel level : kSimdLevels)
+        if (setSimdLevel(level)) EXPECT_EQ(dump(*buildKdTree(prims, settings)), scalar) << simdLevelName(level);
+    setSimdLevel(before);
 }
 
 TEST(KdSplit, RadixSortOrdersEventsAsOperatorLess) {
