@@ -218,10 +218,12 @@ __m512 planeAt(const __m512 (&table)[3], __m512i j) {
     return _mm512_mask_blend_ps(_mm512_cmpge_epi32_mask(j, _mm512_set1_epi32(32)), first32, last16);
 }
 
-// EvenPlanes::count for 16 bounds: the guess (in float here, which can only make it worse), the
+// EvenPlanes::count for 16 bounds: the guess (in float here: only the guess is rounded more), the
 // two steps, and then the check that each lane's k has the planes before x below it and the others
 // from k on. A lane that fails (its guess was off by more than a step) is set in `unsure`, for the
 // scalar search. Before: _CMP_LE_OQ for p <= x (atOrBelow), _CMP_LT_OQ for p < x (below).
+// The maskz forms with every lane set: GCC 12's plain ones start from an undefined register, and
+// warn that it is uninitialized.
 template <int Before>
 __m512i countLanes(const __m512 (&table)[3], const float (&guess)[4], __m512 x, __mmask16& unsure) {
     const __m512i one = _mm512_set1_epi32(1), size = _mm512_set1_epi32(int(guess[3]));
