@@ -186,8 +186,11 @@ TEST(KdTree, BinnedTreesAreTheSameOnEverySimdLevel) {
     const SimdLevel before = simdLevel();
     ASSERT_TRUE(setSimdLevel(SimdLevel::sse2));
     const std::string scalar = dump(*buildKdTree(prims, settings));
-    for (SimdLevel level : kSimdLevels)
-        if (setSimdLevel(level)) EXPECT_EQ(dump(*buildKdTree(prims, settings)), scalar) << simdLevelName(level);
+    for (SimdLevel level : kSimdLevels) {
+        if (setSimdLevel(level)) {
+            EXPECT_EQ(dump(*buildKdTree(prims, settings)), scalar) << simdLevelName(level);
+        }
+    }
     setSimdLevel(before);
 }
 
