@@ -138,6 +138,15 @@ SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& 
 
 namespace {
 
+// What the AVX-512 counting (simd_avx512::binSlots) takes for one axis: the guarded planes, -inf
+// first and +inf after the last up to kPlanes, and the guess's arithmetic in float.
+struct LaneTable {
+    static constexpr std::size_t kPlanes = 48;  // three registers of 16
+    float planes[kPlanes];
+    float base, scale, offset;
+    int size;  // the planes between the sentinels
+};
+
 // The planes base + extent k / divisions for k = first..last, rounded to float, without
 // repeats. A bound's place among them is guessed by arithmetic and then corrected against the
 // planes themselves, so it is exact: a step each way without a branch (the planes sit between
@@ -161,12 +170,17 @@ public:
 
     std::size_t size() const { return size_; }
     float operator[](std::size_t k) const { return guarded_[k + 1]; }
-    // The planes between their sentinels, -inf first and +inf last (size() + 2 of them), and the
-    // guess's arithmetic in float, for the AVX-512 counting below.
-    const float* guarded() const { return guarded_.data(); }
-    float guessBase() const { return float(base_); }
-    float guessScale() const { return float(scale_); }
-    float guessOffset() const { return float(offset_); }
+    // Fills `table` for the AVX-512 counting; false if the planes and sentinels do not fit in it.
+    bool fillLaneTable(LaneTable& table) const {
+        if (guarded_.size() > LaneTable::kPlanes) return false;
+        std::fill(std::copy(guarded_.begin(), guarded_.end(), table.planes), std::end(table.planes),
+                  std::numeric_limits<float>::infinity());
+        table.base = float(base_);
+        table.scale = float(scale_);
+        table.offset = float(offset_);
+        table.size = int(size_);
+        return true;
+    }
     // The number of planes p <= x (std::upper_bound's index).
     std::size_t atOrBelow(float x) const {
         return count(x, [x](float p) { return p <= x; });
@@ -225,12 +239,12 @@ __m512 planeAt(const __m512 (&table)[3], __m512i j) {
 // The maskz forms with every lane set: GCC 12's plain ones start from an undefined register, and
 // warn that it is uninitialized.
 template <int Before>
-__m512i countLanes(const __m512 (&table)[3], const float (&guess)[4], __m512 x, __mmask16& unsure) {
-    const __m512i one = _mm512_set1_epi32(1), size = _mm512_set1_epi32(int(guess[3]));
+__m512i countLanes(const __m512 (&table)[3], const LaneTable& lanes, __m512 x, __mmask16& unsure) {
+    const __m512i one = _mm512_set1_epi32(1), size = _mm512_set1_epi32(lanes.size);
     const __m512 zero = _mm512_setzero_ps();
-    __m512 g = _mm512_mul_ps(_mm512_sub_ps(x, _mm512_set1_ps(guess[0])), _mm512_set1_ps(guess[1]));
-    g = _mm512_maskz_min_ps(0xFFFF, _mm512_maskz_max_ps(0xFFFF, _mm512_add_ps(g, _mm512_set1_ps(guess[2])), zero),
-                            _mm512_set1_ps(guess[3]));
+    __m512 g = _mm512_mul_ps(_mm512_sub_ps(x, _mm512_set1_ps(lanes.base)), _mm512_set1_ps(lanes.scale));
+    g = _mm512_maskz_min_ps(0xFFFF, _mm512_maskz_max_ps(0xFFFF, _mm512_add_ps(g, _mm512_set1_ps(lanes.offset)), zero),
+                            _mm512_set1_ps(float(lanes.size)));
     __m512i k = _mm512_maskz_cvttps_epi32(0xFFFF, g);  // plane k is entry k + 1 of the table
     k = _mm512_mask_add_epi32(k, _mm512_cmp_ps_mask(planeAt(table, _mm512_add_epi32(k, one)), x, Before), k, one);
     k = _mm512_mask_sub_epi32(k, _mm512_knot(_mm512_cmp_ps_mask(planeAt(table, k), x, Before)), k, one);
@@ -245,13 +259,13 @@ __m512i countLanes(const __m512 (&table)[3], const float (&guess)[4], __m512 x, 
 
 }  // namespace
 
-// PlaneCounts::addAxis's three slots for 16 boxes on one axis (FloatBox: six floats, lo then hi),
-// with the guarded planes padded to 48 (`table`) and the guess's base, scale, offset and the plane
-// count (`guess`); bit i of the result set where box i needs the scalar search.
-static_assert(sizeof(FloatBox) == 6 * sizeof(float));
-unsigned binSlots(const float* boxes, int axis, const float* table, const float (&guess)[4], std::uint32_t* start,
-                  std::uint32_t* end, std::uint32_t* planar) {
-    const __m512 planes[3] = {_mm512_loadu_ps(table), _mm512_loadu_ps(table + 16), _mm512_loadu_ps(table + 32)};
+// PlaneCounts::addAxis's three slots for 16 boxes on one axis (FloatBox: six floats, lo then hi);
+// bit i of the result set where box i needs the scalar search.
+static_assert(sizeof(FloatBox) == 6 * sizeof(float) && LaneTable::kPlanes == 3 * 16);
+unsigned binSlots(const float* boxes, int axis, const LaneTable& lanes, std::uint32_t* start, std::uint32_t* end,
+                  std::uint32_t* planar) {
+    const __m512 planes[3] = {_mm512_loadu_ps(lanes.planes), _mm512_loadu_ps(lanes.planes + 16),
+                              _mm512_loadu_ps(lanes.planes + 32)};
     const __m512i index =
         _mm512_add_epi32(_mm512_mullo_epi32(_mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15),
                                             _mm512_set1_epi32(6)),
@@ -260,14 +274,14 @@ unsigned binSlots(const float* boxes, int axis, const float* table, const float 
     const __m512 hi =
         _mm512_mask_i32gather_ps(_mm512_setzero_ps(), 0xFFFF, _mm512_add_epi32(index, _mm512_set1_epi32(3)), boxes, 4);
     __mmask16 unsureStart, unsureEnd;
-    const __m512i first = countLanes<_CMP_LE_OQ>(planes, guess, lo, unsureStart);
-    const __m512i last = countLanes<_CMP_LT_OQ>(planes, guess, hi, unsureEnd);
+    const __m512i first = countLanes<_CMP_LE_OQ>(planes, lanes, lo, unsureStart);
+    const __m512i last = countLanes<_CMP_LT_OQ>(planes, lanes, hi, unsureEnd);
     const __mmask16 inPlane =
         _mm512_cmp_ps_mask(lo, hi, _CMP_EQ_OQ) &
         _mm512_cmp_ps_mask(planeAt(planes, _mm512_add_epi32(last, _mm512_set1_epi32(1))), lo, _CMP_EQ_OQ);
     _mm512_storeu_si512(start, first);
     _mm512_storeu_si512(end, last);
-    _mm512_storeu_si512(planar, _mm512_mask_blend_epi32(inPlane, _mm512_set1_epi32(int(guess[3])), last));
+    _mm512_storeu_si512(planar, _mm512_mask_blend_epi32(inPlane, _mm512_set1_epi32(lanes.size), last));
     return unsigned(unsureStart | unsureEnd);
 }
 
@@ -290,18 +304,13 @@ public:
             counts_.resize(counts_.size() + 3 * (a.planes.size() + 1), 0);
         }
 #if RT_SIMD_AVX512
-        lanes_ = simdLevel() == SimdLevel::avx512;
-        for (const AxisPlanes& a : axes) {
-            const std::size_t guarded = a.planes.size() + 2;
-            lanes_ = lanes_ && guarded <= kTablePlanes;
-            if (!lanes_) break;
-            AxisTable& table = tables_.emplace_back();
-            std::fill(std::copy(a.planes.guarded(), a.planes.guarded() + guarded, table.planes), std::end(table.planes),
-                      std::numeric_limits<float>::infinity());
-            table.guess[0] = a.planes.guessBase();
-            table.guess[1] = a.planes.guessScale();
-            table.guess[2] = a.planes.guessOffset();
-            table.guess[3] = float(a.planes.size());
+        if (simdLevel() == SimdLevel::avx512) {
+            tables_.resize(axes.size());
+            for (std::size_t a = 0; a < axes.size(); ++a)
+                if (!axes[a].planes.fillLaneTable(tables_[a])) {
+                    tables_.clear();  // too many planes: the scalar search
+                    break;
+                }
         }
 #endif
     }
@@ -315,12 +324,12 @@ public:
     void add(const FloatBox* boxes, std::size_t n) {
         std::size_t i = 0;
 #if RT_SIMD_AVX512
-        if (lanes_) {
+        if (!tables_.empty()) {
             alignas(64) std::uint32_t start[16], end[16], planar[16];
             for (; i + 16 <= n; i += 16)
                 for (std::size_t a = 0; a < axes_.size(); ++a) {
-                    const unsigned unsure = simd_avx512::binSlots(&boxes[i].lo[0], axes_[a].axis, tables_[a].planes,
-                                                                  tables_[a].guess, start, end, planar);
+                    const unsigned unsure =
+                        simd_avx512::binSlots(&boxes[i].lo[0], axes_[a].axis, tables_[a], start, end, planar);
                     std::uint32_t* counts = counts_.data() + first_[a];
                     for (int k = 0; k < 16; ++k) {
                         if ((unsure >> k) & 1u) {
@@ -359,15 +368,7 @@ private:
     std::vector<std::size_t> first_;  // per axis, where its counts start
     std::vector<std::uint32_t> counts_;
 #if RT_SIMD_AVX512
-    // What simd_avx512::binSlots takes per axis: the guarded planes, padded with +inf to the 48
-    // its registers hold, and the guess's constants with the plane count.
-    struct AxisTable {
-        float planes[48];
-        float guess[4];
-    };
-    static constexpr std::size_t kTablePlanes = 48;
-    bool lanes_ = false;
-    std::vector<AxisTable> tables_;
+    std::vector<LaneTable> tables_;  // per axis, for simd_avx512::binSlots; none: the scalar search
 #endif
 };
 
