@@ -39,10 +39,10 @@ inline constexpr NamedValues<KdSplitMethod, 3> kKdSplitMethodNames{
     {{"sweep", KdSplitMethod::Sweep}, {"sort", KdSplitMethod::Sort}, {"sample", KdSplitMethod::Sample}}};
 
 struct KdSettings {
-    double traversalCost = 2.0;      // C_T of the SAH (thesis 2.5.1); measured, see docs/trees.md
-    double intersectionCost = 0.75;  // C_I of the SAH, for a triangle; a sphere test counts 0.8 of it
-    double emptyBonus = 0.8;         // cost factor for splits that cut off empty space (1 = none)
-    std::optional<int> maxDepth;     // default 8 + 1.3 log2(N)
+    double traversalCost = 2.0;     // C_T of the SAH (thesis 2.5.1); measured, see docs/trees.md
+    double intersectionCost = 0.6;  // C_I of the SAH, for a triangle; a sphere test costs as much
+    double emptyBonus = 0.8;        // cost factor for splits that cut off empty space (1 = none)
+    std::optional<int> maxDepth;    // default 8 + 1.3 log2(N)
     KdSplitMethod splitMethod = KdSplitMethod::Sweep;
     int samples = 16;  // candidate planes per axis for Sample (8-32 in the thesis)
     // Sweep: nodes of at least this many primitives take the best of `bins` planes per axis

@@ -13,9 +13,9 @@ namespace rt {
 struct Sphere {
     static constexpr const char* kName = "sphere";
     // A sphere test costs the trees 0.6 (thesis 2.1.2: a miss needs no square root; measured as
-    // the best C_T/C_I ratio on each kind of scene when a triangle cost 1.5, docs/trees.md): 0.8
-    // of a triangle's 0.75 since the leaves test triangles in blocks and spheres one by one.
-    static constexpr double kTestCost = 0.8;
+    // the best C_T/C_I ratio on each kind of scene when a triangle cost 1.5, docs/trees.md): as
+    // much as a triangle's 0.6 since the leaves test triangles in blocks and spheres one by one.
+    static constexpr double kTestCost = 1;
     Vec3 center;
     Real radius = 0;
 
