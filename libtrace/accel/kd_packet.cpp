@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <type_traits>
 
 #include "accel/split_tree.h"
 
@@ -195,14 +196,44 @@ inline GroupHits hitTriangle(const TriangleLanes& tri, const PacketRays& rays, i
     return h;
 }
 
-// A hit of triangle `lane` of the block is taken where it is nearer than the ray's nearest, as
-// the single traversal takes a block's hits in order.
-inline void nearestTriangle(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& active,
-                            PacketHits& nearest) {
-    const TriangleLanes tri(block, lane);
+// A sphere in every lane.
+struct SphereLanes {
+    RealLanes center[3], r2;
+
+    explicit SphereLanes(const Sphere& s) : r2(broadcast(s.radius * s.radius)) {
+        for (int axis = 0; axis < 3; ++axis) center[axis] = broadcast(s.center[axis]);
+    }
+};
+
+// intersectSphere (geometry/sphere.h) against group g of the packet's rays: its operations in its
+// order, lane by lane, its rejections as masks, so each ray gets the bits of its single test.
+inline GroupHits hitSphere(const SphereLanes& s, const PacketRays& rays, int g, RealLanes limit) {
+    const RealLanes zero = broadcast(0);
+    const RealLanes dx = rays.direction[0].group[g], dy = rays.direction[1].group[g], dz = rays.direction[2].group[g];
+    const RealLanes lx = s.center[0] - rays.origin[0].group[g], ly = s.center[1] - rays.origin[1].group[g],
+                    lz = s.center[2] - rays.origin[2].group[g];
+    const RealLanes tca = lx * dx + ly * dy + lz * dz;
+    const RealLanes l2 = lx * lx + ly * ly + lz * lz;
+    const RealLanes outside = lessThan(s.r2, l2);
+    const RealLanes d2 = l2 - tca * tca;
+    const RealLanes missed = (outside & lessThan(tca, zero)) | lessThan(s.r2, d2);
+    const RealLanes thc = squareRoot(s.r2 - d2);
+    const RealLanes near = select(outside, tca - thc, tca + thc);
+    GroupHits h;
+    h.t = select(lessThan(zero, near), near, tca + thc);  // the origin on the surface: the far side
+    h.u = h.v = zero;
+    h.hit = andNot(missed, lessThan(zero, h.t) & lessThan(h.t, limit));
+    return h;
+}
+
+// Primitive `id`'s hits on the `active` rays are taken where they are nearer than the ray's
+// nearest, as the single traversal takes its hits in order; hitGroup(g, limit) tests it against
+// group g of the rays.
+template <typename HitGroup>
+inline void takeNearer(std::uint32_t id, const Lanes& active, PacketHits& nearest, const HitGroup& hitGroup) {
     LaneBits taken = 0;
     for (int g = 0; g < kGroups; ++g) {
-        const GroupHits h = hitTriangle(tri, rays, g, nearest.t.group[g]);
+        const GroupHits h = hitGroup(g, nearest.t.group[g]);
         const RealLanes hit = active.group[g] & h.hit;
         const LaneBits bits = laneBits(hit);
         if (bits == 0) continue;
@@ -211,7 +242,15 @@ inline void nearestTriangle(const TriangleBlock& block, int lane, const PacketRa
         nearest.v.group[g] = select(hit, h.v, nearest.v.group[g]);
         taken |= bits << (g * kLanes);
     }
-    for (LaneBits bits = taken; bits != 0; bits &= bits - 1) nearest.prim[std::countr_zero(bits)] = block.id[lane];
+    for (LaneBits bits = taken; bits != 0; bits &= bits - 1) nearest.prim[std::countr_zero(bits)] = id;
+}
+
+// Triangle `lane` of the block against the packet's nearest hits.
+inline void nearestTriangle(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& active,
+                            PacketHits& nearest) {
+    const TriangleLanes tri(block, lane);
+    takeNearer(block.id[lane], active, nearest,
+               [&](int g, RealLanes limit) { return hitTriangle(tri, rays, g, limit); });
 }
 
 // Adds to `blocked` the rays of `open` that triangle `lane` of the block hits before their tLimit.
@@ -355,12 +394,22 @@ void updateHits(PacketHits& nearest, LaneBits rays, const Update& update) {
     nearest.v = load(v);
 }
 
-// The leaf's primitives that are not triangles, ray by ray (the packet has no hit filter).
-void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
-                   PacketHits& nearest) {
-    updateHits(nearest, active, [&](int r, Hit& hit) {
-        for (std::uint32_t i = 0; i < leaf.others; ++i) prims.intersect(leaf.otherIds()[i], rays[r], hit.t, hit);
-    });
+// The leaf's primitives that are not triangles, in leaf order: a sphere against all rays at once,
+// as a triangle, the other kinds ray by ray (the packet has no hit filter).
+void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const PacketRays& packet,
+                   const Lanes& inLeaf, LaneBits active, PacketHits& nearest) {
+    for (std::uint32_t i = 0; i < leaf.others; ++i) {
+        const std::uint32_t id = leaf.otherIds()[i];
+        prims.visit(id, [&]<class K>(const K& primitive) {
+            if constexpr (std::is_same_v<K, Sphere>) {
+                const SphereLanes sphere(primitive);
+                takeNearer(id, inLeaf, nearest,
+                           [&](int g, RealLanes limit) { return hitSphere(sphere, packet, g, limit); });
+            } else {
+                updateHits(nearest, active, [&](int r, Hit& hit) { prims.intersect(id, rays[r], hit.t, hit); });
+            }
+        });
+    }
 }
 
 // The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
@@ -383,15 +432,29 @@ LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, c
         blocked |= bitsOf(hit);
         active &= ~blocked;
     }
-    for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
-        const int r = std::countr_zero(bits);
-        for (std::uint32_t i = 0; i < leaf.others; ++i) {
-            ++tests;
-            if (prims.intersectsAny(leaf.otherIds()[i], rays[r], tMax[r])) {
-                blocked |= 1u << r;
-                break;
+    // The others in leaf order, each against the rays not blocked yet: a sphere against all at
+    // once, the other kinds ray by ray.
+    for (std::uint32_t i = 0; i < leaf.others && active != 0; ++i) {
+        tests += std::uint64_t(std::popcount(active));
+        const std::uint32_t id = leaf.otherIds()[i];
+        LaneBits now = 0;
+        prims.visit(id, [&]<class K>(const K& primitive) {
+            if constexpr (std::is_same_v<K, Sphere>) {
+                const SphereLanes sphere(primitive);
+                for (int g = 0; g < kGroups; ++g)
+                    now |= laneBits(open.group[g] & hitSphere(sphere, packet, g, tLimit.group[g]).hit) << (g * kLanes);
+            } else {
+                for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
+                    const int r = std::countr_zero(bits);
+                    if (rt::intersectsAny(primitive, rays[r], tMax[r])) now |= 1u << r;
+                }
             }
-        }
+        });
+        if (now == 0) continue;
+        const Lanes closed = maskOf(now);
+        for (int g = 0; g < kGroups; ++g) open.group[g] = andNot(closed.group[g], open.group[g]);
+        blocked |= now;
+        active &= ~now;
     }
     return blocked;
 }
@@ -432,7 +495,7 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
             // As SplitTree::intersect: the triangles in leaf order, then the other primitives.
             for (std::uint32_t k = 0; k < leaf.triangles; ++k)
                 nearestTriangle(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
-            if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
+            if (leaf.others != 0) nearestOthers(prims, leaf, rays, packet.rays, inLeaf, active, nearest);
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
             updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {

@@ -30,6 +30,8 @@
 // packets and the naive list agree to the last bit.
 #pragma once
 
+#include <cmath>
+
 #include "core/real.h"
 
 #if defined(__SSE2__)
@@ -87,6 +89,7 @@ inline RealLanes operator+(RealLanes a, RealLanes b) { return {_mm_add_pd(a.v, b
 inline RealLanes operator-(RealLanes a, RealLanes b) { return {_mm_sub_pd(a.v, b.v)}; }
 inline RealLanes operator*(RealLanes a, RealLanes b) { return {_mm_mul_pd(a.v, b.v)}; }
 inline RealLanes operator/(RealLanes a, RealLanes b) { return {_mm_div_pd(a.v, b.v)}; }
+inline RealLanes squareRoot(RealLanes a) { return {_mm_sqrt_pd(a.v)}; }
 inline RealLanes operator&(RealLanes a, RealLanes b) { return {_mm_and_pd(a.v, b.v)}; }
 inline RealLanes lessThan(RealLanes a, RealLanes b) { return {_mm_cmplt_pd(a.v, b.v)}; }
 // !(a < b), true where either is NaN, as the scalar `if (a < b) reject` lets NaN through.
@@ -116,6 +119,7 @@ inline RealLanes operator+(RealLanes a, RealLanes b) { return {_mm_add_ps(a.v, b
 inline RealLanes operator-(RealLanes a, RealLanes b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline RealLanes operator*(RealLanes a, RealLanes b) { return {_mm_mul_ps(a.v, b.v)}; }
 inline RealLanes operator/(RealLanes a, RealLanes b) { return {_mm_div_ps(a.v, b.v)}; }
+inline RealLanes squareRoot(RealLanes a) { return {_mm_sqrt_ps(a.v)}; }
 inline RealLanes operator&(RealLanes a, RealLanes b) { return {_mm_and_ps(a.v, b.v)}; }
 inline RealLanes lessThan(RealLanes a, RealLanes b) { return {_mm_cmplt_ps(a.v, b.v)}; }
 inline RealLanes notLessThan(RealLanes a, RealLanes b) { return {_mm_cmpnlt_ps(a.v, b.v)}; }
@@ -155,6 +159,9 @@ inline RealLanes operator*(RealLanes a, RealLanes b) {
 }
 inline RealLanes operator/(RealLanes a, RealLanes b) {
     return eachLane(a, b, [](Real x, Real y) { return x / y; });
+}
+inline RealLanes squareRoot(RealLanes a) {
+    return eachLane(a, a, [](Real x, Real) { return std::sqrt(x); });
 }
 inline RealLanes operator&(RealLanes a, RealLanes b) {
     return eachLane(a, b, [](Real x, Real y) { return Real(x != 0 && y != 0); });
@@ -254,6 +261,7 @@ struct RealLanes {
 RT_SIMD_ONE_INTRINSIC_OPERATIONS(RT_AVX2_OP)
 RT_SIMD_COMPARISONS(RT_AVX2_COMPARE)
 inline unsigned laneBits(RealLanes mask) { return unsigned(RT_AVX2_OP(movemask)(mask.v)); }
+inline RealLanes squareRoot(RealLanes a) { return {RT_AVX2_OP(sqrt)(a.v)}; }
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) { return {RT_AVX2_OP(blendv)(b.v, a.v, mask.v)}; }
 // The lanes of two SSE2 registers' worth, `low` in the lower half: two leaf blocks tested at once
 // (accel/kd_single.cpp).
@@ -278,9 +286,9 @@ RT_AVX512_BEGIN
 
 // Eight floats: AVX2's lanes (see the top), in functions compiled for AVX-512, which inline them.
 using simd_avx2::kLanes;
-using simd_avx2::loadLanes, simd_avx2::broadcast, simd_avx2::storeLanes, simd_avx2::andNot, simd_avx2::lessThan,
-    simd_avx2::lessEqual, simd_avx2::notLessThan, simd_avx2::notGreaterThan, simd_avx2::notEqual, simd_avx2::laneBits,
-    simd_avx2::select;
+using simd_avx2::loadLanes, simd_avx2::broadcast, simd_avx2::storeLanes, simd_avx2::andNot, simd_avx2::squareRoot,
+    simd_avx2::lessThan, simd_avx2::lessEqual, simd_avx2::notLessThan, simd_avx2::notGreaterThan, simd_avx2::notEqual,
+    simd_avx2::laneBits, simd_avx2::select;
 using simd_avx2::RealLanes;
 
 #else
@@ -301,6 +309,8 @@ RT_SIMD_ONE_INTRINSIC_OPERATIONS(RT_AVX512_OP)
 RT_SIMD_COMPARISONS(RT_AVX512_COMPARE)
 inline __mmask8 kMask(RealLanes mask) { return _mm512_movepi64_mask(_mm512_castpd_si512(mask.v)); }
 inline unsigned laneBits(RealLanes mask) { return kMask(mask); }
+// The zero-masked form: GCC 12's plain one reads an undefined register (-Wuninitialized).
+inline RealLanes squareRoot(RealLanes a) { return {_mm512_maskz_sqrt_pd(__mmask8(0xff), a.v)}; }
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
     return {_mm512_mask_blend_pd(kMask(mask), b.v, a.v)};
 }

@@ -14,8 +14,9 @@ using namespace rt;
 
 namespace {
 
-// Operations on lanes a and b, one output row each: + - * / < <= !< !> != and select(a < b, a, b).
-constexpr int kOps = 10;
+// Operations on lanes a and b, one output row each: + - * / < <= !< !> != and select(a < b, a, b),
+// and the square root of a.
+constexpr int kOps = 11;
 constexpr int kMaxLanes = 8;
 using LaneOps = void (*)(const Real* a, const Real* b, Real (*out)[kMaxLanes]);
 
@@ -33,7 +34,8 @@ using LaneOps = void (*)(const Real* a, const Real* b, Real (*out)[kMaxLanes]);
                                          notLessThan(x, y),                        \
                                          notGreaterThan(x, y),                     \
                                          notEqual(x, y),                           \
-                                         select(lessThan(x, y), x, y)};            \
+                                         select(lessThan(x, y), x, y),             \
+                                         squareRoot(x)};                           \
         for (int op = 0; op < kOps; ++op) LANES::storeLanes(out[op], results[op]); \
     }
 
@@ -72,8 +74,10 @@ bool laneAgrees(int op, Real a, Real b, Real lane) {
             return mask(!(a > b));
         case 8:
             return mask(a != b);
-        default:
+        case 9:
             return same(lane, a < b ? a : b);
+        default:
+            return same(lane, std::sqrt(a));
     }
 }
 
