@@ -37,7 +37,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <type_traits>
 
 #include "accel/split_tree.h"
 
@@ -196,12 +195,12 @@ inline GroupHits hitTriangle(const TriangleLanes& tri, const PacketRays& rays, i
     return h;
 }
 
-// A sphere in every lane.
+// Sphere `lane` of a block, in every lane.
 struct SphereLanes {
     RealLanes center[3], r2;
 
-    explicit SphereLanes(const Sphere& s) : r2(broadcast(s.radius * s.radius)) {
-        for (int axis = 0; axis < 3; ++axis) center[axis] = broadcast(s.center[axis]);
+    SphereLanes(const SphereBlock& block, int lane) : r2(broadcast(block.r2[lane])) {
+        for (int axis = 0; axis < 3; ++axis) center[axis] = broadcast(block.center[axis][lane]);
     }
 };
 
@@ -245,20 +244,33 @@ inline void takeNearer(std::uint32_t id, const Lanes& active, PacketHits& neares
     for (LaneBits bits = taken; bits != 0; bits &= bits - 1) nearest.prim[std::countr_zero(bits)] = id;
 }
 
-// Triangle `lane` of the block against the packet's nearest hits.
-inline void nearestTriangle(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& active,
-                            PacketHits& nearest) {
+// Triangle or sphere `lane` of a block against the packet's nearest hits.
+inline void nearestIn(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& active,
+                      PacketHits& nearest) {
     const TriangleLanes tri(block, lane);
     takeNearer(block.id[lane], active, nearest,
                [&](int g, RealLanes limit) { return hitTriangle(tri, rays, g, limit); });
 }
+inline void nearestIn(const SphereBlock& block, int lane, const PacketRays& rays, const Lanes& active,
+                      PacketHits& nearest) {
+    const SphereLanes sphere(block, lane);
+    takeNearer(block.id[lane], active, nearest,
+               [&](int g, RealLanes limit) { return hitSphere(sphere, rays, g, limit); });
+}
 
-// Adds to `blocked` the rays of `open` that triangle `lane` of the block hits before their tLimit.
-inline void blockingTriangle(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& open,
-                             const Lanes& tLimit, Lanes& blocked) {
+// Adds to `blocked` the rays of `open` that triangle or sphere `lane` of the block hits before
+// their tLimit.
+inline void blockingIn(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& open,
+                       const Lanes& tLimit, Lanes& blocked) {
     const TriangleLanes tri(block, lane);
     for (int g = 0; g < kGroups; ++g)
         blocked.group[g] = blocked.group[g] | (open.group[g] & hitTriangle(tri, rays, g, tLimit.group[g]).hit);
+}
+inline void blockingIn(const SphereBlock& block, int lane, const PacketRays& rays, const Lanes& open,
+                       const Lanes& tLimit, Lanes& blocked) {
+    const SphereLanes sphere(block, lane);
+    for (int g = 0; g < kGroups; ++g)
+        blocked.group[g] = blocked.group[g] | (open.group[g] & hitSphere(sphere, rays, g, tLimit.group[g]).hit);
 }
 
 // The single traversal's decision at a node, ray by ray (split_tree.cpp, SplitTree::traverse),
@@ -394,67 +406,55 @@ void updateHits(PacketHits& nearest, LaneBits rays, const Update& update) {
     nearest.v = load(v);
 }
 
-// The leaf's primitives that are not triangles, in leaf order: a sphere against all rays at once,
-// as a triangle, the other kinds ray by ray (the packet has no hit filter).
-void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const PacketRays& packet,
-                   const Lanes& inLeaf, LaneBits active, PacketHits& nearest) {
-    for (std::uint32_t i = 0; i < leaf.others; ++i) {
-        const std::uint32_t id = leaf.otherIds()[i];
-        prims.visit(id, [&]<class K>(const K& primitive) {
-            if constexpr (std::is_same_v<K, Sphere>) {
-                const SphereLanes sphere(primitive);
-                takeNearer(id, inLeaf, nearest,
-                           [&](int g, RealLanes limit) { return hitSphere(sphere, packet, g, limit); });
-            } else {
-                updateHits(nearest, active, [&](int r, Hit& hit) { prims.intersect(id, rays[r], hit.t, hit); });
-            }
-        });
-    }
+// The leaf's primitives that are neither triangles nor spheres, ray by ray (the packet has no hit
+// filter).
+void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
+                   PacketHits& nearest) {
+    updateHits(nearest, active, [&](int r, Hit& hit) {
+        for (std::uint32_t i = 0; i < leaf.others; ++i) prims.intersect(leaf.otherIds()[i], rays[r], hit.t, hit);
+    });
 }
 
-// The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
-// tMax), found and counted as SplitTree::occluded finds and counts them ray by ray: the triangles
-// block by block, a block's kSimdWidth (fewer in the last) tested and counted together, a ray
-// stopping after the first block that blocks it; then the other primitives one at a time, until
-// one blocks (the packet has no hit filter).
-LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const Real* tMax,
-                       const PacketRays& packet, Lanes open, LaneBits active, const Lanes& tLimit,
-                       std::uint64_t& tests) {
+// The rays of `active` (lanes `open`) that one of `blocks` (holding `total` primitives of a
+// kind) blocks before their tLimit, block by block, a block's kSimdWidth (fewer in the last)
+// tested and counted together, a ray stopping after the first block that blocks it. Updates `open`
+// and `active`.
+template <class Block>
+LaneBits blockedInBlocks(const Block* blocks, std::uint32_t blockCount, std::uint32_t total, const PacketRays& packet,
+                         Lanes& open, LaneBits& active, const Lanes& tLimit, std::uint64_t& tests) {
     LaneBits blocked = 0;
-    const TriangleBlock* blocks = leaf.blocks();
-    for (std::uint32_t b = 0; b < leaf.blockCount() && active != 0; ++b) {
-        const std::uint32_t size = std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
+    for (std::uint32_t b = 0; b < blockCount && active != 0; ++b) {
+        const std::uint32_t size = std::min<std::uint32_t>(kSimdWidth, total - b * kSimdWidth);
         tests += std::uint64_t(std::popcount(active)) * size;
         Lanes hit = broadcastLanes(0);
-        for (std::uint32_t lane = 0; lane < size; ++lane)
-            blockingTriangle(blocks[b], int(lane), packet, open, tLimit, hit);
+        for (std::uint32_t lane = 0; lane < size; ++lane) blockingIn(blocks[b], int(lane), packet, open, tLimit, hit);
         for (int g = 0; g < kGroups; ++g) open.group[g] = andNot(hit.group[g], open.group[g]);
         blocked |= bitsOf(hit);
         active &= ~blocked;
     }
-    // The others in leaf order, each against the rays not blocked yet: a sphere against all at
-    // once, the other kinds ray by ray.
-    for (std::uint32_t i = 0; i < leaf.others && active != 0; ++i) {
-        tests += std::uint64_t(std::popcount(active));
-        const std::uint32_t id = leaf.otherIds()[i];
-        LaneBits now = 0;
-        prims.visit(id, [&]<class K>(const K& primitive) {
-            if constexpr (std::is_same_v<K, Sphere>) {
-                const SphereLanes sphere(primitive);
-                for (int g = 0; g < kGroups; ++g)
-                    now |= laneBits(open.group[g] & hitSphere(sphere, packet, g, tLimit.group[g]).hit) << (g * kLanes);
-            } else {
-                for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
-                    const int r = std::countr_zero(bits);
-                    if (rt::intersectsAny(primitive, rays[r], tMax[r])) now |= 1u << r;
-                }
+    return blocked;
+}
+
+// The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
+// tMax), found and counted as SplitTree::occluded finds and counts them ray by ray: the triangles
+// block by block, then the spheres likewise (blockedInBlocks), then the other primitives one at a
+// time, until one blocks (the packet has no hit filter).
+LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const Real* tMax,
+                       const PacketRays& packet, Lanes open, LaneBits active, const Lanes& tLimit,
+                       std::uint64_t& tests) {
+    LaneBits blocked =
+        blockedInBlocks(leaf.blocks(), leaf.blockCount(), leaf.triangles, packet, open, active, tLimit, tests);
+    blocked |= blockedInBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), leaf.spheres, packet, open, active, tLimit,
+                               tests);
+    for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
+        const int r = std::countr_zero(bits);
+        for (std::uint32_t i = 0; i < leaf.others; ++i) {
+            ++tests;
+            if (prims.intersectsAny(leaf.otherIds()[i], rays[r], tMax[r])) {
+                blocked |= 1u << r;
+                break;
             }
-        });
-        if (now == 0) continue;
-        const Lanes closed = maskOf(now);
-        for (int g = 0; g < kGroups; ++g) open.group[g] = andNot(closed.group[g], open.group[g]);
-        blocked |= now;
-        active &= ~now;
+        }
     }
     return blocked;
 }
@@ -491,11 +491,13 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
         nodes_.data(), packet, nearest.t,
         [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
             const LeafPrimitives& leaf = leafAt(unit);
-            tests += std::uint64_t(std::popcount(active)) * (leaf.triangles + leaf.others);
-            // As SplitTree::intersect: the triangles in leaf order, then the other primitives.
+            tests += std::uint64_t(std::popcount(active)) * (leaf.triangles + leaf.spheres + leaf.others);
+            // As SplitTree::intersect: the triangles in leaf order, the spheres, then the others.
             for (std::uint32_t k = 0; k < leaf.triangles; ++k)
-                nearestTriangle(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
-            if (leaf.others != 0) nearestOthers(prims, leaf, rays, packet.rays, inLeaf, active, nearest);
+                nearestIn(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
+            for (std::uint32_t k = 0; k < leaf.spheres; ++k)
+                nearestIn(leaf.sphereBlocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
+            if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
             updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {

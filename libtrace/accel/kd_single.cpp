@@ -45,10 +45,19 @@ static_assert(2 * kSimdWidth == simd_avx2::kLanes);
         },
         ray, tMax);
 }
+[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const SphereBlock* first,
+                                                                          const RayLanesOf<PairLanes>& ray, Real tMax) {
+    return sphereLanes<PairLanes, 2 * kSimdWidth>(
+        [&](int axis) {
+            return axis < 0 ? simd_avx2::loadHalves(first[0].r2, first[1].r2)
+                            : simd_avx2::loadHalves(first[0].center[axis], first[1].center[axis]);
+        },
+        ray, tMax);
+}
 #endif
 
-// A leaf's triangle blocks tested against one ray, in order: two at a time where the level has
-// pairs, the last alone when their number is odd.
+// A leaf's blocks of one kind (triangles or spheres) tested against one ray, in order: two at a
+// time where the level has pairs, the last alone when their number is odd.
 class BlockTests {
 public:
     explicit BlockTests(const Ray& ray)
@@ -60,19 +69,19 @@ public:
     {
     }
 
-    // visit(b, hits, count) for each group of `count` blocks from block b on, lane i of `hits` in
-    // block b + i / kSimdWidth, each group tested against tMax as it is then; stops when visit
-    // returns true, and returns whether it did.
-    template <typename Visit>
-    [[gnu::always_inline]] bool operator()(const LeafPrimitives& leaf, const Real& tMax, const Visit& visit) const {
-        const TriangleBlock* blocks = leaf.blocks();
+    // visit(blocks + b, b, hits, count) for each group of `count` of the `blockCount` blocks from
+    // block b on, lane i of `hits` in block b + i / kSimdWidth, each group tested against tMax as
+    // it is then; stops when visit returns true, and returns whether it did.
+    template <class Block, typename Visit>
+    [[gnu::always_inline]] bool operator()(const Block* blocks, std::uint32_t blockCount, const Real& tMax,
+                                           const Visit& visit) const {
         std::uint32_t b = 0;
 #if RT_BLOCK_PAIRS
-        for (; b + 2 <= leaf.blockCount(); b += 2)
-            if (visit(b, intersectBlockPair(blocks + b, two_, tMax), 2)) return true;
+        for (; b + 2 <= blockCount; b += 2)
+            if (visit(blocks + b, b, intersectBlockPair(blocks + b, two_, tMax), 2)) return true;
 #endif
-        for (; b < leaf.blockCount(); ++b)
-            if (visit(b, intersectBlock(blocks[b], one_, tMax), 1)) return true;
+        for (; b < blockCount; ++b)
+            if (visit(blocks + b, b, intersectBlock(blocks[b], one_, tMax), 1)) return true;
         return false;
     }
 
@@ -84,8 +93,8 @@ private:
 };
 
 // Lane `lane` of the hits of the blocks from `first` on as a Hit.
-template <int N>
-Hit laneHit(const TriangleBlock* first, const LaneHits<N>& hits, int lane) {
+template <class Block, int N>
+Hit laneHit(const Block* first, const LaneHits<N>& hits, int lane) {
     return {hits.t[lane], first[lane / kSimdWidth].id[lane % kSimdWidth], hits.u[lane], hits.v[lane]};
 }
 
@@ -190,17 +199,19 @@ void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t 
     traverse(
         ray, invDir, node, tMin, tMax, nearest.t,
         counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
-            tests += leaf.triangles + leaf.others;
-            testBlocks(leaf, nearest.t, [&](std::uint32_t b, const auto& hits, int) {
+            tests += leaf.triangles + leaf.spheres + leaf.others;
+            const auto takeNearest = [&](const auto* first, std::uint32_t, const auto& hits, int) {
                 for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
                     const int lane = std::countr_zero(bits);
                     if (!(hits.t[lane] < nearest.t)) continue;
-                    const Hit candidate = RT_LEVEL_LANES::laneHit(leaf.blocks() + b, hits, lane);
+                    const Hit candidate = RT_LEVEL_LANES::laneHit(first, hits, lane);
                     if (filter && !filter->accepts(ray, candidate)) continue;
                     nearest = candidate;
                 }
                 return false;
-            });
+            };
+            testBlocks(leaf.blocks(), leaf.blockCount(), nearest.t, takeNearest);
+            testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), nearest.t, takeNearest);
             const std::uint32_t* otherIds = leaf.otherIds();
             for (std::uint32_t i = 0; i < leaf.others; ++i) {
                 if (filter)
@@ -226,22 +237,25 @@ bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t 
     traverse(
         ray, invDir, node, tMin, tMax, rayTMax,
         counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
-            // Block by block within a group: its tests counted, then whether one of its hits counts
-            // (any without a filter, else one the filter accepts).
-            const auto blockedIn = [&](std::uint32_t first, const auto& hits, int count) {
-                for (int k = 0; k < count; ++k) {
-                    const std::uint32_t b = first + std::uint32_t(k);
-                    tests += std::min<std::uint32_t>(kSimdWidth, leaf.triangles - b * kSimdWidth);
-                    unsigned bits = hits.lanes & (((1u << kSimdWidth) - 1) << (k * kSimdWidth));
-                    if (!filter && bits != 0) return true;
-                    for (; bits != 0; bits &= bits - 1)
-                        if (filter->accepts(
-                                ray, RT_LEVEL_LANES::laneHit(leaf.blocks() + first, hits, std::countr_zero(bits))))
-                            return true;
-                }
-                return false;
+            // Block by block within a group of the `total` primitives of a kind: its tests counted,
+            // then whether one of its hits counts (any without a filter, else one the filter accepts).
+            const auto blockedIn = [&](std::uint32_t total) {
+                return [&, total](const auto* first, std::uint32_t firstIndex, const auto& hits, int count) {
+                    for (int k = 0; k < count; ++k) {
+                        const std::uint32_t b = firstIndex + std::uint32_t(k);
+                        tests += std::min<std::uint32_t>(kSimdWidth, total - b * kSimdWidth);
+                        unsigned bits = hits.lanes & (((1u << kSimdWidth) - 1) << (k * kSimdWidth));
+                        if (!filter && bits != 0) return true;
+                        for (; bits != 0; bits &= bits - 1)
+                            if (filter->accepts(ray, RT_LEVEL_LANES::laneHit(first, hits, std::countr_zero(bits))))
+                                return true;
+                    }
+                    return false;
+                };
             };
-            if (testBlocks(leaf, rayTMax, blockedIn)) return found = true;
+            if (testBlocks(leaf.blocks(), leaf.blockCount(), rayTMax, blockedIn(leaf.triangles)) ||
+                testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), rayTMax, blockedIn(leaf.spheres)))
+                return found = true;
             const std::uint32_t* otherIds = leaf.otherIds();
             for (std::uint32_t i = 0; i < leaf.others; ++i) {
                 ++tests;

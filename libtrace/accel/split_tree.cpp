@@ -31,8 +31,8 @@ SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree,
 }
 
 // Lays each non-empty leaf out in leafData_: its record, its triangles in blocks in leaf order,
-// then its other ids. The triangles keep their order among themselves and are tested before the
-// other kinds; the order decides only between hits at exactly the same distance. A large tree is
+// its spheres likewise, then its other ids. Each kind keeps its order among itself, and the kinds
+// are tested in that order; the order decides only between hits at exactly the same distance. A large tree is
 // laid out in chunks of nodes on all threads (a tenth of the tree scene's build): each chunk
 // counts its leaves' units, and fills its part from where the chunks before it end.
 void SplitTree::layOutLeaves(const FlatTree& tree) {
@@ -61,36 +61,63 @@ void SplitTree::layOutLeaves(const FlatTree& tree) {
     }
 }
 
-// The record of the leaf `node` as the builder made it: how many of its primitives are triangles.
+// The record of the leaf `node` as the builder made it: how many of its primitives are triangles
+// and spheres.
 LeafPrimitives SplitTree::leafSizes(const FlatTree& tree, const SplitNode& node) const {
     const std::uint32_t* ids = &tree.primitiveIndices[node.primitiveOffset()];
-    std::uint32_t triangles = 0;
-    for (std::uint32_t i = 0; i < node.primitiveCount(); ++i) triangles += prims_.indexIn<Triangle>(ids[i]) ? 1 : 0;
-    return {triangles, node.primitiveCount() - triangles};
+    LeafPrimitives sizes;
+    for (std::uint32_t i = 0; i < node.primitiveCount(); ++i) {
+        sizes.triangles += prims_.indexIn<Triangle>(ids[i]) ? 1 : 0;
+        sizes.spheres += prims_.indexIn<Sphere>(ids[i]) ? 1 : 0;
+    }
+    sizes.others = node.primitiveCount() - sizes.triangles - sizes.spheres;
+    return sizes;
 }
+
+namespace {
+
+// Copies the blocks of Kind one by one to `out`, each full block or the last as it is filled:
+// set(block, lane, primitive, id) fills a lane.
+template <class Block, class Kind>
+class BlockWriter {
+public:
+    BlockWriter(std::byte* out, std::uint32_t count) : out_(out), count_(count) {}
+    void add(const Kind& primitive, std::uint32_t id) {
+        if (written_ % kSimdWidth == 0) block_ = Block();
+        block_.set(int(written_ % kSimdWidth), primitive, id);
+        ++written_;
+        if (written_ % kSimdWidth == 0 || written_ == count_) {
+            std::memcpy(out_, &block_, sizeof(block_));
+            out_ += sizeof(block_);
+        }
+    }
+
+private:
+    std::byte* out_;
+    std::uint32_t count_, written_ = 0;
+    Block block_;
+};
+
+}  // namespace
 
 // Writes the leaf of the primitives `ids` (its record `sizes`) to leafData_ from unit `at` on.
 // (Copying the bytes of these trivially copyable types creates them there.)
 void SplitTree::layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes, std::size_t at) {
     std::byte* out = leafData_[at].bytes;
     std::memcpy(out, &sizes, sizeof(sizes));
-    auto* blocks = out + sizeof(LeafPrimitives);
-    auto* others = blocks + sizes.blockCount() * sizeof(TriangleBlock);
-    TriangleBlock block;
-    std::uint32_t triangles = 0;
-    for (std::uint32_t i = 0; i < sizes.triangles + sizes.others; ++i) {
-        const std::optional<std::uint32_t> triangle = prims_.indexIn<Triangle>(ids[i]);
-        if (!triangle) {
+    std::byte* const triangleBlocks = out + sizeof(LeafPrimitives);
+    std::byte* const sphereBlocks = triangleBlocks + sizes.blockCount() * sizeof(TriangleBlock);
+    std::byte* others = sphereBlocks + sizes.sphereBlockCount() * sizeof(SphereBlock);
+    BlockWriter<TriangleBlock, Triangle> triangles(triangleBlocks, sizes.triangles);
+    BlockWriter<SphereBlock, Sphere> spheres(sphereBlocks, sizes.spheres);
+    for (std::uint32_t i = 0; i < sizes.triangles + sizes.spheres + sizes.others; ++i) {
+        if (const std::optional<std::uint32_t> triangle = prims_.indexIn<Triangle>(ids[i])) {
+            triangles.add(prims_.all<Triangle>()[*triangle], ids[i]);
+        } else if (const std::optional<std::uint32_t> sphere = prims_.indexIn<Sphere>(ids[i])) {
+            spheres.add(prims_.all<Sphere>()[*sphere], ids[i]);
+        } else {
             std::memcpy(others, &ids[i], sizeof(std::uint32_t));
             others += sizeof(std::uint32_t);
-            continue;
-        }
-        if (triangles % kSimdWidth == 0) block = TriangleBlock();
-        block.set(int(triangles % kSimdWidth), prims_.all<Triangle>()[*triangle], ids[i]);
-        ++triangles;
-        if (triangles % kSimdWidth == 0 || triangles == sizes.triangles) {
-            std::memcpy(blocks, &block, sizeof(block));
-            blocks += sizeof(block);
         }
     }
 }

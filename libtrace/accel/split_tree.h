@@ -17,6 +17,7 @@
 
 #include "accel/accelerator.h"
 #include "accel/settings.h"
+#include "geometry/sphere_block.h"
 #include "geometry/triangle_block.h"
 
 namespace rt {
@@ -76,22 +77,30 @@ inline SahCosts sahCosts(const KdSettings& kd) { return {kd.traversalCost, kd.in
 
 // A non-empty leaf as the traversal reads it, in one piece of memory: this 16-byte record, then its
 // triangles, copied in blocks of kSimdWidth (two with Real = double, four with float;
-// geometry/triangle_block.h) so that they are read in sequence and tested together, then the ids of
-// its other primitives (padded to 16 bytes), tested one by one through the PrimitiveView. The
-// record and the first block lie side by side, so the traversal fetches them together: the block's
-// address does not wait for the record.
+// geometry/triangle_block.h) so that they are read in sequence and tested together, then its
+// spheres likewise (geometry/sphere_block.h), then the ids of its other primitives (padded to 16
+// bytes), tested one by one through the PrimitiveView. The record and the first block lie side by
+// side, so the traversal fetches them together: the block's address does not wait for the record.
 struct alignas(16) LeafPrimitives {
-    std::uint32_t triangles = 0, others = 0;
+    std::uint32_t triangles = 0, spheres = 0, others = 0;
 
     std::uint32_t blockCount() const { return (triangles + kSimdWidth - 1) / kSimdWidth; }
+    std::uint32_t sphereBlockCount() const { return (spheres + kSimdWidth - 1) / kSimdWidth; }
     // The 16-byte units the leaf takes: this record, its blocks and its other ids, padded.
-    std::size_t units() const { return 1 + blockCount() * sizeof(TriangleBlock) / 16 + (others + 3) / 4; }
+    std::size_t units() const {
+        return 1 + (blockCount() * sizeof(TriangleBlock) + sphereBlockCount() * sizeof(SphereBlock)) / 16 +
+               (others + 3) / 4;
+    }
     const TriangleBlock* blocks() const { return std::launder(reinterpret_cast<const TriangleBlock*>(this + 1)); }
+    const SphereBlock* sphereBlocks() const {
+        return std::launder(reinterpret_cast<const SphereBlock*>(blocks() + blockCount()));
+    }
     const std::uint32_t* otherIds() const {
-        return std::launder(reinterpret_cast<const std::uint32_t*>(blocks() + blockCount()));
+        return std::launder(reinterpret_cast<const std::uint32_t*>(sphereBlocks() + sphereBlockCount()));
     }
 };
-static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16);
+static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16 &&
+              sizeof(SphereBlock) % 16 == 0 && alignof(SphereBlock) <= 16);
 // What the traversal fetches ahead of a leaf (SplitTree::prefetchLeafOf): its record and first block.
 inline constexpr std::size_t kLeafPrefetchBytes = sizeof(LeafPrimitives) + sizeof(TriangleBlock);
 

@@ -81,8 +81,8 @@ TEST(SplitTree, StatsAndVisitorDescribeTheTree) {
     EXPECT_EQ(st.nodes, 3u);
     EXPECT_EQ(st.leaves, 2u);
     EXPECT_EQ(st.primitiveReferences, 2u);
-    // nodes, then each leaf's record and its sphere's id, padded to 16 bytes
-    EXPECT_EQ(st.memoryBytes, 3 * 8u + 2 * (sizeof(LeafPrimitives) + 16u));
+    // nodes, then each leaf's record and a block of spheres holding its sphere
+    EXPECT_EQ(st.memoryBytes, 3 * 8u + 2 * (sizeof(LeafPrimitives) + sizeof(SphereBlock)));
     EXPECT_DOUBLE_EQ(st.bytesPerPrimitive(), double(st.memoryBytes) / 2);
     EXPECT_EQ(st.maxDepth, 1u);
     // Root 1.0 * C_T; each half has area 2*(16 + 2*4*2) = 64 of 96: 2 * 1.5 * 1 * 2/3.
