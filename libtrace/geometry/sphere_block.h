@@ -64,8 +64,8 @@ template <class Lanes, int N, class Load>
 
 // The test on one block's spheres.
 inline BlockHits intersectBlock(const SphereBlock& b, const RayLanes& ray, Real tMax) {
-    return sphereLanes<BaseLanes, kSimdWidth>(
-        [&](int axis) { return loadLanes(axis < 0 ? b.r2 : b.center[axis]); }, ray, tMax);
+    return sphereLanes<BaseLanes, kSimdWidth>([&](int axis) { return loadLanes(axis < 0 ? b.r2 : b.center[axis]); },
+                                              ray, tMax);
 }
 
 }  // namespace rt
