@@ -52,14 +52,7 @@ template <class Lanes, int N, class Load>
     const L thc = squareRoot(r2 - d2);
     const L near = select(outside, tca - thc, tca + thc);
     const L t = select(lessThan(zero, near), near, tca + thc);  // the origin on the surface: the far side
-    LaneHits<N> hits;
-    hits.lanes = laneBits(andNot(missed, lessThan(zero, t) & lessThan(t, Lanes::all(tMax))));
-    if (hits.lanes) {
-        storeLanes(hits.t, t);
-        storeLanes(hits.u, zero);
-        storeLanes(hits.v, zero);
-    }
-    return hits;
+    return LaneHits<N>::of(andNot(missed, lessThan(zero, t) & lessThan(t, Lanes::all(tMax))), t, zero, zero);
 }
 
 // The test on one block's spheres.

@@ -61,6 +61,19 @@ template <int N>
 struct LaneHits {
     unsigned lanes = 0;  // bit i: lane i hits
     Real t[N], u[N], v[N];
+
+    // The hits of the lanes set in `hit`, their t, u and v stored only if there are any.
+    template <class L>
+    [[gnu::always_inline]] static LaneHits of(const L& hit, const L& t, const L& u, const L& v) {
+        LaneHits hits;
+        hits.lanes = laneBits(hit);
+        if (hits.lanes) {
+            storeLanes(hits.t, t);
+            storeLanes(hits.u, u);
+            storeLanes(hits.v, v);
+        }
+        return hits;
+    }
 };
 using BlockHits = LaneHits<kSimdWidth>;
 
@@ -90,14 +103,7 @@ template <class Lanes, int N, class Load>
     const L zero = Lanes::all(0), one = Lanes::all(1);
     const L inside = notEqual(det, zero) & notLessThan(u, zero) & notGreaterThan(u, one) & notLessThan(v, zero) &
                      notGreaterThan(u + v, one);
-    LaneHits<N> hits;
-    hits.lanes = laneBits(inside & lessThan(zero, t) & lessThan(t, Lanes::all(tMax)));
-    if (hits.lanes) {
-        storeLanes(hits.t, t);
-        storeLanes(hits.u, u);
-        storeLanes(hits.v, v);
-    }
-    return hits;
+    return LaneHits<N>::of(inside & lessThan(zero, t) & lessThan(t, Lanes::all(tMax)), t, u, v);
 }
 
 // The test on one block's triangles.
