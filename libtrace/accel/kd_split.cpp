@@ -20,7 +20,7 @@ void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, SplitEven
     }
 }
 
-void addEventsByType(const std::vector<FloatBox>& boxes, int axis, SplitEvents& events) {
+void addEventsByType(std::span<const FloatBox> boxes, int axis, SplitEvents& events) {
     for (std::uint32_t i = 0; i < boxes.size(); ++i)
         if (!boxes[i].planar(axis)) events.emplace_back(boxes[i].hi[axis], i, SplitEvent::End);
     for (std::uint32_t i = 0; i < boxes.size(); ++i)
@@ -124,7 +124,7 @@ void sweepSortedEvents(const SplitEvents& events, int axis, std::size_t primitiv
     }
 }
 
-SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& sah) {
+SahSplit findSplitBySorting(std::span<const FloatBox> boxes, const SahModel& sah) {
     SahSplit best;
     thread_local SplitEvents events;  // reused: small nodes are many
     for (int axis = 0; axis < 3; ++axis) {
@@ -375,7 +375,7 @@ private:
 // Offers every plane of `axes` to `best`, axis by axis in order, with the boxes below, above
 // and in it counted in one pass over the boxes (in chunks on all threads in a large node: the
 // counts are integers, so their sum is the same in any order).
-SahSplit bestOfPlanes(const std::vector<FloatBox>& boxes, const std::vector<AxisPlanes>& axes, const SahModel& sah) {
+SahSplit bestOfPlanes(std::span<const FloatBox> boxes, const std::vector<AxisPlanes>& axes, const SahModel& sah) {
     const std::size_t n = boxes.size();
     const Chunks chunks = nodeChunks(n);
     std::vector<PlaneCounts> counts(chunks.count(), PlaneCounts(axes));  // per chunk
@@ -396,7 +396,7 @@ SahSplit bestOfPlanes(const std::vector<FloatBox>& boxes, const std::vector<Axis
 }
 
 // The lowest lower and highest upper bound of the boxes on each axis (empty: lo > hi).
-FloatBox extentOf(const std::vector<FloatBox>& boxes) {
+FloatBox extentOf(std::span<const FloatBox> boxes) {
     const Chunks chunks = nodeChunks(boxes.size());
     std::vector<FloatBox> extents(chunks.count(), FloatBox::empty());
     forEachChunk(chunks, [&](std::size_t c, std::size_t begin, std::size_t end) {
@@ -409,14 +409,14 @@ FloatBox extentOf(const std::vector<FloatBox>& boxes) {
 
 }  // namespace
 
-SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples, const SahModel& sah) {
+SahSplit findSplitBySampling(std::span<const FloatBox> boxes, const Aabb& voxel, int samples, const SahModel& sah) {
     std::vector<AxisPlanes> axes;
     for (int axis = 0; axis < 3; ++axis)
         axes.push_back({axis, EvenPlanes(voxel.lo[axis], voxel.diagonal()[axis], samples + 1, 1, samples)});
     return bestOfPlanes(boxes, axes, sah);
 }
 
-SahSplit findSplitByBinning(const std::vector<FloatBox>& boxes, int bins, const SahModel& sah) {
+SahSplit findSplitByBinning(std::span<const FloatBox> boxes, int bins, const SahModel& sah) {
     const FloatBox extent = extentOf(boxes);
     std::vector<AxisPlanes> axes;
     for (int axis = 0; axis < 3; ++axis) {

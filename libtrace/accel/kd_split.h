@@ -9,11 +9,13 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "accel/settings.h"
 #include "core/aabb.h"
+#include "core/default_init.h"
 
 namespace rt {
 
@@ -63,24 +65,7 @@ struct SplitEvent {
     bool operator<(const SplitEvent& o) const { return pos < o.pos || (pos == o.pos && type() < o.type()); }
 };
 
-// Leaves the items a vector grows by uninitialized (default-initialized), for the event lists
-// that are sized first and then written: value-initializing them cost a pass of its own.
-template <typename T>
-struct DefaultInitAllocator : std::allocator<T> {
-    template <typename U>
-    struct rebind {
-        using other = DefaultInitAllocator<U>;
-    };
-    template <typename U>
-    void construct(U* p) noexcept {
-        ::new (static_cast<void*>(p)) U;
-    }
-    template <typename U, typename... Args>
-    void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-    }
-};
-using SplitEvents = std::vector<SplitEvent, DefaultInitAllocator<SplitEvent>>;
+using SplitEvents = UninitializedVector<SplitEvent>;  // sized first, then written
 
 // Sorts events into operator<'s order in linear time (LSD radix sort), for the root's
 // millions of events; std::sort serves the small lists below it. Faster when the events
@@ -97,7 +82,7 @@ void mergeSortedEvents(const SplitEvent* a, const SplitEvent* aEnd, const SplitE
 void addEvents(const FloatBox& box, std::uint32_t primitive, int axis, SplitEvents& events);
 // Appends the events of all `boxes` (primitive i is boxes[i]) on `axis` in type order: ends,
 // then planars, then starts, each in primitive order.
-void addEventsByType(const std::vector<FloatBox>& boxes, int axis, SplitEvents& events);
+void addEventsByType(std::span<const FloatBox> boxes, int axis, SplitEvents& events);
 
 struct SahSplit {
     int axis = -1;
@@ -148,14 +133,14 @@ void sweepSortedEvents(const SplitEvents& events, int axis, std::size_t primitiv
                        SahSplit& best);
 
 // The thesis's method: build and sort the events of every axis in this node.
-SahSplit findSplitBySorting(const std::vector<FloatBox>& boxes, const SahModel& sah);
+SahSplit findSplitBySorting(std::span<const FloatBox> boxes, const SahModel& sah);
 
 // The thesis's sampling: `samples` evenly spaced planes per axis inside the voxel.
-SahSplit findSplitBySampling(const std::vector<FloatBox>& boxes, const Aabb& voxel, int samples, const SahModel& sah);
+SahSplit findSplitBySampling(std::span<const FloatBox> boxes, const Aabb& voxel, int samples, const SahModel& sah);
 
 // Min-max binning (Shevtsov et al. 2007): `bins` + 1 evenly spaced planes per axis from the
 // lowest lower bound of the boxes to the highest upper bound, so that the planes at both ends
 // cut off the empty space around them, as the exact sweep's would.
-SahSplit findSplitByBinning(const std::vector<FloatBox>& boxes, int bins, const SahModel& sah);
+SahSplit findSplitByBinning(std::span<const FloatBox> boxes, int bins, const SahModel& sah);
 
 }  // namespace rt

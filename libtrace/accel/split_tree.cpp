@@ -9,7 +9,7 @@
 
 namespace rt {
 
-void FlatTree::addLeaf(const std::vector<std::uint32_t>& primitives) {
+void FlatTree::addLeaf(std::span<const std::uint32_t> primitives) {
     nodes.push_back(SplitNode::leaf(std::uint32_t(primitiveIndices.size()), std::uint32_t(primitives.size())));
     primitiveIndices.insert(primitiveIndices.end(), primitives.begin(), primitives.end());
 }

@@ -12,11 +12,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <new>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "accel/accelerator.h"
 #include "accel/settings.h"
+#include "core/default_init.h"
 #include "geometry/sphere_block.h"
 #include "geometry/triangle_block.h"
 
@@ -61,7 +63,7 @@ struct FlatTree {
     std::vector<SplitNode> nodes;  // pre-order
     std::vector<std::uint32_t> primitiveIndices;
 
-    void addLeaf(const std::vector<std::uint32_t>& primitives);
+    void addLeaf(std::span<const std::uint32_t> primitives);
     // Appends `subtree`, built separately, fixing its node and primitive offsets.
     void append(const FlatTree& subtree);
 };
@@ -181,7 +183,7 @@ private:
     struct alignas(16) LeafUnit {
         std::byte bytes[16];
     };
-    std::vector<LeafUnit> leafData_;
+    UninitializedVector<LeafUnit> leafData_;  // sized, then written in parallel (layOutLeaves)
     const LeafPrimitives& leafAt(std::uint32_t unit) const {
         return *std::launder(reinterpret_cast<const LeafPrimitives*>(&leafData_[unit]));
     }

@@ -17,8 +17,8 @@ struct TwoSpheres {
         prims.add<Sphere>({{0, 0, Real(0.5)}, Real(0.5)}, 0);
         FlatTree flat;
         flat.nodes.push_back(SplitNode::inner(2, 0.0f, 2));
-        flat.addLeaf({0});
-        flat.addLeaf({1});
+        flat.addLeaf(std::vector<std::uint32_t>{0});
+        flat.addLeaf(std::vector<std::uint32_t>{1});
         tree = std::make_unique<SplitTree>(prims, Aabb{{-2, -2, -2}, {2, 2, 2}}, flat, "test", SahCosts{1.0, 1.5});
     }
 };
@@ -110,7 +110,7 @@ TEST(SplitTree, LeafBlocksFindTheNearestTriangleAsTheScalarTestDoes) {
     }
     prims.add<Sphere>({{0, 0, Real(0.5)}, Real(0.25)}, 0);
     FlatTree flat;
-    flat.addLeaf({0, 1, 2, 3, 4, 5, 6});
+    flat.addLeaf(std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6});
     const SplitTree tree(prims, Aabb{{-2, -2, -2}, {8, 8, 8}}, flat, "test", SahCosts{1.0, 1.5});
     RayCounters counters;
     const Ray ray{{Real(0.1), Real(0.2), 0}, normalize(Vec3{Real(0.01), Real(-0.02), 1})};
