@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds rt, and renders the bundled demo scene (scenes/demo.xml)
-# to out/demo.png (sRGB, for any image viewer) and out/demo.exr (linear half float).
+# to out/demo.png (sRGB, for any image viewer) and out/demo.exr (linear half float). It installs
+# and builds only what the render needs (rt-render, not the tests and benchmarks: scripts/test.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
-scripts/build.sh release
+scripts/install-deps.sh --build
+scripts/build.sh release rt-render
 mkdir -p out
 render=build/release/tools/render/rt-render
 # KD tree, shadows, reflections up to depth 5, 9 jittered samples per pixel.

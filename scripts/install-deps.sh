@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rt builds with, if any is missing. Needs root (or sudo).
 #   scripts/install-deps.sh           what rt builds, tests and runs with
+#   scripts/install-deps.sh --build   only what building the tools needs (scripts/demo.sh: no test
+#                                     runners, sanitizers, Slurm or window system to install)
 #   scripts/install-deps.sh --checks  also clang 14 with its sanitizer runtimes and OpenMP, for the
 #                                     asan, tsan and fuzz presets (CI, where CI=true, installs them)
 #   scripts/install-deps.sh --bench   also what only the benchmarks use: Intel Embree 3 for
@@ -10,13 +12,17 @@ set -euo pipefail
 packages=(
     cmake ninja-build g++ pkg-config ccache
     libassimp-dev libtinygltf-dev libtinyobjloader-dev libopenimageio-dev libopencolorio-dev libcli11-dev
-    libpugixml-dev libgtest-dev libbenchmark-dev
-    openimageio-tools opencolorio-tools
-    clang-format-14  # the `format` test: scripts/check-format.sh against .clang-format
-    python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
-    libsdl2-dev xvfb  # rt-render -o sdl; tests/cli/render_sdl.sh opens its window in Xvfb
-    slurm-wlm munge  # tests/cli/farm_slurm.sh starts a one-node Slurm cluster (as root) for rt-farm
+    libpugixml-dev libgtest-dev libbenchmark-dev  # configuring the release preset finds these two
 )
+if [ "${1:-}" != --build ]; then
+    packages+=(
+        openimageio-tools opencolorio-tools
+        clang-format-14  # the `format` test: scripts/check-format.sh against .clang-format
+        python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
+        libsdl2-dev xvfb  # rt-render -o sdl; tests/cli/render_sdl.sh opens its window in Xvfb
+        slurm-wlm munge  # tests/cli/farm_slurm.sh starts a one-node Slurm cluster (as root) for rt-farm
+    )
+fi
 if [ "${1:-}" = --checks ] || [ "${CI:-}" = true ]; then
     packages+=(clang-14 libclang-rt-14-dev libomp-14-dev)
 fi
