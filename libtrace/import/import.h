@@ -45,9 +45,6 @@ struct ImportOptions {
     // rt-render --set: fills $NAME in an XML scene's attribute values (scene/parameters.h);
     // a model file has none, so parameters given for one are an error.
     SceneParameters parameters;
-    // A model with emissive materials but no light gets no default light: its emitters light it
-    // (rt-render --integrator path; the Whitted tracer shows emitters but lights nothing with them).
-    bool emittersLight = false;
     // glTF buffers may be read from anywhere; by default only from the model's folder and below
     // (standard input: the working folder), so that a file cannot make rt copy /etc/passwd.
     bool filesOutsideModelFolder = false;

@@ -10,13 +10,20 @@ Light placeLight(const PunctualLight& in, const Transform& node, double unitScal
     Light light;
     light.type = in.type;
     light.color = in.color;
-    light.position = node.point(in.position);
-    const Vec3 direction = node.vector(in.direction);
-    if (!isFinite(light.position) || !isFinite(direction) || !(length(direction) > 0))
-        throw InputError(what + " has a NaN, infinite or zero position or direction");
+    // Each type is checked for what it has: a point light no direction (Assimp's omni lights
+    // come with a zero one), a directional light no position.
+    if (in.type != Light::Type::Directional) {
+        light.position = node.point(in.position);
+        if (!isFinite(light.position)) throw InputError(what + " has a NaN or infinite position");
+    }
+    if (in.type != Light::Type::Point) {
+        const Vec3 direction = node.vector(in.direction);
+        if (!isFinite(direction) || !(length(direction) > 0))
+            throw InputError(what + " has a NaN, infinite or zero direction");
+        light.direction = normalize(direction);
+    }
     if (!isFinite(in.color) || in.color.r < 0 || in.color.g < 0 || in.color.b < 0)
         throw InputError(what + " has a negative or non-finite colour or intensity");
-    if (in.type != Light::Type::Point) light.direction = normalize(direction);
     if (in.type != Light::Type::Directional && in.inverseSquare) {
         light.falloff = Light::Falloff::InverseSquare;
         light.color *= float(unitScale * unitScale);

@@ -73,14 +73,16 @@ void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options
         report.notes.push_back(std::string(options.camera == kFramingCamera ? "--camera auto" : "no usable camera") +
                                ": made one with a 50 degree fov framing the scene's bounds");
     }
-    const auto emits = [](const Material& m) { return m.emission != Color{}; };
-    if (scene.lights.empty() && options.emittersLight &&
-        std::any_of(scene.materials.begin(), scene.materials.end(), emits)) {
-        report.notes.push_back("no light: lit by its emissive materials");
-    } else if (scene.lights.empty()) {
-        scene.lights.push_back(Light{scene.camera.origin, Color(1, 1, 1), 0});
+    if (scene.lights.empty()) {
+        Light headlight;
+        headlight.headlight = true;
+        scene.lights.push_back(headlight);
+        scene.placeHeadlights();
         report.lightGenerated = true;
-        report.notes.push_back("no light: added a white point light at the camera");
+        report.notes.push_back(scene.hasEmissiveMaterial()
+                                   ? "no light: added a headlight, a white point light at the camera "
+                                     "(the path tracer lights the model by its emissive materials instead)"
+                                   : "no light: added a headlight, a white point light at the camera");
     }
 }
 

@@ -37,7 +37,8 @@ void scaleLightsToUnitPeak(std::vector<Light>& lights);
 // If the importer chose no camera (report.cameraUsed empty, or --camera auto), a camera with a
 // 50 degree horizontal fov looking at the bounds' centre from the front, right and above, far
 // enough for the bounding sphere to fit the narrower side of an image of `options.aspect`. If
-// the scene has no light, a white point light at the camera. Each is recorded in the notes.
+// the scene has no light, a headlight: a white point light at the camera, wherever the camera is
+// at render time (Light::headlight). Each is recorded in the notes.
 void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options);
 
 }  // namespace rt

@@ -52,7 +52,8 @@ Vec3 equirectangularDirection(Real s, Real t) {
     return {sinTheta * std::sin(phi), std::cos(theta), -sinTheta * std::cos(phi)};
 }
 
-EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* images) : scene_(scene), images_(images) {
+EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* images, bool sampled)
+    : scene_(scene), images_(images) {
     if (scene.environment) {
         texture_ = scene.environment->texture;
         intensity_ = scene.environment->intensity;
@@ -63,6 +64,7 @@ EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* imag
         average_ = luminance(scene.background);
         return;
     }
+    if (!sampled) return;
     width_ = kGridWidth, height_ = kGridHeight;
     cells_.resize(std::size_t(width_) * std::size_t(height_));
     const auto brightness = [this](Real s, Real t) { return std::max(0.0, double(luminance(imageRadiance(s, t)))); };

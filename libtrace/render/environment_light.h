@@ -41,7 +41,9 @@ class EnvironmentLight {
 public:
     // The scene's environment image if it has one, else its background colour everywhere.
     // `images` looks the image up (none: it is white, as every image texture without lookups).
-    EnvironmentLight(const Scene& scene, const ImageTextures* images);
+    // Without `sampled` only radiance() may be asked (the Whitted tracer's background): the
+    // distribution over the image, a million lookups, is not built.
+    EnvironmentLight(const Scene& scene, const ImageTextures* images, bool sampled = true);
 
     Color radiance(const Vec3& direction) const;
     // The mean luminance over the sphere, for the light's share of next-event samples.

@@ -22,7 +22,9 @@ LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* im
     const double radius = box.empty() ? 1 : std::max(0.5 * double(length(box.diagonal())), 1e-6);
     const double sphereArea = 4 * kPi * radius * radius;
     std::vector<double> power;
+    const bool emitters = scene.hasEmissiveMaterial();
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        if (scene.lights[i].headlight && emitters) continue;  // the emitters light the scene (scene/light.h)
         entries_.push_back({LightSample::Source::Point, std::uint32_t(i)});
         power.push_back(sphereArea * double(luminance(scene.lights[i].color)));  // irradiance I everywhere
     }

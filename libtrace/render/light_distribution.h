@@ -31,9 +31,11 @@ struct LightSample {
 
 class LightDistribution {
 public:
-    // The emitters of a flattened scene: materials with a non-black emission make their
-    // triangles area lights (the emission texture is not part of the estimate). `images` looks up
-    // an environment image.
+    // The emitters of a flattened scene: its lights, and materials with a non-black emission
+    // make their triangles area lights (the emission texture is not part of the estimate). A
+    // headlight is left out when there are such materials: they light the scene, as they do a
+    // model in Blender or a glTF viewer, and its file renders as its converted XML does.
+    // `images` looks up an environment image.
     explicit LightDistribution(const Scene& scene, const ImageTextures* images = nullptr);
 
     bool empty() const { return cdf_.empty(); }

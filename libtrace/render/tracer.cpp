@@ -42,6 +42,7 @@ Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSetting
       accel_(accel),
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
+      environment_(scene, images, false),
       epsilon_(secondaryRayOffset(scene.primitives)),
       differentialScale_(std::max(Real(0.125), 1 / std::sqrt(Real(settings.pixelSamples)))),
       coneSpread_(camera_.pixelAngle() * differentialScale_),
@@ -111,7 +112,7 @@ void Tracer::pixelRun(int x0, int y, int count, RenderCounters& counters, Color*
         // cameraSample's shading, with the shadows found
         const Color sample = found[k]
                                  ? shade(rays[k], hits[k], surfaces[k], 0, false, rng, counters, cones[k], &shadows[k])
-                                 : scene_.background;
+                                 : background(rays[k].direction);
         PixelEstimate estimate;
         if (!estimate.add(sample, found[k])) counters.nonFinite.add(x, y);
         colors[i] = estimate.mean();
@@ -162,7 +163,7 @@ Tracer::CameraHit Tracer::cameraHit(Real px, Real py, const Ray& ray, const Hit&
 
 Color Tracer::cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, SampleRng& rng, RenderCounters& counters,
                            AovSums* aovSums) const {
-    if (!hit) return scene_.background;
+    if (!hit) return background(ray.direction);
     // the AOVs take the point, normal and colour the shading uses
     const CameraHit seen = cameraHit(px, py, ray, *hit);
     if (aovSums)
@@ -175,7 +176,7 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
                     const RayDifferential& differential) const {
     Hit hit;
     RayCounters& work = depth == 0 ? counters.camera : counters.reflection;
-    if (!accel_.intersect(ray, kInfinity, hit, work)) return scene_.background;
+    if (!accel_.intersect(ray, kInfinity, hit, work)) return background(ray.direction);
     return shadeHit(ray, hit, depth, inBundle, rng, counters, differential);
 }
 
@@ -307,7 +308,7 @@ Color Tracer::lobe(const Ray& axis, const Vec3& side, const Material& m, const S
     if (!(sigma > 0)) {
         ++counters.reflection.rays;
         Hit hit;
-        if (!accel_.intersect(axis, kInfinity, hit, counters.reflection)) return scene_.background;
+        if (!accel_.intersect(axis, kInfinity, hit, counters.reflection)) return background(axis.direction);
         // Its footprint widens instead, by a sigma read only for a ray that hits something.
         const float widen = 2 * (settings_.glossyReflections ? sigma : spread());
         return shadeHit(axis, hit, depth + 1, inBundle, rng, counters, secondary(axis.direction, cone, widen));

@@ -11,6 +11,7 @@
 #include "accel/accelerator.h"
 #include "render/aov.h"
 #include "render/camera_rays.h"
+#include "render/environment_light.h"
 #include "render/refraction.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
@@ -129,11 +130,16 @@ private:
     // The differential of a ray leaving a surface along `d` where the footprint's radius is
     // `cone`: a cone widening by the pixel angle plus `widen` radians per unit distance.
     RayDifferential secondary(const Vec3& d, Real cone, float widen) const;
+    // What a ray that leaves the scene along `direction` sees: the environment image
+    // (--environment), as glTF viewers show it behind the model and in its reflections and
+    // refractions, else the background colour. It lights nothing here (the path tracer's does).
+    Color background(const Vec3& direction) const { return environment_.radiance(direction); }
 
     const Scene& scene_;
     const Accelerator& accel_;
     RenderSettings settings_;
     CameraRays camera_;
+    EnvironmentLight environment_;
     Color ambientLight_;
     Real epsilon_;
     // The camera's differentials are scaled by this (fewer pixel samples: wider), and ray cones

@@ -25,11 +25,19 @@ struct Light {
     // direction, degrees; KHR_lights_punctual's defaults).
     float innerConeDegrees = 0;
     float outerConeDegrees = 45;
+    // rt extension: a point light that belongs to the camera rendered, at its origin wherever
+    // --look-from, --frame or --orbit put it (Scene::placeHeadlights): the light a model without
+    // lights gets. The path tracer leaves it out of a scene with emissive materials, which light
+    // it themselves (render/light_distribution.h).
+    bool headlight = false;
 };
 
 // Their names in the XML (`type`, `falloff`).
 inline constexpr NamedValues<Light::Type, 3> kLightTypeNames{
     {{"point", Light::Type::Point}, {"directional", Light::Type::Directional}, {"spot", Light::Type::Spot}}};
+// Their names on rt-render's --light: "sun" is Blender's (and glTF viewers') name for a directional light.
+inline constexpr NamedValues<Light::Type, 3> kLightOptionNames{
+    {{"point", Light::Type::Point}, {"spot", Light::Type::Spot}, {"sun", Light::Type::Directional}}};
 inline constexpr NamedValues<Light::Falloff, 2> kLightFalloffNames{
     {{"none", Light::Falloff::None}, {"inverse_square", Light::Falloff::InverseSquare}}};
 

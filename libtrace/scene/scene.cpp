@@ -120,6 +120,19 @@ std::size_t Scene::flatten() {
     return dropped;
 }
 
+void Scene::placeHeadlights() {
+    for (Light& light : lights)
+        if (light.headlight) light.position = camera.origin;
+}
+
+void Scene::dropHeadlights() {
+    std::erase_if(lights, [](const Light& light) { return light.headlight; });
+}
+
+bool Scene::hasEmissiveMaterial() const {
+    return std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.emission != Color{}; });
+}
+
 void Scene::dropDescription() {
     std::vector<Model>().swap(models);
     std::vector<Instance>().swap(instances);
@@ -141,11 +154,15 @@ std::optional<std::uint32_t> Scene::findMaterial(const std::string& name) const 
 void Scene::selectCamera(const std::string& nameOrIndex) {
     std::vector<Camera*> all{&camera};
     for (Camera& c : extraCameras) all.push_back(&c);
+    const auto take = [this](Camera& chosen) {
+        std::swap(camera, chosen);
+        placeHeadlights();
+    };
     const auto named = std::find_if(all.begin(), all.end(), [&](const Camera* c) { return c->name == nameOrIndex; });
-    if (named != all.end()) return std::swap(camera, **named);
+    if (named != all.end()) return take(**named);
     std::string known;  // names come before numbers: a camera may be named "1"
     for (std::size_t i = 0; i < all.size(); ++i) {
-        if (std::to_string(i) == nameOrIndex) return std::swap(camera, *all[i]);
+        if (std::to_string(i) == nameOrIndex) return take(*all[i]);
         known += (i ? ", " : "") + std::to_string(i) + (all[i]->name.empty() ? "" : " \"" + all[i]->name + "\"");
     }
     throw InputError("--camera " + nameOrIndex + ": the scene has no camera of that name or number (it has " + known +

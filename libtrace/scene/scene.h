@@ -153,8 +153,16 @@ struct Scene {
     // The material of primitives[prim]: a default one when the scene has none (scenes built in code).
     const Material& materialOf(std::uint32_t prim) const;
     // Makes the camera named `nameOrIndex`, or numbered so (0 is the first in the file), the one
-    // rendered (the first takes its place among the others). Throws rt::InputError naming the cameras there are.
+    // rendered (the first takes its place among the others), its headlights with it. Throws
+    // rt::InputError naming the cameras there are.
     void selectCamera(const std::string& nameOrIndex);
+    // Puts every headlight (Light::headlight) at the camera's origin: after anything that moves
+    // the camera, before a render.
+    void placeHeadlights();
+    // Removes the headlights (rt-render --light and --no-default-light replace them).
+    void dropHeadlights();
+    // Whether a material emits light (the path tracer's area lights).
+    bool hasEmissiveMaterial() const;
 };
 
 }  // namespace rt

@@ -137,6 +137,7 @@ Scene SceneBuilder::build() {
     resolveTextures();
     for (const pugi::xml_node& section : objects) readObjects(section, Transform(), 0);
 
+    scene_.placeHeadlights();
     dropped_ += scene_.flatten();
     scene_.droppedDegenerate = dropped_;
     if (dropped_ > 0)
@@ -196,7 +197,7 @@ void SceneBuilder::readList(const XmlElement& list) {
         else
             readLight(XmlElement(file_, item,
                                  {"x", "y", "z", "r", "g", "b", "size", "type", "dx", "dy", "dz", "falloff", "range",
-                                  "inner_cone", "outer_cone"}));
+                                  "inner_cone", "outer_cone", "headlight"}));
     }
 }
 
@@ -452,6 +453,10 @@ void SceneBuilder::readLight(const XmlElement& e) {
     const bool directional = light.type == Light::Type::Directional;
     for (const char* a : {"x", "y", "z", "size", "falloff", "range"})
         if (directional && e.has(a)) e.fail("a directional light has no '" + std::string(a) + "'");
+    light.headlight = e.boolean("headlight", false);
+    if (light.headlight && light.type != Light::Type::Point) e.fail("a headlight is a point light");
+    for (const char* a : {"x", "y", "z"})
+        if (light.headlight && e.has(a)) e.fail("a headlight sits at the camera: it has no '" + std::string(a) + "'");
     light.position = e.xyz(0);
     light.size = e.nonNegative("size", 0);
     light.falloff = e.named("falloff", kLightFalloffNames, Light::Falloff::None);

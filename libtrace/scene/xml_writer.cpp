@@ -107,7 +107,8 @@ pugi::xml_node addObject(pugi::xml_node parent, const Cone& c) {
 // are not the defaults the loader assumes.
 void addLight(pugi::xml_node node, const Light& light) {
     if (light.type != Light::Type::Point) node.append_attribute("type").set_value(nameOf(kLightTypeNames, light.type));
-    if (light.type != Light::Type::Directional) setXyz(node, light.position);
+    if (light.headlight) node.append_attribute("headlight").set_value("true");
+    if (light.type != Light::Type::Directional && !light.headlight) setXyz(node, light.position);
     setRgb(node, light.color);
     if (light.type != Light::Type::Directional) setNumber(node, "size", light.size);
     if (light.type != Light::Type::Point) {

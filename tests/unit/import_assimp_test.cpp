@@ -106,5 +106,26 @@ TEST(ImportAssimp, UpAxisDescribesTheFileNotTheImporter) {
     EXPECT_NEAR(b.hi.y - b.lo.y, 0, 1e-5);
 }
 
+// A 3DS omni light, which Assimp gives with a zero direction, is a point light where the file
+// puts it (issue 36: such a scene was refused by every tool).
+TEST(ImportAssimp, ThreeDsOmniLightIsAPointLight) {
+    TempDir dir;
+    using test::ThreeDsFixture;
+    const std::string path = ThreeDsFixture::write(
+        dir, ThreeDsFixture::file({ThreeDsFixture::mesh("tri", {0, 0, 0, 1, 0, 0, 0, 1, 0}),
+                                   ThreeDsFixture::omniLight("Omni01", {1, 2, 3}, {0.5f, 0.25f, 1})}));
+    const ImportResult r = importScene(path);
+    EXPECT_EQ(r.report.lightsInFile, 1u);
+    ASSERT_EQ(r.scene.lights.size(), 1u);
+    const Light& omni = r.scene.lights[0];
+    EXPECT_EQ(omni.type, Light::Type::Point);
+    EXPECT_NEAR(omni.position.x, 1, 1e-5);  // the file's Z-up axes turned to rt's Y-up: (x, z, -y)
+    EXPECT_NEAR(omni.position.y, 3, 1e-5);
+    EXPECT_NEAR(omni.position.z, -2, 1e-5);
+    EXPECT_NEAR(omni.color.b, 1, 1e-6);
+    EXPECT_NEAR(omni.color.r, 0.5, 1e-6);
+    EXPECT_FALSE(r.report.lightGenerated);
+}
+
 }  // namespace
 }  // namespace rt

@@ -191,6 +191,21 @@ TEST(ImportGltf, PunctualLightsFollowTheirNodes) {
     EXPECT_NEAR(scaled.scene.lights[1].color.r, 2 / 683.0, 1e-7);  // irradiance: no distance to scale
 }
 
+// A point light has no direction: one at the origin, under a node that flattens its -Z axis to
+// nothing, is still a light (issue 36: every zero direction was refused, whatever the type).
+TEST(ImportGltf, PointLightAtTheOriginNeedsNoDirection) {
+    TempDir dir;
+    GltfFixture f;
+    f.nodes =
+        R"([{"mesh": 0, "children": [1]}, {"scale": [1, 1, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}}])";
+    f.extra = R"(, "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 683}]}})";
+    const ImportResult r = importScene(dir.write("origin.gltf", f.json()));
+    ASSERT_EQ(r.scene.lights.size(), 1u);
+    EXPECT_EQ(r.scene.lights[0].type, Light::Type::Point);
+    expectNear(r.scene.lights[0].position, {0, 0, 0}, kLoose);
+    EXPECT_NEAR(r.scene.lights[0].color.r, 1, 1e-6);
+}
+
 TEST(ImportGltf, SpotConeOutsideTheSpecificationIsAnError) {
     TempDir dir;
     GltfFixture f;

@@ -137,7 +137,8 @@ struct GltfFixture {
 
 // A 3DS file built chunk by chunk (uint16 id, uint32 length with the 6-byte header, little
 // endian): main 0x4D4D > editor 0x3D3D > named objects 0x4000, holding a triangle mesh 0x4100
-// (vertices 0x4110, faces 0x4120) or a camera 0x4700 (position, target, bank, lens).
+// (vertices 0x4110, faces 0x4120), a camera 0x4700 (position, target, bank, lens) or an omni
+// light 0x4600 (position, then its colour in a float colour chunk 0x0010).
 struct ThreeDsFixture {
     using Bytes = std::vector<std::uint8_t>;
 
@@ -178,6 +179,14 @@ struct ThreeDsFixture {
         Bytes data;
         for (float v : numbers) putFloat(data, v);
         return object(name, chunk(0x4700, data));
+    }
+    static Bytes omniLight(const std::string& name, const std::vector<float>& position, const std::vector<float>& rgb) {
+        Bytes data, color;
+        for (float v : position) putFloat(data, v);
+        for (float v : rgb) putFloat(color, v);
+        const Bytes colorChunk = chunk(0x0010, color);
+        data.insert(data.end(), colorChunk.begin(), colorChunk.end());
+        return object(name, chunk(0x4600, data));
     }
     static Bytes file(const std::vector<Bytes>& objects) {
         Bytes editor;

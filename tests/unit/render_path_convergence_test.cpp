@@ -16,9 +16,7 @@ using namespace rt;
 namespace {
 
 Scene cornellBox(const std::string& name) {
-    ImportOptions options;
-    options.emittersLight = true;
-    Scene s = loadScene(std::string(RT_SHARED_DIR) + "/models/obj/" + name + "/" + name + ".obj", options);
+    Scene s = loadScene(std::string(RT_SHARED_DIR) + "/models/obj/" + name + "/" + name + ".obj");
     s.camera.origin = {0, 1, 3.9};  // the view of docs/path-tracing.md's picture
     s.camera.destination = {0, 1, 0};
     s.camera.fovDegrees = 40;

@@ -483,6 +483,10 @@ const BadScene kBadScenes[] = {
      "s.xml:4: the light's direction (dx, dy, dz) is zero"},
     {"inner cone wider than outer", sceneWith("<lights>\n<light type=\"spot\" inner_cone=\"50\"/></lights>"),
      "s.xml:4: a spot needs 0 <= inner_cone <= outer_cone <= 90 (degrees)"},
+    {"headlight with a position", sceneWith("<lights>\n<light headlight=\"true\" x=\"1\"/></lights>"),
+     "s.xml:4: a headlight sits at the camera: it has no 'x'"},
+    {"headlight that is a spot", sceneWith("<lights>\n<light type=\"spot\" headlight=\"true\"/></lights>"),
+     "s.xml:4: a headlight is a point light"},
     {"wrong root", "<?xml version=\"1.0\"?>\n<scenery/>", "s.xml:2: the root element must be <scene>"},
     {"empty file", "", "s.xml:1: malformed XML: No document element found"},
 };

@@ -449,6 +449,33 @@ TEST(XmlWriter, EnvironmentRoundTrips) {
     EXPECT_EQ(savedToStdout(none).find("environment"), std::string::npos);
 }
 
+// A headlight is written without a position and read back at the camera: the scene's, then the
+// one --camera picks (issue 36: the default light belongs to the camera rendered).
+TEST(XmlWriter, HeadlightRoundTripsAtTheCamera) {
+    const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
+      <camera name="top"><origin y="7"/><destination/><up z="1"/></camera>
+      <lights><light headlight="true" r="0.5" g="0.5" b="0.5"/><light x="1" y="2" z="3"/></lights></scene>)";
+    Scene first = loadSceneXmlFromString(xml, "<stdin>", ".");
+    ASSERT_EQ(first.lights.size(), 2u);
+    EXPECT_TRUE(first.lights[0].headlight);
+    EXPECT_EQ(first.lights[0].position, Vec3(0, 0, -5));
+    EXPECT_FALSE(first.lights[1].headlight);
+    const std::string saved = savedToStdout(first);
+    EXPECT_NE(saved.find(R"(<light headlight="true" r="0.5")"), std::string::npos) << saved;
+    Scene back = loadSceneXmlFromString(saved, "<stdin>", ".");
+    EXPECT_TRUE(back.lights[0].headlight);
+    EXPECT_EQ(back.lights[0].position, Vec3(0, 0, -5));
+    back.selectCamera("top");
+    EXPECT_EQ(back.lights[0].position, Vec3(0, 7, 0));
+    EXPECT_EQ(back.lights[1].position, Vec3(1, 2, 3)) << "other lights stay";
+    back.camera.origin = {4, 4, 4};
+    back.placeHeadlights();
+    EXPECT_EQ(back.lights[0].position, Vec3(4, 4, 4));
+    back.dropHeadlights();
+    ASSERT_EQ(back.lights.size(), 1u);
+    EXPECT_FALSE(back.lights[0].headlight);
+}
+
 TEST(XmlLoader, BadEnvironmentsAreErrors) {
     const auto error = [&](const std::string& body) {
         return inputErrorOf([&] {

@@ -28,5 +28,6 @@ int main(int argc, char** argv) {
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-render", argc, argv)) return *exitCode;
     options.arguments.assign(argv, argv + argc);
     options.optionValues = rt::tool::optionValues(app);
+    options.ignoredOptions = rt::tool::render::optionsTheIntegratorIgnores(app, options.render.integrator);
     return rt::tool::run("rt-render", [&] { return rt::tool::render::runRender(options); });
 }

@@ -17,6 +17,7 @@
 #include "image/texture_files.h"
 #include "image/tiled_textures.h"
 #include "import/load_scene.h"
+#include "light_option.h"
 #include "progress.h"
 #include "render/environment_light.h"
 #include "render/material_filter.h"
@@ -170,7 +171,16 @@ CameraOverrides cameraOverrides(const RenderOptions& o) {
     return c;
 }
 
-// The scene with the camera the options ask for: --camera picks one, the overrides change it.
+// --light adds lights that replace the headlight, as --no-default-light removes it.
+void addCommandLineLights(const RenderOptions& o, Scene& scene) {
+    std::vector<Light> lights;
+    for (const std::string& text : o.lights) lights.push_back(parseLightOption(text));
+    if (!lights.empty() || o.noDefaultLight) scene.dropHeadlights();
+    scene.lights.insert(scene.lights.end(), lights.begin(), lights.end());
+}
+
+// The scene with the camera the options ask for: --camera picks one, the overrides change it,
+// the headlight follows.
 Scene loadWithCamera(const RenderOptions& o) {
     ImportOptions import = o.import;
     import.camera = o.camera.value_or("");
@@ -179,10 +189,11 @@ Scene loadWithCamera(const RenderOptions& o) {
         import.parameters.insert_or_assign(std::move(name), std::move(value));
     }
     import.aspect = double(o.render.width) / double(o.render.height);
-    import.emittersLight = o.render.integrator == Integrator::Path;
     Scene scene = loadScene(o.scenePath, import);
     if (o.environment) setEnvironmentImage(scene, *o.environment);
     applyOverrides(scene.camera, cameraOverrides(o), scene.primitives.bounds(), Real(import.aspect));
+    addCommandLineLights(o, scene);
+    scene.placeHeadlights();  // at the camera the overrides made
     return scene;
 }
 
@@ -315,6 +326,10 @@ int renderAll(RenderOptions o) {
     o.render.aovs = wantedAovs(outputs);
     validate(o.render);  // with the AOVs the outputs ask for
     const ProgressMode progress = progressMode(o.progress, o.quiet);
+    for (const std::string& option : o.ignoredOptions)
+        if (!o.quiet)
+            std::cerr << "rt-render: note: " << option << " is not used by --integrator "
+                      << nameOf(kIntegratorNames, o.render.integrator) << ": ignored\n";
     if (outputsComplete(o, outputs, frames, progress)) return 0;
     prepareOutputs(o, outputs, frames.first);
 
@@ -343,6 +358,7 @@ int renderAll(RenderOptions o) {
         for (int frame = frames.first; frame <= frames.last; ++frame) {
             if (o.orbit > 0) {
                 scene.camera = orbited(camera, Real(360) * Real(frame) / Real(o.orbit));
+                scene.placeHeadlights();
                 announce(progress, "frame " + std::to_string(frame) + " of 0.." + std::to_string(o.orbit - 1));
             }
             renderFrame(o, scene, *accel, tree, images, outputs, frame, progress, stats, watch);

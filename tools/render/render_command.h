@@ -52,10 +52,13 @@ struct RenderOptions {
     // For --stats-json: the command line as given, and every option's value (given or default).
     std::vector<std::string> arguments;
     std::vector<std::pair<std::string, std::vector<std::string>>> optionValues;
-    std::optional<double> maxMemoryGb;       // --max-memory GB; default: rt::defaultMemoryLimit()
-    std::optional<std::string> environment;  // --environment FILE: the path tracer's sky image
-    float textureCacheMb = 256;              // --texture-cache MB: OpenImageIO's texture cache
-    std::optional<std::string> txCache;      // --tx-cache DIR|off: tiled texture copies; default rt::defaultTxCache()
+    std::optional<double> maxMemoryGb;        // --max-memory GB; default: rt::defaultMemoryLimit()
+    std::optional<std::string> environment;   // --environment FILE: the sky image (light and background)
+    std::vector<std::string> lights;          // --light TYPE:NUMBERS, any number (light_option.h)
+    bool noDefaultLight = false;              // --no-default-light: the scene's headlight is removed
+    std::vector<std::string> ignoredOptions;  // given, but not read by the integrator: noted on stderr
+    float textureCacheMb = 256;               // --texture-cache MB: OpenImageIO's texture cache
+    std::optional<std::string> txCache;       // --tx-cache DIR|off: tiled texture copies; default rt::defaultTxCache()
     double txCacheMb = kDefaultTxCacheMegabytes;  // --tx-cache-size MB: the bound on the tx cache's size
 };
 

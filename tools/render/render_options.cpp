@@ -1,5 +1,7 @@
 #include "render_options.h"
 
+#include <array>
+
 #include "accel_options.h"
 #include "command_line.h"
 #include "picture_options.h"
@@ -89,6 +91,22 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
         ->group(group);
 }
 
+void addLightOptions(CLI::App& app, RenderOptions& o) {
+    const char* group = "Light options (applied after the camera options)";
+    app.add_option("--light", o.lights,
+                   "Add a light, replacing the default headlight: point:X,Y,Z[,R,G,B[,W]], "
+                   "spot:X,Y,Z,TX,TY,TZ[,CONE[,R,G,B[,W]]] or sun:DX,DY,DZ[,R,G,B[,W]]; repeatable")
+        ->allow_extra_args(false)
+        ->group(group);
+    app.add_flag("--no-default-light", o.noDefaultLight,
+                 "Remove the headlight a model without lights gets (the white point light at the camera)")
+        ->group(group);
+    app.add_option("--environment", o.environment,
+                   "Equirectangular image (any format OpenImageIO reads), +y up: the sky the path tracer is lit "
+                   "by, and the background both integrators show")
+        ->group(group);
+}
+
 void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Path tracing options (docs/path-tracing.md)";
     addNamedOption(app, "--integrator", o.render.integrator, rt::kIntegratorNames,
@@ -97,9 +115,6 @@ void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--max-bounces", o.render.maxBounces, "Surface bounces a path may take after the camera ray")
         ->check(numberIn(0, rt::kMaxBounces))
         ->capture_default_str()
-        ->group(group);
-    app.add_option("--environment", o.environment,
-                   "Equirectangular image (any format OpenImageIO reads) lighting the scene as its sky, +y up")
         ->group(group);
     app.add_option("--clamp", o.render.clampRadiance,
                    "Cap indirect samples at this value, trading bias for fewer fireflies (default 0: off)")
@@ -209,6 +224,30 @@ std::vector<std::string> outputNames() {
     return names;
 }
 
+namespace {
+
+// Options only one integrator reads.
+struct IntegratorOption {
+    const char* name;
+    Integrator readBy;
+};
+constexpr std::array<IntegratorOption, 7> kIntegratorOptions{{{"--depth", Integrator::Whitted},
+                                                              {"--shadows", Integrator::Whitted},
+                                                              {"--distributed", Integrator::Whitted},
+                                                              {"--distributed-samples", Integrator::Whitted},
+                                                              {"--packets", Integrator::Whitted},
+                                                              {"--max-bounces", Integrator::Path},
+                                                              {"--clamp", Integrator::Path}}};
+
+}  // namespace
+
+std::vector<std::string> optionsTheIntegratorIgnores(const CLI::App& app, Integrator integrator) {
+    std::vector<std::string> ignored;
+    for (const IntegratorOption& option : kIntegratorOptions)
+        if (option.readBy != integrator && app.count(option.name) > 0) ignored.emplace_back(option.name);
+    return ignored;
+}
+
 void addRenderOptions(CLI::App& app, RenderOptions& options) {
     app.option_defaults()->always_capture_default();  // so that --stats-json records every default
     app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")
@@ -217,6 +256,7 @@ void addRenderOptions(CLI::App& app, RenderOptions& options) {
     addRenderingOptions(app, options);
     addAdaptiveOptions(app, options.render);
     addCameraOptions(app, options);
+    addLightOptions(app, options);
     addPathTracingOptions(app, options);
     rt::tool::addAccelOptions(app, options.accel);
     addImageOptions(app, options);

@@ -17,4 +17,8 @@ std::vector<std::string> outputNames();
 // Declares the scene argument and every option of rt-render on `app`, each storing into `options`.
 void addRenderOptions(CLI::App& app, RenderOptions& options);
 
+// The options given on `app`'s command line that `integrator` does not use (--max-bounces with
+// the Whitted tracer, -d with the path tracer, ...): runRender notes each on stderr.
+std::vector<std::string> optionsTheIntegratorIgnores(const CLI::App& app, Integrator integrator);
+
 }  // namespace rt::tool::render
