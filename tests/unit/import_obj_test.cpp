@@ -433,6 +433,21 @@ TEST(ImportObj, MapKeIsTheEmissionTexture) {
               r.report.notes.end());
 }
 
+// A mesh whose faces mostly turn away from its vertex normals (inverted winding) is one note
+// naming it; a mesh whose faces agree with them, or that has no normals, is not.
+TEST(ImportObj, MeshesFacingAwayFromTheirNormalsAreNoted) {
+    TempDir dir;
+    const ImportResult r =
+        importScene(dir.write("m.obj", std::string(kSquare) + "vn 0 0 -1\nvn 0 0 1\ng inside_out\nf 1//1 2//1 3//1\n"
+                                                              "f 1//1 3//1 4//1\ng right\nf 1//2 2//2 3//2\n"
+                                                              "g unsmoothed\nf 1 3 4\n"));
+    const auto notes = std::count_if(r.report.notes.begin(), r.report.notes.end(), [](const std::string& n) {
+        return n.find("facing away from their vertex normals") != std::string::npos;
+    });
+    EXPECT_EQ(notes, 1);
+    EXPECT_EQ(r.report.modelsFacingAway, std::vector<std::string>{"inside_out"});
+}
+
 // vn and vt go with their corners; OBJ's v (up the image) becomes rt's (down).
 TEST(ImportObj, NormalsAndTextureCoordinatesFollowTheirCorners) {
     TempDir dir;

@@ -47,7 +47,7 @@ struct RenderOptions {
     bool frame = false;
     int orbit = 0;                        // --orbit N: N frames around the look-at point; 0 is one picture
     std::optional<std::string> frames;    // --frames A..B: only frames A to B (inclusive) of the orbit
-    ImportOptions import;                 // --flat, for a model file read directly
+    ImportOptions import;                 // --flat, for a model file read directly; --double-sided
     std::vector<std::string> parameters;  // --set NAME=VALUE, any number: $NAME in the XML scene
     // For --stats-json: the command line as given, and every option's value (given or default).
     std::vector<std::string> arguments;

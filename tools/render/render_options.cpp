@@ -83,6 +83,7 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
                    "the same picture")
         ->group(group);
     app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
+    app.add_flag("--double-sided", o.import.doubleSided, rt::tool::kDoubleSidedHelp)->group(group);
     app.add_option("--set", o.parameters,
                    "NAME=VALUE: fills $NAME, ${NAME} and ${NAME:-default} in the XML scene's attributes; repeatable")
         ->allow_extra_args(false)
