@@ -28,5 +28,7 @@ int main(int argc, char** argv) {
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-render", argc, argv)) return *exitCode;
     options.arguments.assign(argv, argv + argc);
     options.optionValues = rt::tool::optionValues(app);
-    return rt::tool::run("rt-render", [&] { return rt::tool::render::runRender(options); });
+    const int status = rt::tool::run("rt-render", [&] { return rt::tool::render::runRender(options); });
+    if (status == rt::tool::kExitOk) rt::tool::render::endAsInterrupted();  // once standard output is flushed
+    return status;
 }
