@@ -194,6 +194,47 @@ void sayWorkInProgress(int signal) {
     [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, line, std::size_t(at - line));
 }
 
+// Installs `action` for SIGINT and SIGTERM. Async-signal-safe (sigaction only). An ignored
+// signal stays ignored (nohup, a background job of a script).
+void handleInterrupts(const struct sigaction& action) {
+    for (int signal : {SIGINT, SIGTERM}) {
+        struct sigaction previous {};
+        if (sigaction(signal, nullptr, &previous) == 0 && previous.sa_handler != SIG_IGN)
+            sigaction(signal, &action, nullptr);
+    }
+}
+
+// ---- A request to end the work at its next whole step ------------------------------------
+std::atomic<int> endRequest{0};
+std::atomic<const char*> endWho{nullptr}, endAnnouncement{nullptr};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler writes it");
+
+const char* signalName(int signal) {
+    if (signal == SIGINT) return "SIGINT";
+    return signal == SIGTERM ? "SIGTERM" : "SIGUSR1";
+}
+
+extern "C" void requestEndOfWork(int signal) {
+    const int savedErrno = errno;
+    int none = 0;
+    const bool first = endRequest.compare_exchange_strong(none, signal);
+    // An interrupt is honoured once: the next one ends the process as it would have.
+    if (signal != SIGUSR1) removeTemporariesOnSignals();
+    const char *who = endWho.load(), *announcement = endAnnouncement.load();
+    if (first && who && announcement) {
+        char line[512];  // the callers' literals are far shorter
+        char* at = line;
+        appendText(at, who);
+        appendText(at, ": ");
+        appendText(at, signalName(signal));
+        appendText(at, ": ");
+        appendText(at, announcement);
+        appendText(at, "\n");
+        [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, line, std::size_t(at - line));
+    }
+    errno = savedErrno;
+}
+
 extern "C" void removeLiveTemporariesAndDie(int signal) {
     const int savedErrno = errno;
     sayWorkInProgress(signal);
@@ -362,13 +403,20 @@ void removeTemporariesOnSignals() {
     action.sa_handler = removeLiveTemporariesAndDie;
     action.sa_flags = SA_RESETHAND;
     sigemptyset(&action.sa_mask);
-    for (int signal : {SIGINT, SIGTERM}) {
-        struct sigaction previous {};
-        // An ignored signal stays ignored (nohup, a background job of a script).
-        if (sigaction(signal, nullptr, &previous) == 0 && previous.sa_handler != SIG_IGN)
-            sigaction(signal, &action, nullptr);
-    }
+    handleInterrupts(action);
 }
+
+void endWorkOnSignals(bool interrupts, const char* who, const char* announcement) {
+    endWho.store(who);
+    endAnnouncement.store(announcement);
+    struct sigaction action {};
+    action.sa_handler = requestEndOfWork;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGUSR1, &action, nullptr);
+    if (interrupts) handleInterrupts(action);
+}
+
+int workEndRequested() { return endRequest.load(); }
 
 void checkNotDirectory(const std::string& path) {
     std::error_code ec;

@@ -35,6 +35,17 @@ void removeTemporariesOnSignals();
 // `who` and `unit` must be string literals (the handler reads them). total 0: nothing under way.
 void noteWorkInProgress(const char* who, const char* unit, std::uint64_t done, std::uint64_t total);
 
+// A request to end the work at its next whole step and keep it (rt-render's SIGUSR1 and
+// --on-interrupt write: the path tracer ends after the pass under way and writes it). After
+// this call SIGUSR1 makes the request, and, with `interrupts`, so does the first SIGINT or
+// SIGTERM, after which removeTemporariesOnSignals's handlers are back: a second one ends the
+// process at once, writing nothing, as without the request. The first signal's handler says
+// "WHO: SIGNAME: ANNOUNCEMENT" on standard error (`who` and `announcement` string literals).
+void endWorkOnSignals(bool interrupts, const char* who, const char* announcement);
+
+// The signal that asked for the end (SIGUSR1, SIGINT or SIGTERM), or 0 if none has.
+int workEndRequested();
+
 // Throws rt::InputError "PATH: is a directory" if `path` names a folder (or ends in '/').
 void checkNotDirectory(const std::string& path);
 

@@ -11,6 +11,7 @@
 #include "core/text.h"
 #include "import/assimp_import.h"
 #include "import/gltf_import.h"
+#include "import/mesh_data.h"
 #include "import/obj_import.h"
 #include "import/scene_defaults.h"
 #include "scene/input_file.h"
@@ -49,6 +50,21 @@ void noteDrops(ImportReport& r) {
         r.notes.push_back("dropped " + std::to_string(r.droppedDegenerate) + " degenerate (zero-area) triangle(s)");
 }
 
+// Inverted winding is not an error (two-sided materials draw it well), but single-sided ones
+// show such a mesh inside out: said once, naming the first few models.
+void noteWindingAgainstNormals(ImportReport& r) {
+    const std::vector<std::string>& models = r.modelsFacingAway;
+    if (models.empty()) return;
+    constexpr std::size_t kNamed = 3;
+    std::string names;
+    for (std::size_t i = 0; i < std::min(models.size(), kNamed); ++i) names += (i ? ", " : "") + models[i];
+    if (models.size() > kNamed) names += " and " + std::to_string(models.size() - kNamed) + " more";
+    r.notes.push_back(std::to_string(models.size()) +
+                      " mesh(es) with most triangles facing away from their vertex normals (inverted winding: "
+                      "single-sided materials show them inside out; --double-sided draws both sides): " +
+                      names);
+}
+
 // The importers by format: the first entry whose extensions hold the file's (in lower case)
 // or whose signature starts the file reads it; Assimp reads everything else. glTF comes first
 // so that a GLB is read as one under any name.
@@ -80,6 +96,8 @@ ImportResult importByFormat(const std::string& path, const ImportOptions& option
 ImportResult finishImport(ImportResult result, const std::string& name, const ImportOptions& options) {
     if (result.scene.instances.empty()) throw InputError(name + ": nothing to convert: the scene places no triangles");
     noteDrops(result.report);
+    noteWindingAgainstNormals(result.report);
+    if (options.doubleSided) makeDoubleSided(result.scene);
     addMissingCameraAndLight(result, options);
     return result;
 }

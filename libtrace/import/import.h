@@ -48,6 +48,10 @@ struct ImportOptions {
     // glTF buffers may be read from anywhere; by default only from the model's folder and below
     // (standard input: the working folder), so that a file cannot make rt copy /etc/passwd.
     bool filesOutsideModelFolder = false;
+    // rt-convert and rt-render --double-sided: every material two-sided, whatever the file says
+    // (glTF's doubleSided false), for models whose winding is inverted. loadScene applies it to
+    // XML scenes too.
+    bool doubleSided = false;
 };
 
 // ImportOptions::camera value (rt-convert --camera auto) that ignores the file's cameras.
@@ -66,7 +70,10 @@ struct ImportReport {
     std::size_t droppedLines = 0;              // line primitives skipped
     std::size_t droppedDegenerate = 0;         // zero-area triangles dropped from the models
     std::size_t droppedDegenerateInScene = 0;  // the same counted once per instance
-    std::vector<std::string> notes;            // each drop or approximation in words
+    // The models most of whose triangles face away from their vertex normals (mesh_data.h
+    // windingAgainstNormals): inverted winding, which single-sided materials show inside out.
+    std::vector<std::string> modelsFacingAway;
+    std::vector<std::string> notes;  // each drop or approximation in words
 };
 
 struct ImportResult {

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/text.h"
+#include "import/mesh_data.h"
 #include "import/model_file.h"
 #include "scene/input_file.h"
 #include "scene/xml_loader.h"
@@ -23,9 +24,11 @@ Scene flattenedScene(ImportResult imported) {
     return scene;
 }
 
-// ImportOptions::camera picks one of an XML scene's named cameras, as the importers pick one of a model's.
-Scene withCamera(Scene scene, const ImportOptions& options) {
+// ImportOptions::camera picks one of an XML scene's named cameras, as the importers pick one of a
+// model's; doubleSided makes its materials two-sided as it does a model's.
+Scene withOptions(Scene scene, const ImportOptions& options) {
     if (!options.camera.empty()) scene.selectCamera(options.camera);
+    if (options.doubleSided) makeDoubleSided(scene);
     return scene;
 }
 
@@ -36,7 +39,7 @@ Scene loadStandardInput(const ImportOptions& options) {
         requireNoParameters("<stdin>", options);
         return flattenedScene(importGltfFromStandardInput(bytes, options));
     }
-    return withCamera(loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile, options.parameters), options);
+    return withOptions(loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile, options.parameters), options);
 }
 
 }  // namespace
@@ -44,7 +47,7 @@ Scene loadStandardInput(const ImportOptions& options) {
 Scene loadScene(const std::string& path, const ImportOptions& options) {
     if (path == "-") return loadStandardInput(options);
     if (lowerCaseExtension(path) == ".xml")
-        return withCamera(loadSceneXml(path, readModelFile, options.parameters), options);
+        return withOptions(loadSceneXml(path, readModelFile, options.parameters), options);
     requireNoParameters(path, options);
     return flattenedScene(importScene(path, options));
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "core/vec3.h"
 #include "scene/sandbox.h"
 
 namespace rt {
@@ -146,6 +147,25 @@ void applyOpacity(Material& m, float opacity, float ior) {
     m.transmission = {.weight = 1 - opacity, .ior = solid ? ior : 1.0f, .thin = !solid};
     m.ambient *= opacity;
     m.diffuse *= opacity;
+}
+
+WindingAgainstNormals windingAgainstNormals(const Model& model) {
+    WindingAgainstNormals w;
+    const std::vector<float>&v = model.triangleVertices, &n = model.vertexNormals;
+    if (n.size() != v.size()) return w;  // no vertex normals (or not one per corner)
+    const auto at = [](const std::vector<float>& a, std::size_t i) { return Vec3(a[i], a[i + 1], a[i + 2]); };
+    for (std::size_t t = 0; t + 9 <= v.size(); t += 9) {
+        const Vec3 summed = at(n, t) + at(n, t + 3) + at(n, t + 6);
+        if (summed == Vec3(0, 0, 0)) continue;  // a flat triangle: no normals of its own
+        ++w.withNormals;
+        const Vec3 geometric = cross(at(v, t + 3) - at(v, t), at(v, t + 6) - at(v, t));
+        w.facingAway += dot(geometric, summed) < 0;
+    }
+    return w;
+}
+
+void makeDoubleSided(Scene& scene) {
+    for (Material& m : scene.materials) m.doubleSided = true;
 }
 
 Aabb modelBounds(const Model& model) {

@@ -80,6 +80,23 @@ Material classicPhong(const Color& diffuse, const Color& specular, float shinine
 // light passes straight on (thin). Opacity 1 (or not finite) changes nothing.
 void applyOpacity(Material& m, float opacity, float ior);
 
+// How a model's triangles turn against its vertex normals: a triangle faces away when its
+// geometric normal (its corners counter-clockwise in front, as glTF and OBJ say) points
+// against the sum of its corners' normals. Triangles without vertex normals are not counted.
+struct WindingAgainstNormals {
+    std::size_t facingAway = 0;
+    std::size_t withNormals = 0;
+
+    // Most triangles face away: the winding is inverted, and a single-sided material shows
+    // the mesh's inside (rt-convert and rt-render --double-sided draw both sides).
+    bool mostlyFacingAway() const { return facingAway * 2 > withNormals; }
+};
+WindingAgainstNormals windingAgainstNormals(const Model& model);
+
+// Makes every material of the scene two-sided (ImportOptions::doubleSided, rt-convert and
+// rt-render --double-sided): a model whose winding is inverted then shows its outside.
+void makeDoubleSided(Scene& scene);
+
 // Bounds of a model's triangles and spheres in its own space (empty for an empty model).
 Aabb modelBounds(const Model& model);
 

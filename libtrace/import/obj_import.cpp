@@ -76,21 +76,33 @@ private:
     std::filesystem::path folder_;
 };
 
-// What a material defines that rt's Phong material drops, counted for the notes.
+// The texture maps of an MTL material that rt has no input for, by their MTL keywords: the
+// material's specular and shininess are numbers, not textures, and rt has no ambient term of
+// its own, displacement, reflection map or MTL's PBR maps (docs/conversion.md).
 struct DroppedMaterialData {
-    std::size_t textured = 0;  // any map_* or disp/refl texture but map_Kd, map_d and the normal map
+    std::map<std::string, std::size_t> materialsWithMap;  // keyword: how many materials name it
 
     void count(const tinyobj::material_t& m) {
-        const std::string* maps[] = {&m.ambient_texname,      &m.specular_texname,   &m.specular_highlight_texname,
-                                     &m.displacement_texname, &m.reflection_texname, &m.roughness_texname,
-                                     &m.metallic_texname,     &m.sheen_texname,      &m.emissive_texname};
-        textured += std::any_of(std::begin(maps), std::end(maps), [](const std::string* t) { return !t->empty(); });
+        const std::pair<const char*, const std::string*> maps[] = {{"map_Ka", &m.ambient_texname},
+                                                                   {"map_Ks", &m.specular_texname},
+                                                                   {"map_Ns", &m.specular_highlight_texname},
+                                                                   {"disp", &m.displacement_texname},
+                                                                   {"refl", &m.reflection_texname},
+                                                                   {"map_Pr", &m.roughness_texname},
+                                                                   {"map_Pm", &m.metallic_texname},
+                                                                   {"map_Ps", &m.sheen_texname}};
+        for (const auto& [keyword, file] : maps)
+            if (!file->empty()) ++materialsWithMap[keyword];
     }
 
+    // One note for all of them, each map with the number of materials that name it.
     void note(std::vector<std::string>& notes) const {
-        if (textured)
-            notes.push_back(std::to_string(textured) +
-                            " material(s) with texture maps other than map_Kd, map_d and a normal map: those ignored");
+        if (materialsWithMap.empty()) return;
+        std::string counts;
+        for (const auto& [keyword, materials] : materialsWithMap)
+            counts += (counts.empty() ? "" : ", ") + std::string(keyword) + " in " + std::to_string(materials) +
+                      " material(s)";
+        notes.push_back("texture maps rt's material has no input for, ignored: " + counts);
     }
 };
 
@@ -147,6 +159,14 @@ void readNormalMap(const tinyobj::material_t& mtl, const std::string& objPath, S
     const tinyobj::texture_option_t& o = norm ? mtl.normal_texopt : mtl.bump_texopt;
     m.normalTexture = addTexture(scene, mapTexture(file, o, objPath));
     m.normalScale = float(o.bump_multiplier);
+}
+
+// The emission map: map_Ke times Ke, as map_Kd is times Kd; a map without Ke (or with Ke 0)
+// glows at the map's own colour: a file that names a map wants it to show (display screens).
+void readEmissionMap(const tinyobj::material_t& mtl, const std::string& objPath, Scene& scene, Material& m) {
+    if (mtl.emissive_texname.empty()) return;
+    m.emissionTexture = addTexture(scene, mapTexture(mtl.emissive_texname, mtl.emissive_texopt, objPath));
+    if (m.emission == Color{}) m.emission = {1, 1, 1};
 }
 
 class ObjSceneBuilder {
@@ -360,6 +380,7 @@ private:
             m.colorTexture = addTexture(out_.scene, mapTexture(mtl.diffuse_texname, mtl.diffuse_texopt, path_));
         readCutout(mtl, path_, out_.scene, m);
         readNormalMap(mtl, path_, out_.scene, m);
+        readEmissionMap(mtl, path_, out_.scene, m);
         return m;
     }
 

@@ -6,7 +6,8 @@
 // - triangles without area dropped and counted once per model (ImportReport::droppedDegenerate)
 //   and once per placement (droppedDegenerateInScene);
 // - one Material per material of the file (MaterialKey), made the first time an instance uses it;
-// - one Instance per placement of a model that kept triangles.
+// - one Instance per placement of a model that kept triangles;
+// - the models whose triangles mostly face away from the file's vertex normals, for a note.
 // An importer reads its format and hands the assembly keys, corner points and materials; how to
 // add one is in docs/architecture.md. Per-corner data (normals, texture coordinates, colours)
 // comes with the corner points (Corner); meshes without normals get them by crease angle
@@ -82,6 +83,7 @@ public:
         out_.report.droppedDegenerate += converted.dropped;
         Model model = built.take();
         if (model.triangleCount() == 0) return converted;
+        if (windingAgainstNormals(model).mostlyFacingAway()) out_.report.modelsFacingAway.push_back(model.name);
         if (creaseDegrees_) addCreaseNormals(model, *creaseDegrees_);
         out_.scene.models.push_back(std::move(model));
         converted.model = std::uint32_t(out_.scene.models.size() - 1);

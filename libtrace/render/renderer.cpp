@@ -209,7 +209,8 @@ void writePixel(const PassState& state, std::size_t i, int x, int y, Framebuffer
 // order), for any thread count or region split. Each pixel's new sample is added where it is
 // traced, in the parallel loop, to a copy of the pixel's state (`next`), so that a pass cut
 // short by --time-limit or the watcher's stop can be dropped whole: the picture goes back to
-// `done`, the passes that finished. The watcher sees the picture after every pass.
+// `done`, the passes that finished. The watcher sees the picture after every pass, and may end
+// the render there (endAfterPass).
 Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
                        const RenderProgress& progress, const RenderWatch& watch) {
     const PixelWindow w = settings.window();
@@ -221,9 +222,10 @@ Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const Rende
     std::vector<NonFiniteSamples> passNonFinite(std::size_t(loop.threads()));
     NonFiniteSamples nonFinite;
     int passes = 0;
+    bool whole = true;
     for (; passes < settings.pixelSamples; ++passes) {
         std::fill(passNonFinite.begin(), passNonFinite.end(), NonFiniteSamples{});
-        const bool whole = loop.run(
+        whole = loop.run(
             [&](const PixelWindow& b, RenderCounters& counters) {
                 return loop.eachPixel(b, [&](int x, int y) {
                     const std::size_t i = std::size_t(y - w.y0) * std::size_t(w.width()) + std::size_t(x - w.x0);
@@ -240,8 +242,12 @@ Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const Rende
         std::swap(done, next);
         for (const NonFiniteSamples& n : passNonFinite) nonFinite += n;
         if (watch.blockDone) watch.blockDone(image, w);
+        if (watch.endAfterPass && passes + 1 < settings.pixelSamples && watch.endAfterPass()) {
+            ++passes;  // this one is whole, and the picture holds it
+            break;
+        }
     }
-    if (passes < settings.pixelSamples) {  // the last pass was cut short: back to the whole ones
+    if (!whole) {  // the last pass was cut short: back to the whole ones
         std::size_t i = 0;
         for (int y = w.y0; y < w.y1; ++y)
             for (int x = w.x0; x < w.x1; ++x, ++i) writePixel(done, i, x, y, image);

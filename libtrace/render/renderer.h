@@ -31,6 +31,10 @@ struct RenderWatch {
     std::function<void(const Framebuffer& image, const PixelWindow& block)> blockDone;
     // Once it is true the threads start no further block, and render() returns the picture as far as it got.
     const std::atomic<bool>* stop = nullptr;
+    // Asked after each whole pass of the path tracer: true ends the render there, keeping every
+    // finished pass (rt-render's SIGUSR1 and --on-interrupt write). The Whitted tracer, whose one
+    // pass is the whole picture, does not ask.
+    std::function<bool()> endAfterPass;
 };
 
 // Renders settings.window() of the scene. Fills the render part of `stats` (render time,
@@ -39,11 +43,10 @@ struct RenderWatch {
 //
 // The path tracer renders in passes, one sample of every pixel each, so that its picture is
 // whole after every pass; with -S K and K passes finished it holds the same bits as in one go.
-// settings.timeLimitSeconds stops it at the last whole pass (stats.samplesPerPixel says how
-// many). The Whitted tracer takes all -S samples of a pixel at once: a render it cuts short
-// has stats.samplesPerPixel 0, and the picture must not be used.
-// Image textures are looked up through `images` (none: they are white).
-// Throws rt::InputError for bad settings or a degenerate camera.
+// settings.timeLimitSeconds stops it at the last whole pass, watch.endAfterPass after the pass
+// under way (stats.samplesPerPixel says how many). The Whitted tracer takes all -S samples of a pixel at once: a render
+// it cuts short has stats.samplesPerPixel 0, and the picture must not be used. Image textures are looked up through
+// `images` (none: they are white). Throws rt::InputError for bad settings or a degenerate camera.
 Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
                    const RenderProgress& progress = {}, const ImageTextures* images = nullptr,
                    const RenderWatch& watch = {});

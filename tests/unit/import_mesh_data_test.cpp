@@ -19,6 +19,29 @@ TEST(ImportMeshData, TrianglesWithoutAreaAreDropped) {
     EXPECT_EQ(m.triangleVertices[3], 1.0f);
 }
 
+// A triangle faces away when its corners, counter-clockwise, give a normal against the sum of
+// its vertex normals; flat triangles (zero normals) and models without normals are not counted.
+TEST(ImportMeshData, WindingAgainstVertexNormals) {
+    Model m;
+    const float up[3] = {0, 0, 1}, down[3] = {0, 0, -1}, tilted[3] = {0.9f, 0, -0.1f}, none[3] = {0, 0, 0};
+    // Counter-clockwise seen from +z: the geometric normal is +z.
+    const auto add = [&m](const float* a, const float* b, const float* c) {
+        ASSERT_TRUE(appendTriangleWithData(m, {{0, 0, 0}, a}, {{1, 0, 0}, b}, {{0, 1, 0}, c}));
+    };
+    EXPECT_EQ(windingAgainstNormals(m).withNormals, 0u);
+    add(down, down, down);
+    add(up, up, up);
+    add(none, none, none);
+    WindingAgainstNormals w = windingAgainstNormals(m);
+    EXPECT_EQ(w.facingAway, 1u);
+    EXPECT_EQ(w.withNormals, 2u);
+    EXPECT_FALSE(w.mostlyFacingAway()) << "half is not most";
+    add(up, down, tilted);  // the sum (0.9, 0, -0.1) points below the triangle
+    w = windingAgainstNormals(m);
+    EXPECT_EQ(w.facingAway, 2u);
+    EXPECT_TRUE(w.mostlyFacingAway());
+}
+
 // Opacity below 1 lets the rest through and fades the surface's own light; an index above 1
 // makes a refracting solid, else a thin sheet; opacity 1 or not finite changes nothing.
 TEST(ImportMeshData, OpacityBelowOneLetsLightThrough) {

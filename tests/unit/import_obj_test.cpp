@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -367,7 +368,7 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
                              [&](const std::string& n) { return n.find(text) != std::string::npos; });
     };
     EXPECT_EQ(count("`Tr`"), 0) << "d wins over Tr, as documented: no warning about them";
-    EXPECT_EQ(count("3 material(s) with texture maps other than map_Kd, map_d and a normal map"), 1);
+    EXPECT_EQ(count("texture maps rt's material has no input for, ignored: map_Ks in 3 material(s)"), 1);
     EXPECT_EQ(count("material"), 1) << "one note per kind, not per material; transparency is used";
     // Ke is the emission, map_Kd the colour texture, beside the OBJ.
     const Material& a = r.scene.materials[r.scene.instances[0].material];
@@ -404,6 +405,47 @@ TEST(ImportObj, NormAndMapBumpAreNormalMaps) {
     EXPECT_EQ(a.normalScale, 0.5f);
     EXPECT_EQ(r.scene.textures[*b.normalTexture].path, dir.path("n.png"));
     EXPECT_FALSE(materialNamed(r, "c").normalTexture);
+}
+
+// map_Ke is the emission's texture, times Ke; without Ke (or Ke 0) it glows at its own colour.
+// map_Ks and map_Ns, which rt's material has no input for, are one note naming them.
+TEST(ImportObj, MapKeIsTheEmissionTexture) {
+    TempDir dir;
+    const ImportResult r = importSquare(dir,
+                                        "newmtl screen\nKd 0 0 0\nKe 1 0.5 0.25\nmap_Ke -clamp on -s 2 2 1 tv.png\n"
+                                        "newmtl lamp\nmap_Ke shade.png\nmap_Ks s.png\nmap_Ns n.png\n"
+                                        "newmtl plain\nKe 0.5 0.5 0.5\n",
+                                        "usemtl screen\nf 1 2 3\nusemtl lamp\nf 1 3 4\nusemtl plain\nf 1 2 4\n");
+    const Material &screen = materialNamed(r, "screen"), &lamp = materialNamed(r, "lamp");
+    ASSERT_TRUE(screen.emissionTexture && lamp.emissionTexture);
+    const Texture& tv = r.scene.textures[*screen.emissionTexture];
+    EXPECT_EQ(tv.path, dir.path("tv.png"));
+    EXPECT_EQ(tv.wrapS, Texture::Wrap::Clamp);
+    EXPECT_EQ(tv.scale, (std::array<float, 2>{2, 2}));
+    EXPECT_EQ(screen.emission, (Color{1, 0.5f, 0.25f}));
+    EXPECT_EQ(r.scene.textures[*lamp.emissionTexture].path, dir.path("shade.png"));
+    EXPECT_EQ(lamp.emission, (Color{1, 1, 1}));
+    EXPECT_FALSE(materialNamed(r, "plain").emissionTexture);
+    EXPECT_EQ(materialNamed(r, "plain").emission, (Color{0.5f, 0.5f, 0.5f}));
+    EXPECT_NE(std::find(r.report.notes.begin(), r.report.notes.end(),
+                        "texture maps rt's material has no input for, ignored: map_Ks in 1 material(s), "
+                        "map_Ns in 1 material(s)"),
+              r.report.notes.end());
+}
+
+// A mesh whose faces mostly turn away from its vertex normals (inverted winding) is one note
+// naming it; a mesh whose faces agree with them, or that has no normals, is not.
+TEST(ImportObj, MeshesFacingAwayFromTheirNormalsAreNoted) {
+    TempDir dir;
+    const ImportResult r =
+        importScene(dir.write("m.obj", std::string(kSquare) + "vn 0 0 -1\nvn 0 0 1\ng inside_out\nf 1//1 2//1 3//1\n"
+                                                              "f 1//1 3//1 4//1\ng right\nf 1//2 2//2 3//2\n"
+                                                              "g unsmoothed\nf 1 3 4\n"));
+    const auto notes = std::count_if(r.report.notes.begin(), r.report.notes.end(), [](const std::string& n) {
+        return n.find("facing away from their vertex normals") != std::string::npos;
+    });
+    EXPECT_EQ(notes, 1);
+    EXPECT_EQ(r.report.modelsFacingAway, std::vector<std::string>{"inside_out"});
 }
 
 // vn and vt go with their corners; OBJ's v (up the image) becomes rt's (down).

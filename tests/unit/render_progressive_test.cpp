@@ -91,7 +91,7 @@ TEST(RenderProgressive, AStoppedPassIsDroppedWhole) {
     RenderStats stats;
     const Framebuffer stopped = render(
         s, accel, settings, stats, [&](std::uint64_t done, std::uint64_t) { stop = stop || done > 2 * pixels + 100; },
-        nullptr, RenderWatch{{}, &stop});
+        nullptr, RenderWatch{{}, &stop, {}});
     EXPECT_EQ(stats.samplesPerPixel, 2);
     settings.pixelSamples = 2;
     const Framebuffer twoPasses = test::renderNaive(s, settings).image;
@@ -99,6 +99,39 @@ TEST(RenderProgressive, AStoppedPassIsDroppedWhole) {
     ASSERT_EQ(stopped.aovs().size(), twoPasses.aovs().size());
     EXPECT_EQ(std::memcmp(stopped.aovs().data(), twoPasses.aovs().data(), sizeof(PixelAovs) * stopped.aovs().size()), 0)
         << "the AOVs of the third pass are dropped too";
+}
+
+// An end asked for during pass 3 (rt-render's SIGUSR1) ends the render after that pass, whole:
+// the bits of -S 3. The path tracer asks after every pass but the last; the Whitted tracer never.
+TEST(RenderProgressive, AnEndAskedForKeepsThePassUnderWay) {
+    const Scene s = test::spheresOnFloor();
+    const NaiveAccelerator accel(s.primitives);
+    RenderSettings settings = pathPicture(70, 40, 6);
+    settings.threads = 2;
+    std::atomic<bool> asked{false};
+    int questions = 0;
+    RenderWatch watch;
+    watch.endAfterPass = [&] {
+        ++questions;
+        return asked.load();
+    };
+    const std::uint64_t pixels = 70 * 40;
+    RenderStats stats;
+    const Framebuffer ended = render(
+        s, accel, settings, stats, [&](std::uint64_t done, std::uint64_t) { asked = asked || done > 2 * pixels + 100; },
+        nullptr, watch);
+    EXPECT_EQ(stats.samplesPerPixel, 3);
+    EXPECT_EQ(questions, 3);
+    EXPECT_FALSE(stats.timeLimitReached);
+    settings.pixelSamples = 3;
+    expectSameBits(ended, test::renderNaive(s, settings).image);
+
+    asked = true;
+    questions = 0;
+    settings.integrator = Integrator::Whitted;
+    render(s, accel, settings, stats, {}, nullptr, watch);
+    EXPECT_EQ(stats.samplesPerPixel, 3) << "the Whitted tracer takes every sample";
+    EXPECT_EQ(questions, 0);
 }
 
 // A limit that has passed before the first pixel: nothing whole, in either integrator.

@@ -20,6 +20,11 @@ namespace rt::tool {
 inline constexpr const char* kFlatHelp =
     "Keep the facets of meshes without vertex normals (default: normals by a crease angle of 30 degrees)";
 
+// --double-sided of rt-convert and rt-render: ImportOptions::doubleSided.
+inline constexpr const char* kDoubleSidedHelp =
+    "Make every material two-sided, whatever the file says (glTF doubleSided false): for a model whose triangles "
+    "face inwards and that renders inside out";
+
 // Parses the command line. Returns the exit code when the tool must stop (0 after --help or
 // --version, 2 after a parse error, printed as "tool ERROR: what"), nothing when it runs.
 // An unknown argument is reported before anything else: "--treads 2" is a typo, and a

@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
                    "Width/height assumed when a camera gives a vertical fov without an aspect ratio")
         ->check(rt::tool::positiveNumber());
     app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp);
+    app.add_flag("--double-sided", o.import.doubleSided, rt::tool::kDoubleSidedHelp);
     app.add_flag("--allow-outside-files", o.import.filesOutsideModelFolder,
                  "Read glTF buffers outside the model's folder (../, absolute paths): only for files you trust");
     rt::tool::addMaxInputOption(app);

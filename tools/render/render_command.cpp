@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
@@ -245,13 +246,15 @@ Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, 
     const PixelWindow w = settings.window();
     noteWorkInProgress("rt-render", "samples", 0,
                        std::uint64_t(w.width()) * std::uint64_t(w.height()) * std::uint64_t(settings.pixelSamples));
+    RenderWatch endable = watch;
+    endable.endAfterPass = [] { return workEndRequested() != 0; };
     Framebuffer image = rt::render(
         scene, accel, settings, stats,
         [&progress](std::uint64_t done, std::uint64_t total) {
             progress.update(done, total);
             noteWorkInProgress("rt-render", "samples", done, total);
         },
-        &images, watch);
+        &images, endable);
     noteWorkInProgress("rt-render", "samples", 0, 0);  // rendered: a signal now interrupts the writing
     return image;
 }
@@ -272,6 +275,18 @@ class TimeLimitReached : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// SIGUSR1, and with --on-interrupt write the first SIGINT or SIGTERM, end the render after the
+// pass under way and write it; what the signal's line on standard error says depends on whether
+// the render has passes (the path tracer) or is one (the Whitted tracer).
+void endRendersOnSignals(const RenderOptions& o) {
+    endWorkOnSignals(o.onInterrupt == OnInterrupt::Write, "rt-render",
+                     o.render.integrator == Integrator::Path
+                         ? "ending after the pass under way and writing the passes done (SIGINT again: stop now, "
+                           "writing nothing)"
+                         : "finishing the picture (the Whitted tracer has one pass) and writing it (SIGINT again: "
+                           "stop now, writing nothing)");
+}
+
 // Renders one picture (a turntable's frame `frame`) once and writes every output of it.
 void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& accel, const TreeReport& tree,
                  const ImageTextures& images, const std::vector<ImageOutputSettings>& outputs, int frame,
@@ -291,6 +306,7 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
         for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
         std::cerr << nonFiniteWarning(stats);         // even with -q: a replaced sample is never silent
         std::cerr << timeLimitNote(o.render, stats);  // even with -q: the picture has fewer samples than asked
+        std::cerr << endRequestNote(workEndRequested(), o.render, stats);
     }
     if (!o.quiet) {
         std::cerr << statsSummary(o.render, tree.stats, stats, !o.preprocessOnly);
@@ -362,6 +378,7 @@ int renderAll(RenderOptions o) {
                 announce(progress, "frame " + std::to_string(frame) + " of 0.." + std::to_string(o.orbit - 1));
             }
             renderFrame(o, scene, *accel, tree, images, outputs, frame, progress, stats, watch);
+            if (workEndRequested()) break;  // the frame it ended is written; no other starts
         }
     };
     if (window) return showWhileRendering(*window, renderFrames);
@@ -372,12 +389,20 @@ int renderAll(RenderOptions o) {
 }  // namespace
 
 int runRender(RenderOptions o) {
+    endRendersOnSignals(o);
     try {
         return renderAll(std::move(o));
     } catch (const TimeLimitReached& e) {
         printError("rt-render", e.what());
         return kExitTimeLimit;
     }
+}
+
+void endAsInterrupted() {
+    const int signal = workEndRequested();
+    if (signal != SIGINT && signal != SIGTERM) return;
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
 }
 
 }  // namespace rt::tool::render

@@ -17,6 +17,12 @@
 
 namespace rt::tool::render {
 
+// --on-interrupt: what the first SIGINT or SIGTERM does to a render (docs/rt-render.md, "Interrupted
+// renders"): discard it, writing nothing (as always), or end it after the pass under way and write that.
+enum class OnInterrupt { Discard, Write };
+inline constexpr NamedValues<OnInterrupt, 2> kOnInterruptNames{
+    {{"discard", OnInterrupt::Discard}, {"write", OnInterrupt::Write}}};
+
 struct RenderOptions {
     std::string scenePath;                        // a file, or "-" for standard input
     std::optional<std::string> outputType;        // -o: null png exr tga text; else from -f's extension
@@ -47,7 +53,7 @@ struct RenderOptions {
     bool frame = false;
     int orbit = 0;                        // --orbit N: N frames around the look-at point; 0 is one picture
     std::optional<std::string> frames;    // --frames A..B: only frames A to B (inclusive) of the orbit
-    ImportOptions import;                 // --flat, for a model file read directly
+    ImportOptions import;                 // --flat, for a model file read directly; --double-sided
     std::vector<std::string> parameters;  // --set NAME=VALUE, any number: $NAME in the XML scene
     // For --stats-json: the command line as given, and every option's value (given or default).
     std::vector<std::string> arguments;
@@ -60,6 +66,8 @@ struct RenderOptions {
     float textureCacheMb = 256;               // --texture-cache MB: OpenImageIO's texture cache
     std::optional<std::string> txCache;       // --tx-cache DIR|off: tiled texture copies; default rt::defaultTxCache()
     double txCacheMb = kDefaultTxCacheMegabytes;  // --tx-cache-size MB: the bound on the tx cache's size
+    // --on-interrupt discard|write
+    OnInterrupt onInterrupt = OnInterrupt::Discard;
 };
 
 // "X,Y,Z" for the option `option`; throws rt::InputError if it is not three finite numbers.
@@ -85,5 +93,10 @@ PixelWindow parseTile(const std::string& tiles, const std::string& tile, int wid
 // Returns the exit code (3: --time-limit left no whole picture, nothing written); throws
 // rt::InputError for bad input (exit 2), others for failures (exit 1).
 int runRender(RenderOptions options);
+
+// After a render that a SIGINT or SIGTERM ended and that was written (--on-interrupt write), ends
+// the process by that signal, as an interrupted process ends (exit status 130 or 143), so that a
+// shell loop stops as after any Ctrl-C. Returns when no interrupt asked for the end.
+void endAsInterrupted();
 
 }  // namespace rt::tool::render

@@ -76,6 +76,11 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
                    "Stop after this many seconds: the path tracer writes its whole passes, else nothing (exit 3)")
         ->check(rt::tool::numberIn(0.0, rt::kMaxTimeLimit))
         ->group(group);
+    addNamedOption(app, "--on-interrupt", o.onInterrupt, kOnInterruptNames,
+                   "The first SIGINT (Ctrl-C) or SIGTERM: discard the render, writing nothing; write: end after the "
+                   "path tracer's pass under way and write the passes done, then exit 130 or 143 (SIGUSR1 always "
+                   "does, exit 0)")
+        ->group(group);
     app.add_option("--seed", o.render.seed,
                    "Random seed of the samples: another seed, independent noise (default 0, always the same)")
         ->capture_default_str()
@@ -85,6 +90,7 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
                    "the same picture")
         ->group(group);
     app.add_flag("--flat", o.import.flat, rt::tool::kFlatHelp)->group(group);
+    app.add_flag("--double-sided", o.import.doubleSided, rt::tool::kDoubleSidedHelp)->group(group);
     app.add_option("--set", o.parameters,
                    "NAME=VALUE: fills $NAME, ${NAME} and ${NAME:-default} in the XML scene's attributes; repeatable")
         ->allow_extra_args(false)

@@ -197,7 +197,7 @@ int showWhileRendering(SdlWindow& window, const std::function<void(const RenderW
     std::atomic<bool> stop{false}, finished{false};
     std::exception_ptr error;
     const RenderWatch watch{
-        [&window](const Framebuffer& image, const PixelWindow& block) { window.publish(image, block); }, &stop};
+        [&window](const Framebuffer& image, const PixelWindow& block) { window.publish(image, block); }, &stop, {}};
     std::thread worker([&] {
         try {
             work(watch);

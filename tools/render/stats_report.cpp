@@ -1,5 +1,6 @@
 #include "stats_report.h"
 
+#include <csignal>
 #include <cstdio>
 
 #include "core/json_writer.h"
@@ -103,6 +104,13 @@ std::string timeLimitNote(const RenderSettings& settings, const RenderStats& sta
     if (!stats.timeLimitReached) return {};
     return format("rt-render: --time-limit %g s reached: %d of %d samples per pixel taken and written\n",
                   settings.timeLimitSeconds, stats.samplesPerPixel, settings.pixelSamples);
+}
+
+std::string endRequestNote(int signal, const RenderSettings& settings, const RenderStats& stats) {
+    if (signal == 0 || stats.samplesPerPixel >= settings.pixelSamples) return {};
+    const char* name = signal == SIGUSR1 ? "SIGUSR1" : signal == SIGINT ? "SIGINT" : "SIGTERM";
+    return format("rt-render: %s: ended after %d of %d samples per pixel, written\n", name, stats.samplesPerPixel,
+                  settings.pixelSamples);
 }
 
 std::string estimateSummary(const RenderSettings& settings, const RenderEstimate& e) {

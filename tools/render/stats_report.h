@@ -44,6 +44,10 @@ std::string timeLimitMessage(const RenderSettings& settings);
 // One line for standard error when --time-limit stopped the path tracer's passes, else nothing.
 std::string timeLimitNote(const RenderSettings& settings, const RenderStats& stats);
 
+// One line for standard error when `signal` (rt::workEndRequested: SIGUSR1, or SIGINT or SIGTERM
+// with --on-interrupt write) ended the path tracer's passes early, else nothing.
+std::string endRequestNote(int signal, const RenderSettings& settings, const RenderStats& stats);
+
 // -p's prediction of the render (rt::estimateRender), one line for standard error.
 std::string estimateSummary(const RenderSettings& settings, const RenderEstimate& estimate);
 
