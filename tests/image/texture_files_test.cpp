@@ -314,11 +314,12 @@ std::string freshFolder(const std::string& name) {
     return folder;
 }
 
-// The copies in `folder`, sorted; none if it does not exist.
+// The copies in the tx cache `folder`, sorted; none if it does not exist.
 std::vector<std::filesystem::path> copiesIn(const std::string& folder) {
     std::vector<std::filesystem::path> copies;
-    if (std::filesystem::is_directory(folder))
-        for (const auto& entry : std::filesystem::directory_iterator(folder))
+    const std::filesystem::path own = std::filesystem::path(folder) / kTxCopiesFolder;
+    if (std::filesystem::is_directory(own))
+        for (const auto& entry : std::filesystem::directory_iterator(own))
             if (!entry.path().filename().string().starts_with(".")) copies.push_back(entry.path());  // not .lock
     std::sort(copies.begin(), copies.end());
     return copies;
