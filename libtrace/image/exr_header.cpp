@@ -1,7 +1,6 @@
 #include "image/exr_header.h"
 
 #include <cstring>
-#include <fstream>
 
 namespace rt {
 
@@ -88,18 +87,6 @@ std::optional<std::string> exrHeaderProblem(const ByteReader& read, std::uint64_
         if (!walk.header(empty, problem)) return problem;
     } while (!empty);
     return std::nullopt;
-}
-
-std::optional<std::string> exrFileHeaderProblem(const std::string& path) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) return std::nullopt;
-    const std::uint64_t size = std::uint64_t(in.tellg());
-    const ByteReader read = [&](std::uint64_t offset, std::size_t count, std::uint8_t* out) {
-        if (offset > size || count > size - offset) return false;
-        in.seekg(std::streamoff(offset));
-        return bool(in.read(reinterpret_cast<char*>(out), std::streamsize(count)));
-    };
-    return exrHeaderProblem(read, size);
 }
 
 }  // namespace rt

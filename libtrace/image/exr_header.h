@@ -1,4 +1,4 @@
-// OpenEXR headers walked before OpenImageIO opens a texture. OpenEXR 3.1 allocates what an
+// OpenEXR headers walked before OpenImageIO opens a texture (image/image_header.h). OpenEXR 3.1 allocates what an
 // attribute's size field declares before it reads the attribute: 760 bytes whose string attribute
 // declared 1.85 GB took 1.9 GB of memory in `oiiotool --info` and in rt-render alike
 // (fuzz_image_texture, 2026-11-28). Every attribute must fit in the file that holds it.
@@ -19,8 +19,5 @@ using ByteReader = std::function<bool(std::uint64_t offset, std::size_t count, s
 // be, or when the source is not OpenEXR (its magic number is missing): other formats are left to
 // their readers.
 std::optional<std::string> exrHeaderProblem(const ByteReader& read, std::uint64_t size);
-
-// The same for a file; nullopt for a file that cannot be read (its reader says why).
-std::optional<std::string> exrFileHeaderProblem(const std::string& path);
 
 }  // namespace rt

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "image/image_header.h"
+
 namespace rt {
 
 namespace {
@@ -23,15 +25,28 @@ std::string whyNotSameWindows(const OIIO::ImageSpec& spec, int fullWidth, int fu
     return "";
 }
 
+// Whether the header says rt-render wrote the file, in the channels `output` has.
+std::string whyNotSameWriter(const OIIO::ImageSpec& spec, const ImageOutputSettings& output) {
+    if (spec.nchannels != imageChannels(output))
+        return "it has " + std::to_string(spec.nchannels) + " channels, not " + std::to_string(imageChannels(output));
+    const std::string software = spec.get_string_attribute("Software");
+    if (imageFormatKeepsSoftware(output.format) && !software.starts_with("rt-render"))
+        return "rt-render did not write it (Software: '" + software + "')";
+    return "";
+}
+
 }  // namespace
 
-std::string whyNotCompleteImage(const std::string& path, int fullWidth, int fullHeight, const PixelWindow& window) {
+std::string whyNotCompleteImage(const ImageOutputSettings& output, int fullWidth, int fullHeight,
+                                const PixelWindow& window) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) return "missing";
-    auto in = OIIO::ImageInput::open(path);
+    if (!std::filesystem::exists(output.path, error)) return "missing";
+    if (std::optional<std::string> why = imageFileRefusal(output.path)) return *why;  // a FIFO is not opened
+    auto in = OIIO::ImageInput::open(output.path);
     if (!in) return "unreadable: " + OIIO::geterror();
     const OIIO::ImageSpec spec = in->spec();
     if (std::string why = whyNotSameWindows(spec, fullWidth, fullHeight, window); !why.empty()) return why;
+    if (std::string why = whyNotSameWriter(spec, output); !why.empty()) return why;
     // Every pixel is decoded, so that a truncated or damaged file is found.
     std::vector<float> pixels(spec.image_pixels() * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))

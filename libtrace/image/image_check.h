@@ -4,13 +4,18 @@
 
 #include <string>
 
+#include "image/image_output.h"
 #include "render/framebuffer.h"
 
 namespace rt {
 
-// Empty if `path` reads back completely through OpenImageIO with `window` as its data window in
-// a fullWidth x fullHeight image (formats without a display window, such as PNG, must hold the
-// whole image); otherwise why it does not, e.g. "missing" or "its data window is 0,0,35,20".
-std::string whyNotCompleteImage(const std::string& path, int fullWidth, int fullHeight, const PixelWindow& window);
+// Empty if `output.path` holds what writing `output` would: rt-render's own Software tag (in the
+// formats that keep one), its channels, `window` as its data window in a fullWidth x fullHeight
+// image (formats without a display window, such as PNG, must hold the whole image), and pixels
+// that read back completely; otherwise why it does not, e.g. "missing" or "its data window is
+// 0,0,35,20". The header is checked before any pixel is read: a 1 MB EXR of 1,000 channels at
+// the output's path asked for 2.6 GB when it was read first.
+std::string whyNotCompleteImage(const ImageOutputSettings& output, int fullWidth, int fullHeight,
+                                const PixelWindow& window);
 
 }  // namespace rt

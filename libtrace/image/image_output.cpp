@@ -27,17 +27,18 @@ struct FormatName {
     const char* oiioName;    // OpenImageIO's writer, chosen by name so that any file name works
     bool linear;             // scene-referred: the linear values (else through the OCIO view)
     bool alpha;              // has an alpha channel
+    bool software;           // keeps the Software tag (ImageMetadata::software)
 };
-constexpr FormatName kFormats[] = {{ImageFormat::Null, "null", "", "", false, false},
-                                   {ImageFormat::Png, "png", ".png", "png", false, true},
-                                   {ImageFormat::Exr, "exr", ".exr", "openexr", true, true},
-                                   {ImageFormat::Tga, "tga", ".tga", "targa", false, true},
-                                   {ImageFormat::Text, "text", ".txt", "", false, false},
-                                   {ImageFormat::Jpeg, "jpeg", ".jpg .jpeg", "jpeg", false, false},
-                                   {ImageFormat::Tiff, "tiff", ".tif .tiff", "tiff", false, true},
-                                   {ImageFormat::Hdr, "hdr", ".hdr", "hdr", true, false},
-                                   {ImageFormat::Pfm, "pfm", ".pfm", "pnm", true, false},
-                                   {ImageFormat::Webp, "webp", ".webp", "webp", false, true}};
+constexpr FormatName kFormats[] = {{ImageFormat::Null, "null", "", "", false, false, false},
+                                   {ImageFormat::Png, "png", ".png", "png", false, true, true},
+                                   {ImageFormat::Exr, "exr", ".exr", "openexr", true, true, true},
+                                   {ImageFormat::Tga, "tga", ".tga", "targa", false, true, true},
+                                   {ImageFormat::Text, "text", ".txt", "", false, false, false},
+                                   {ImageFormat::Jpeg, "jpeg", ".jpg .jpeg", "jpeg", false, false, true},
+                                   {ImageFormat::Tiff, "tiff", ".tif .tiff", "tiff", false, true, true},
+                                   {ImageFormat::Hdr, "hdr", ".hdr", "hdr", true, false, false},
+                                   {ImageFormat::Pfm, "pfm", ".pfm", "pnm", true, false, false},
+                                   {ImageFormat::Webp, "webp", ".webp", "webp", false, true, false}};
 
 // One field of every format, non-empty ones, separated by spaces.
 std::string joined(const char* FormatName::*field) {
@@ -240,6 +241,16 @@ std::optional<ImageFormat> imageFormatFromPath(const std::string& path) {
 const char* imageFormatName(ImageFormat format) { return formatName(format).name; }
 
 bool imageFormatHasAlpha(ImageFormat format) { return formatName(format).alpha; }
+
+bool imageFormatKeepsSoftware(ImageFormat format) { return formatName(format).software; }
+
+int imageChannels(const ImageOutputSettings& s) {
+    int channels = s.alpha ? 4 : 3;
+    if (s.format != ImageFormat::Exr) return channels;
+    for (const AovLayer& layer : aovLayers())
+        if (std::find(s.aovs.begin(), s.aovs.end(), layer.aov) != s.aovs.end()) channels += int(layer.channels.size());
+    return channels;
+}
 
 std::vector<std::string> imageFormatNames() {
     std::vector<std::string> names;

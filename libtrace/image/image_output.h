@@ -65,6 +65,11 @@ struct ImageOutputSettings {
     ColorSettings color;
 };
 
+// The channels writeImage writes for `settings`: colour, alpha if asked, the AOVs' (EXR).
+int imageChannels(const ImageOutputSettings& settings);
+// Whether the format's files keep the Software tag (ImageMetadata::software): PNG, EXR, TGA, JPEG, TIFF.
+bool imageFormatKeepsSoftware(ImageFormat format);
+
 // What the EXR header records about the render.
 struct ImageMetadata {
     std::string software;  // "rt-render 0.1.0"

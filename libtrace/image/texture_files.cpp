@@ -13,7 +13,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "image/exr_header.h"
+#include "core/error.h"
+#include "image/image_header.h"
 #include "image/tiled_textures.h"
 
 namespace rt {
@@ -32,56 +33,27 @@ OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
     return OIIO::TextureOpt::WrapPeriodic;
 }
 
-// The most bytes an untiled image (PNG, JPEG, a scanline TIFF or EXR) may decode to. OpenImageIO
-// reads such a file whole, outside the cache's limit, and a 2 KB PNG can declare 30000 x 30000
-// pixels: 2.7 GB, whose std::bad_alloc in a render thread ended the process. Tiled files are
-// read a tile at a time within the cache, whatever their size.
-constexpr double kMaxUntiledTextureBytes = double(std::uint64_t(1) << 30);
+// The picture `t` names, as messages name it.
+std::string sourceName(const Texture& t) { return t.embedded ? "embedded " + t.file : t.path; }
 
-// Pixels as stored or as displayed, whichever is more: OpenImageIO makes the MIP levels of an
-// untiled image at its display window's size, and a 64 x 64 EXR displayed at 257 x 16,795,137
-// asked for 2 GB in one allocation (fuzz_image_texture).
-double decodedBytes(const OIIO::ImageSpec& spec) {
-    const double pixels = std::max(double(spec.width) * spec.height, double(spec.full_width) * spec.full_height);
-    return pixels * spec.depth * spec.nchannels * spec.format.size();
+// The warning for a texture OpenImageIO cannot read.
+std::string unreadableWarning(const Texture& t, const std::string& why) {
+    return "texture '" + t.name + "': cannot read " + sourceName(t) + " (" + why + "): white is used";
 }
 
-// The spec of `file` as stored: the cache's own calls a whole untiled image one tile.
-OIIO::ImageSpec nativeSpec(OIIO::ImageCache& cache, OIIO::ustring file) {
-    OIIO::ImageSpec spec;
-    cache.get_imagespec(file, spec, 0, 0, /*native=*/true);
-    return spec;
+// The image `t` names, checked (image/image_header.h): a refused one is an input error.
+ImageHeaderCheck checkedHeader(const Texture& t) {
+    ImageHeaderCheck check = t.embedded ? checkImageHeader(*t.embedded, t.file) : checkImageHeader(t.path);
+    if (check.refusal) throw InputError("texture '" + t.name + "': " + sourceName(t) + " " + *check.refusal);
+    return check;
 }
 
-// " displayed at W x H" where the display window is not the data window (an EXR), else empty.
-std::string displayedSize(const OIIO::ImageSpec& spec) {
-    if (spec.full_width == spec.width && spec.full_height == spec.height) return "";
-    return " displayed at " + std::to_string(spec.full_width) + " x " + std::to_string(spec.full_height);
-}
-
-// Why a file stored as `spec` must not be looked up, if it must not: an image of no pixels (a TGA header saying
-// 4 x 0 opens, and OpenImageIO's bilinear lookup then divides by zero: SIGFPE), or an untiled one
-// beyond kMaxUntiledTextureBytes. From the file's own spec (nativeSpec).
-std::optional<std::string> refusal(const OIIO::ImageSpec& spec) {
-    const std::string size = std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels";
-    if (spec.width < 1 || spec.height < 1 || spec.depth < 1 || spec.nchannels < 1)
-        return "is " + size + " of " + std::to_string(spec.nchannels) + " channels: no pixels";
-    if (spec.tile_width == 0 && decodedBytes(spec) > kMaxUntiledTextureBytes)
-        return "is " + size + displayedSize(spec) + ", more than the 1 GiB an untiled image may take";
-    return std::nullopt;
-}
-
-// Why `t`'s bytes must not reach OpenImageIO at all, if they must not (exr_header.h).
-std::optional<std::string> headerProblem(const Texture& t) {
-    if (!t.embedded) return exrFileHeaderProblem(t.path);
-    const std::vector<std::uint8_t>& bytes = *t.embedded;
-    const ByteReader read = [&](std::uint64_t offset, std::size_t count, std::uint8_t* out) {
-        if (offset > bytes.size() || count > bytes.size() - offset) return false;
-        std::copy_n(bytes.begin() + std::ptrdiff_t(offset), count, out);
-        return true;
-    };
-    return exrHeaderProblem(read, bytes.size());
-}
+// Measured peaks above an untextured render, per byte of the picture decoded (docs/robustness.md,
+// "Limits"), rounded up: making a tiled copy reads the picture whole and builds its MIP levels
+// (an 18000 x 18000 RGB PNG, 0.97 GB decoded: 5.8 GB); read as it is, OpenImageIO holds the
+// picture and its levels (2.6 GB).
+constexpr double kCopyBytesPerDecodedByte = 6;
+constexpr double kHeldBytesPerDecodedByte = 3;
 
 // Texture systems outlive the TextureFiles that use them. OpenImageIO 2.4 keeps a texture
 // system's private image cache when the system is destroyed (LeakSanitizer reports it after every
@@ -205,25 +177,18 @@ struct TextureFiles::Impl {
     Entry open(const Texture& t, std::size_t index, std::vector<std::string>& warnings) {
         Entry e;
         if (t.kind != Texture::Kind::Image) return e;
-        if (const std::optional<std::string> why = headerProblem(t)) {
-            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + ": " +
-                               *why + ": white is used");
+        const ImageHeaderCheck check = checkedHeader(t);
+        if (check.unreadable) {
+            warnings.push_back(unreadableWarning(t, *check.unreadable));
             return e;
         }
         const OIIO::ustring file = t.embedded ? addEmbedded(t, index) : OIIO::ustring(t.path);
         const OIIO::ImageSpec* spec = system->imagespec(file);
         if (!spec) {
-            warnings.push_back("texture '" + t.name + "': cannot read " + (t.embedded ? "embedded " + t.file : t.path) +
-                               " (" + system->geterror() + "): white is used");
+            warnings.push_back(unreadableWarning(t, system->geterror()));
             return e;
         }
-        const OIIO::ImageSpec stored = nativeSpec(*system->imagecache(), file);
-        if (const std::optional<std::string> why = refusal(stored)) {
-            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + " " +
-                               *why + ": white is used");
-            return e;
-        }
-        e.file = tiled(t, file, stored, warnings);
+        e.file = tiled(t, file, check.header, warnings);
         e.handle = system->get_texture_handle(e.file);
         spec = system->imagespec(e.file);  // tiled() has read it
         e.channels = std::min(spec->nchannels, 3);
@@ -252,16 +217,13 @@ struct TextureFiles::Impl {
         return texel;
     }
 
-    // The file the lookups read for `file`, the source of `t` stored as `spec`: a tiled, MIP-mapped
-    // copy from the tx cache, or `file` itself when it is tiled and MIP-mapped already, too large to read
-    // whole, or the cache is off. A copy that cannot be made is one warning, and the cache is
-    // off for the rest of the textures.
-    OIIO::ustring tiled(const Texture& t, OIIO::ustring file, const OIIO::ImageSpec& spec,
+    // The file the lookups read for `file`, the source of `t` whose header is `header`: a tiled,
+    // MIP-mapped copy from the tx cache, or `file` itself when it is tiled and MIP-mapped already
+    // or the cache is off. A copy that cannot be made is one warning, and the cache is off for the
+    // rest of the textures.
+    OIIO::ustring tiled(const Texture& t, OIIO::ustring file, const ImageHeader& header,
                         std::vector<std::string>& warnings) {
-        int levels = 1;
-        system->get_texture_info(file, 0, OIIO::ustring("miplevels"), OIIO::TypeInt, &levels);
-        if (txCacheOff(txCache) || (spec.tile_width > 0 && levels > 1) || decodedBytes(spec) > kMaxUntiledTextureBytes)
-            return file;
+        if (txCacheOff(txCache) || header.tiledMipMapped) return file;
         try {
             TiledCopy copy = tiledCopy(txCache, {t.path, t.embedded, t.file}, txCacheBytes);
             const OIIO::ustring path(copy.path());
@@ -294,6 +256,24 @@ struct TextureFiles::Impl {
         return name;
     }
 };
+
+std::uint64_t estimateTextureMemory(const Scene& scene, const TextureCacheSettings& cache) {
+    double held = 0, largestCopy = 0;
+    bool anyImage = false;
+    for (const Texture& t : scene.textures) {
+        if (t.kind != Texture::Kind::Image) continue;
+        anyImage = true;
+        const ImageHeaderCheck check = checkedHeader(t);
+        if (check.unreadable || check.header.tiledMipMapped) continue;  // white, or read a tile at a time
+        const double decoded = double(check.header.decodedBytes);
+        if (txCacheOff(cache.txCache))
+            held += decoded * kHeldBytesPerDecodedByte;
+        else
+            largestCopy = std::max(largestCopy, decoded * kCopyBytesPerDecodedByte);
+    }
+    const double cacheBytes = anyImage ? double(cache.megabytes) * 1024 * 1024 : 0;
+    return std::uint64_t(cacheBytes + held + largestCopy);
+}
 
 bool TextureFiles::hasAlpha(std::uint32_t index, bool mask) const {
     const Impl::Entry& e = impl_->entries[index];

@@ -25,6 +25,13 @@ struct TextureCacheSettings {
     double txCacheMegabytes = kDefaultTxCacheMegabytes;  // the bound on its size (rt-render --tx-cache-size)
 };
 
+// What opening the scene's image textures takes in memory at most, from their headers
+// (image/image_header.h), for rt-render --max-memory: OpenImageIO's cache (`cache.megabytes`) once
+// a scene has an image; with the tx cache, the picture whose copy costs most, read whole while its
+// tiled copy is made; without, every picture that is not tiled and MIP-mapped, held whole with its
+// MIP levels. Throws rt::InputError for a texture TextureFiles refuses.
+std::uint64_t estimateTextureMemory(const Scene& scene, const TextureCacheSettings& cache);
+
 class TextureFiles : public ImageTextures {
 public:
     // Opens the scene's image textures, making their tiled copies where needed. One that cannot

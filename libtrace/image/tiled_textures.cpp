@@ -17,7 +17,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <optional>
+#include <regex>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -46,24 +48,57 @@ std::string hex(std::uint64_t v) {
     return text;
 }
 
-// What the copy of `source` depends on, as text: a file by its absolute path, size and time of
-// last change (as make and renderers' auto-tx tell a changed file), an embedded picture by its bytes.
-std::string identity(const TextureSource& source) {
-    std::string what = kCopySettings;
-    if (source.bytes)
-        return what + "\nbytes " +
-               hex(OIIO::farmhash::Fingerprint64(reinterpret_cast<const char*>(source.bytes->data()),
-                                                 source.bytes->size()));
-    const fs::path path = fs::absolute(source.path);
-    const auto changed = fs::last_write_time(path).time_since_epoch().count();
-    return what + "\nfile " + path.string() + "\nsize " + std::to_string(fs::file_size(path)) + "\nchanged " +
-           std::to_string(changed);
+// A hash of every byte of the file at `path`, read a mebibyte at a time: a copy is keyed by what
+// its source holds, not by its name, size and time (a different picture of the same size and time,
+// unpacked from an archive or given its old time with `touch -r`, rendered the old copy).
+std::uint64_t contentHash(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> chunk(std::size_t(1) << 20);
+    std::vector<std::uint64_t> chunkHashes;
+    while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0)
+        chunkHashes.push_back(OIIO::farmhash::Fingerprint64(chunk.data(), std::size_t(in.gcount())));
+    if (in.bad()) throw std::runtime_error("cannot read " + path);
+    return OIIO::farmhash::Fingerprint64(reinterpret_cast<const char*>(chunkHashes.data()),
+                                         chunkHashes.size() * sizeof(std::uint64_t));
 }
 
-// The copy's file name: the source's stem, for people looking in the folder, and the hash.
+// What the copy of `source` depends on, as text: the bytes of the picture and the copy's settings.
+std::string identity(const TextureSource& source) {
+    const std::uint64_t bytes =
+        source.bytes
+            ? OIIO::farmhash::Fingerprint64(reinterpret_cast<const char*>(source.bytes->data()), source.bytes->size())
+            : contentHash(source.path);
+    return std::string(kCopySettings) + "\nbytes " + hex(bytes);
+}
+
+// The copy's file name: the source's stem, for people looking in the folder, and the hash. The
+// cache removes no file but those named so.
 std::string copyName(const TextureSource& source) {
     const std::string stem = fs::path(source.bytes ? source.name : source.path).stem().string();
     return stem + "-" + hex(OIIO::farmhash::Fingerprint64(identity(source))) + ".tx";
+}
+
+bool isCopyName(const std::string& name) {
+    static const std::regex copy(R"(.+-[0-9a-f]{16}\.tx)");
+    return std::regex_match(name, copy);
+}
+
+// The cache's own folder inside the folder it is given, which may hold a user's files (maketx
+// output, anything named *.tx): only there, and only once the marker says rt made it, are files
+// removed.
+constexpr const char* kMarker = ".rt-tx-cache";
+constexpr const char* kMarkerText =
+    "Tiled, MIP-mapped copies of textures made by rt-render (docs/rt-render.md, \"Texture copies\").\n"
+    "rt-render removes the least recently used *-<hash>.tx files here, and only those.\n";
+
+// `folder`'s own subfolder, created with its marker if missing; throws if it cannot be.
+fs::path ownFolder(const std::string& folder) {
+    const fs::path own = fs::path(folder) / kTxCopiesFolder;
+    std::error_code error;
+    fs::create_directories(own, error);
+    if (error) throw std::runtime_error("cannot create " + own.string() + ": " + error.message());
+    if (!fs::exists(own / kMarker, error)) std::ofstream(own / kMarker) << kMarkerText;  // only its presence counts
+    return own;
 }
 
 // Temporaries of makers that no longer run on this machine and in which nothing changed for this
@@ -106,9 +141,7 @@ std::vector<CachedCopy> copiesIn(const fs::path& folder) {
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
         struct stat st {};
-        if (name.starts_with('.') || !name.ends_with(".tx") || ::stat(it->path().c_str(), &st) != 0 ||
-            !S_ISREG(st.st_mode))
-            continue;
+        if (!isCopyName(name) || ::stat(it->path().c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
         copies.push_back({it->path(), std::uintmax_t(st.st_size), st.st_atim});
     }
     std::sort(copies.begin(), copies.end(), [](const CachedCopy& a, const CachedCopy& b) {
@@ -129,8 +162,10 @@ bool removeUnlessInUse(const fs::path& path) {
 }
 
 // Removes the least recently used copies in `folder` until they and `incoming` more bytes fit in
-// `maxBytes`, or none but copies in use are left.
+// `maxBytes`, or none but copies in use are left; none in a folder without the marker.
 void makeRoom(const fs::path& folder, std::uintmax_t incoming, std::uint64_t maxBytes) {
+    std::error_code error;
+    if (!fs::is_regular_file(folder / kMarker, error)) return;
     const std::vector<CachedCopy> copies = copiesIn(folder);
     std::uintmax_t total = incoming;
     for (const CachedCopy& c : copies) total += c.bytes;
@@ -140,19 +175,31 @@ void makeRoom(const fs::path& folder, std::uintmax_t incoming, std::uint64_t max
     }
 }
 
-// Throws unless `copy` reads back as a tiled file with every MIP level down to 1 x 1: OpenImageIO's
-// writers can report success for a file a full disk cut short, and a short copy renamed into the
-// cache would be read by every later render.
+// The bytes a level's uncompressed tiles take in the file.
+std::uint64_t tileBytes(const OIIO::ImageSpec& level) {
+    const auto tiles = [](int size, int tile) { return std::uint64_t((size + tile - 1) / tile); };
+    return tiles(level.width, level.tile_width) * tiles(level.height, level.tile_height) *
+           std::uint64_t(level.tile_width) * std::uint64_t(level.tile_height) * level.pixel_bytes();
+}
+
+// Throws unless `copy` reads back as a tiled file with every MIP level down to 1 x 1, each level's
+// tiles within the file: OpenImageIO's writers can report success for a file a full disk cut
+// short, and a copy cut short (or damaged later) would be read by every later render.
 void checkWholeCopy(const fs::path& copy) {
     auto in = OIIO::ImageInput::open(copy.string());
     if (!in) throw std::runtime_error("the copy does not read back: " + OIIO::geterror());
+    const OIIO::ImageSpec top = in->spec(0, 0);
     int levels = 0;
-    while (in->seek_subimage(0, levels)) ++levels;
-    const OIIO::ImageSpec& top = in->spec(0, 0);
+    std::uint64_t pixelBytes = 0;
+    for (; in->seek_subimage(0, levels); ++levels)
+        if (in->spec().tile_width > 0) pixelBytes += tileBytes(in->spec());
     const int expected = 1 + int(std::floor(std::log2(std::max(top.width, top.height))));
     if (top.tile_width == 0 || levels < expected)
         throw std::runtime_error("the copy is incomplete (" + std::to_string(levels) + " of " +
                                  std::to_string(expected) + " MIP levels)");
+    if (fs::file_size(copy) < pixelBytes)
+        throw std::runtime_error("the copy is cut short (" + std::to_string(fs::file_size(copy)) + " bytes, its " +
+                                 std::to_string(pixelBytes) + " bytes of tiles)");
 }
 
 // Writes the tiled, MIP-mapped texture of `source` to `target`; throws saying why it cannot.
@@ -177,6 +224,21 @@ void makeCopy(const TextureSource& source, const std::string& target) {
     checkWholeCopy(target);
 }
 
+// The copy at `target` if it is there and reads back whole; one that does not is removed (unless a
+// render uses it), to be made again.
+std::optional<TiledCopy> wholeCopy(const fs::path& target) {
+    std::optional<TiledCopy> existing = openCopy(target);
+    if (!existing) return std::nullopt;
+    try {
+        checkWholeCopy(target);
+        return existing;
+    } catch (const std::runtime_error&) {
+        existing.reset();
+        removeUnlessInUse(target);
+        return std::nullopt;
+    }
+}
+
 }  // namespace
 
 std::string defaultTxCache() {
@@ -194,20 +256,18 @@ TiledCopy::~TiledCopy() {
 }
 
 TiledCopy tiledCopy(const std::string& folder, const TextureSource& source, std::uint64_t maxBytes) {
-    const fs::path target = fs::path(folder) / copyName(source);
-    if (std::optional<TiledCopy> existing = openCopy(target)) return std::move(*existing);
-    std::error_code error;
-    fs::create_directories(folder, error);
-    if (error) throw std::runtime_error("cannot create " + folder + ": " + error.message());
-    removeStaleTemporariesIn(folder, kStaleAfter);
+    const fs::path own = ownFolder(folder);
+    const fs::path target = own / copyName(source);
+    if (std::optional<TiledCopy> existing = wholeCopy(target)) return std::move(*existing);
+    removeStaleTemporariesIn(own.string(), kStaleAfter);
     try {
         // make_texture writes a temporary of its own beside the name it is given: both in here.
         const TemporaryFolder temporary(target.string());
         makeCopy(source, temporary.file());
-        const ExclusiveLock turn((fs::path(folder) / ".lock").string(), folder);
+        const ExclusiveLock turn((own / ".lock").string(), own.string());
         // Another render may have added the same copy meanwhile: it is used, this one dropped.
-        if (std::optional<TiledCopy> theirs = openCopy(target)) return std::move(*theirs);
-        makeRoom(folder, fs::file_size(temporary.file()), maxBytes);
+        if (std::optional<TiledCopy> theirs = wholeCopy(target)) return std::move(*theirs);
+        makeRoom(own, fs::file_size(temporary.file()), maxBytes);
         temporary.commit();
         if (std::optional<TiledCopy> ours = openCopy(target)) return std::move(*ours);
         throw std::runtime_error("it is gone after being written");

@@ -3,10 +3,14 @@
 // "auto-tx" does. OpenImageIO's TextureSystem reads such a file a 64 x 64 tile of one MIP level
 // at a time, within its cache; an untiled picture (PNG, JPEG) it holds a whole level at a time,
 // outside the cache's limit, and makes its coarser levels on every render (docs/benchmarks.md,
-// "Textures"). A copy is named by a hash of what it is made from: the source's absolute path,
-// size and modification time (or, for a picture embedded in a .glb or a data: URI, its bytes)
-// and the settings below, so that a changed source gets a new copy and an unchanged one is
-// reused.
+// "Textures"). A copy is named by a hash of what it is made from: every byte of the source (a file,
+// or a picture embedded in a .glb or a data: URI) and the settings below, so that a changed source
+// gets a new copy and an unchanged one is reused, wherever it lies. A copy that does not read back
+// whole (cut short, damaged) is made again.
+//
+// The folder given (--tx-cache) may hold a user's files: the copies live in its subfolder
+// "rt-tx-copies", which rt-render creates with a marker file, and the cache removes nothing but
+// files named as it names copies, in that subfolder, under that marker.
 //
 // Copies are made in a temporary folder (core/atomic_file.h: removed on SIGINT and SIGTERM, and
 // by a later render once stale) and renamed into the cache: renders never read half a copy. The
@@ -32,6 +36,9 @@ std::string defaultTxCache();
 
 // Whether `txCache` (an option's or defaultTxCache's value) turns the copies off.
 bool txCacheOff(const std::string& txCache);
+
+// The subfolder of the tx cache's folder that holds the copies (and nothing else rt-render made).
+constexpr const char* kTxCopiesFolder = "rt-tx-copies";
 
 // The bound on the tx cache's size, when --tx-cache-size does not say.
 constexpr double kDefaultTxCacheMegabytes = 2048;
@@ -60,7 +67,7 @@ private:
     int fd_;
 };
 
-// The tiled, MIP-mapped copy of `source` in `folder`: the existing one, touched (its access
+// The tiled, MIP-mapped copy of `source` in `folder`'s own subfolder: the existing one, touched (its access
 // time, by which copies are ranked for removal, set to now), or one made now (the folder created
 // if missing), for which older copies are removed until the folder's copies fit in `maxBytes`.
 // Throws std::runtime_error saying why when the copy can neither be found nor made (the folder

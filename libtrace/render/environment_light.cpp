@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "scene/sandbox.h"
 
 namespace rt {
 
@@ -35,7 +36,12 @@ void appendCdf(const double* values, int n, std::vector<double>& cdf) {
 }  // namespace
 
 void setEnvironmentImage(Scene& scene, const std::string& path) {
-    if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such environment image");
+    requireInsideSandbox(path, path, "--environment");  // rt-farm passes it through from whoever submits
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    if (!std::filesystem::exists(status)) throw InputError(path + ": no such environment image");
+    if (!std::filesystem::is_regular_file(status))  // checked by name: no FIFO is opened
+        throw InputError(path + ": the environment image is not a regular file");
     scene.textures.push_back({.name = "environment", .file = path, .path = path});
     scene.environment = Environment{.texture = std::uint32_t(scene.textures.size() - 1)};
 }

@@ -25,7 +25,7 @@ namespace rt {
 
 // Makes the image file at `path` the scene's environment (a texture named "environment"),
 // unturned and unscaled, in place of any the scene names.
-// Throws rt::InputError when the file does not exist.
+// Throws rt::InputError when it is not a regular file, or lies outside the sandbox (--sandbox).
 void setEnvironmentImage(Scene& scene, const std::string& path);
 
 // Texture coordinates of a unit direction in the equirectangular mapping, and back.

@@ -26,11 +26,13 @@ std::uint64_t defaultMemoryLimit() {
     return std::uint64_t(pages) * std::uint64_t(pageSize) / 4 * 3;
 }
 
-void checkMemoryLimit(const MemoryEstimate& e, std::uint64_t limit) {
+void checkMemoryLimit(const MemoryEstimate& e, std::uint64_t limit, const std::string& smallerImage) {
     if (e.total() <= limit) return;
+    const std::string remedy =
+        e.textures > e.image ? "make the textures smaller, or tiled and MIP-mapped (maketx)" : smallerImage;
     throw InputError("rendering needs about " + gigabytes(e.total()) + " (image " + gigabytes(e.image) +
-                     ", scene and tree " + gigabytes(e.sceneAndTree) + "), more than --max-memory " + gigabytes(limit) +
-                     "; render the image in regions (--region) or raise --max-memory");
+                     ", scene and tree " + gigabytes(e.sceneAndTree) + ", textures " + gigabytes(e.textures) +
+                     "), more than --max-memory " + gigabytes(limit) + "; " + remedy + " or raise --max-memory");
 }
 
 }  // namespace rt

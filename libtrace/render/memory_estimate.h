@@ -30,7 +30,8 @@ constexpr std::uint64_t kRenderBytesPerPrimitive = 300;
 struct MemoryEstimate {
     std::uint64_t image = 0;
     std::uint64_t sceneAndTree = 0;
-    std::uint64_t total() const { return image + sceneAndTree; }
+    std::uint64_t textures = 0;  // image textures read whole (image/texture_files.h estimateTextureMemory)
+    std::uint64_t total() const { return image + sceneAndTree + textures; }
 };
 
 // The picture's part is zero when nothing is rendered (-p).
@@ -39,8 +40,11 @@ MemoryEstimate estimateRenderMemory(const RenderSettings& settings, std::size_t 
 // Three quarters of the machine's physical memory: what --max-memory allows unless told.
 std::uint64_t defaultMemoryLimit();
 
-// Throws rt::InputError ("rendering needs about 21.5 GB (image 21.5 GB, scene and tree 0.0 GB),
-// more than --max-memory 4.0 GB") when the estimate exceeds `limit` bytes.
-void checkMemoryLimit(const MemoryEstimate& estimate, std::uint64_t limit);
+// Throws rt::InputError ("rendering needs about 21.5 GB (image 21.5 GB, scene and tree 0.0 GB,
+// textures 0.0 GB), more than --max-memory 4.0 GB; render the image in regions (--region) or raise
+// --max-memory") when the estimate exceeds `limit` bytes; `smallerImage` says how to need less
+// for the picture.
+void checkMemoryLimit(const MemoryEstimate& estimate, std::uint64_t limit,
+                      const std::string& smallerImage = "render the image in regions (--region)");
 
 }  // namespace rt

@@ -41,4 +41,15 @@ grep -q "again: unreadable" "$WORK/stderr" || fail "a truncated file was not ren
 rm "$WORK/tile.exr"
 expect_exit 0 "$RT_RENDER" "$scene" "${opts[@]}" --tiles 4x4 --tile 5/16 -f "$WORK/tile.exr" --skip-existing
 idiff -fail 0 -warn 0 "$WORK/region.exr" "$WORK/tile.exr" >/dev/null || fail "a missing tile was not rendered"
+# Only a file rt-render wrote, with the channels it writes, is complete; the header says so before
+# a pixel is read (a 1 MB EXR of 1,000 channels was read whole: 2.6 GB).
+full=(-K -s -S 2 -x 70 -y 40)
+"$RT_RENDER" "$scene" "${full[@]}" -q -f "$WORK/full.exr"
+oiiotool "$WORK/full.exr" -o "$WORK/other.exr"  # the same pixels, written by oiiotool
+expect_exit 0 "$RT_RENDER" "$scene" "${full[@]}" -f "$WORK/other.exr" --skip-existing
+grep -q "again: rt-render did not write it (Software: 'OpenImageIO" "$WORK/stderr" ||
+    fail "a file rt-render did not write was taken as complete: $(cat "$WORK/stderr")"
+oiiotool --pattern constant:color=0.5 70x40 1000 -d half -o "$WORK/channels.exr"
+expect_exit 0 "$RT_RENDER" "$scene" "${full[@]}" -f "$WORK/channels.exr" --skip-existing
+grep -q "again: it has 1000 channels, not 4" "$WORK/stderr" || fail "1000 channels: $(cat "$WORK/stderr")"
 echo "farm_tiles: ok"

@@ -21,6 +21,30 @@ expect_one_error rt-render "--kd-intersection-cost: 1e-308 is not in 0.001-1000"
 expect_exit 2 "$RT_RENDER" "$scene" -q -x 16384 -y 16384 --max-memory 4 -o null
 expect_one_error rt-render "rendering needs about 21.5 GB .*more than --max-memory 4.0 GB"
 expect_exit 0 "$RT_RENDER" "$scene" "${small[@]}" --max-memory 1 -o null
+# Textures count (issue 41): a PNG declaring 18000 x 18000 RGB (0.97 GB decoded, within the 1 GiB
+# an image may take) is read whole to make its tiled copy, about 6 times that: refused from its
+# header, within 10 s and 1 GB of address space. It made rt-render take 5.8 GB.
+oiiotool --pattern checker 4x4 3 -d uint8 -o "$WORK/small.png"
+python3 - "$WORK/small.png" "$WORK/large.png" <<'PY'
+import struct, sys, zlib
+png = bytearray(open(sys.argv[1], "rb").read())
+png[16:24] = struct.pack(">II", 18000, 18000)  # IHDR width and height, then its CRC
+png[29:33] = struct.pack(">I", zlib.crc32(bytes(png[12:29])))
+open(sys.argv[2], "wb").write(png)
+PY
+printf 'newmtl m\nmap_Kd large.png\n' >"$WORK/large.mtl"
+printf 'mtllib large.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n' >"$WORK/large.obj"
+address_space=1000000
+built_with "$RT_RENDER" asan && address_space=unlimited
+for cache in "$WORK/tx" off; do
+    status=0
+    (ulimit -v $address_space; exec timeout 10 "$RT_RENDER" "$WORK/large.obj" "${small[@]}" -o null --max-memory 2 --tx-cache $cache) \
+        >"$WORK/stdout" 2>"$WORK/stderr" || status=$?
+    [ "$status" = 2 ] || fail "--tx-cache $cache: a 18000 x 18000 texture under --max-memory 2: exit $status: $(cat "$WORK/stderr")"
+    expect_one_error rt-render "rendering needs about .*textures [3-9].[0-9] GB), more than --max-memory 2.0 GB; make the textures smaller"
+done
+expect_exit 2 "$RT_INSPECT" "$scene" -q -x 16384 -y 16384 --heatmap "$WORK/h.png" --max-memory 1
+expect_one_error rt-inspect "needs about 2.1 GB .*more than --max-memory 1.0 GB; make the heat map smaller (-x, -y)"
 
 # Input size: a file beyond --max-input is refused before it is read; standard input that never
 # ends stops at the limit.

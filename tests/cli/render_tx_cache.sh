@@ -2,6 +2,8 @@
 # tiled, MIP-mapped copy made once in --tx-cache, else $RT_TX_CACHE; "off" makes none; a folder
 # that cannot be made is one warning and the same picture. A maker killed while writing a copy
 # leaves nothing a later render trusts; two makers of the same copy both succeed with one copy.
+# The cache removes only the copies it made, in its own subfolder; a copy is keyed by the
+# picture's bytes, and one that does not read back whole is made again.
 source "$(dirname "$0")/common.bash"
 oiiotool --pattern checker:width=4:height=4 16x16 3 -d uint8 -o "$WORK/checker.png"
 printf 'newmtl m\nKd 1 1 1\nmap_Kd checker.png\n' >"$WORK/square.mtl"
@@ -15,7 +17,7 @@ render() {
         fail "exit $?: $(cat "$WORK/stderr")"
 }
 copies() { find "$1" -name '*.tx' 2>/dev/null | wc -l; }
-published() { find "$1" -maxdepth 1 -name '*.tx' ! -name '.*' | wc -l; }  # not in temporaries
+published() { find "$1/rt-tx-copies" -maxdepth 1 -name '*.tx' ! -name '.*' | wc -l; }  # not in temporaries
 
 render plain --tx-cache off
 [ ! -e "$WORK/tx" ] || fail "--tx-cache off made a folder"
@@ -39,9 +41,9 @@ kill_maker() {
     RT_TEST_WRITE_DELAY_MS=60000 env --default-signal=INT "$RT_RENDER" "$WORK/square.obj" -x 40 -y 30 \
         --tx-cache "$WORK/killed" -f "$WORK/killed.png" --progress none 2>"$WORK/stderr" &
     local pid=$! got=0 temporary
-    mkdir -p "$WORK/killed"
-    temporary=$(wait_for_temporary "$WORK/killed" 'rt-tmp-')
-    wait_for_temporary "$WORK/killed/$temporary" '^checker-[0-9a-f]*\.tx$' >/dev/null  # made, not yet renamed
+    mkdir -p "$WORK/killed/rt-tx-copies"
+    temporary=$(wait_for_temporary "$WORK/killed/rt-tx-copies" 'rt-tmp-')
+    wait_for_temporary "$WORK/killed/rt-tx-copies/$temporary" '^checker-[0-9a-f]*\.tx$' >/dev/null  # made, not yet renamed
     kill "-$1" "$pid"
     wait "$pid" 2>/dev/null || got=$?  # without the shell's "Killed" line
     [ "$got" = $((128 + $(kill -l "$1"))) ] || fail "$1: exited $got, expected 128+SIG$1"
@@ -49,10 +51,10 @@ kill_maker() {
 }
 for signal in INT TERM; do
     kill_maker "$signal"
-    [ -z "$(ls -A "$WORK/killed" | grep rt-tmp)" ] || fail "$signal: left behind: $(ls -A "$WORK/killed")"
+    [ -z "$(ls -A "$WORK/killed/rt-tx-copies" | grep rt-tmp)" ] || fail "$signal: left behind: $(ls -AR "$WORK/killed")"
 done
 kill_maker KILL
-leftover=$(ls -A "$WORK/killed" | grep rt-tmp)
+leftover=rt-tx-copies/$(ls -A "$WORK/killed/rt-tx-copies" | grep rt-tmp)
 render afterKill --tx-cache "$WORK/killed"  # makes the copy afresh beside the leftover
 [ "$(published "$WORK/killed")" = 1 ] && [ -e "$WORK/killed/$leftover" ] || fail "expected a copy beside the leftover: $(ls -AR "$WORK/killed")"
 # Removed by a render making a copy once its process is gone and nothing changed in it for 10 minutes.
@@ -73,10 +75,66 @@ for name in one two; do
 done
 wait "$pid_one" || fail "the first of two concurrent makers failed: $(cat "$WORK/one.stderr")"
 wait "$pid_two" || fail "the second of two concurrent makers failed: $(cat "$WORK/two.stderr")"
-[ "$(published "$WORK/both")" = 1 ] && [ -z "$(ls -A "$WORK/both" | grep rt-tmp)" ] ||
+[ "$(published "$WORK/both")" = 1 ] && [ -z "$(ls -A "$WORK/both/rt-tx-copies" | grep rt-tmp)" ] ||
     fail "two makers left: $(ls -AR "$WORK/both")"
 
-for name in first again fromEnv fallback afterKill one two; do
+# textured NAME PICTURE: $WORK/NAME.obj, the square coloured by PICTURE.
+textured() {
+    sed "s|checker.png|$2|" "$WORK/square.mtl" >"$WORK/$1.mtl"
+    sed "s|square.mtl|$1.mtl|" "$WORK/square.obj" >"$WORK/$1.obj"
+}
+# render_obj NAME OPTION...: $WORK/NAME.obj to $WORK/NAME-render.png; exit 0 and no warning required.
+render_obj() {
+    local name=$1
+    shift
+    "$RT_RENDER" "$WORK/$name.obj" -x 40 -y 30 -f "$WORK/$name-render.png" --progress none "$@" 2>"$WORK/stderr" ||
+        fail "$name: exit $?: $(cat "$WORK/stderr")"
+    ! grep -q "warning: texture" "$WORK/stderr" || fail "$name: $(cat "$WORK/stderr")"
+}
+
+# A folder holding a user's files: maketx output and a text file named project.tx. Copies of two
+# pictures of about 1 MB each under a bound of 1 MB: the first copy goes, the user's files stay.
+mkdir "$WORK/user"
+oiiotool --pattern checker 64x64 3 -d uint8 -otex "$WORK/user/theirs.tx"
+printf 'notes, not a texture\n' >"$WORK/user/project.tx"
+for seed in 1 2; do
+    oiiotool --pattern noise:seed=$seed 512x512 3 -d uint8 -o "$WORK/noise$seed.png"
+    textured noise$seed noise$seed.png
+    render_obj noise$seed --tx-cache "$WORK/user" --tx-cache-size 1
+done
+[ -e "$WORK/user/theirs.tx" ] && [ -e "$WORK/user/project.tx" ] || fail "the cache removed a user's files: $(ls -AR "$WORK/user")"
+[ "$(published "$WORK/user")" = 1 ] || fail "the bound was not kept: $(ls -AR "$WORK/user")"
+
+# Another picture of the same size and modification time (unpacked from an archive, touch -r) gets
+# its own copy: the two differ in colour, so the old copy would show.
+oiiotool --pattern constant:color=1,0,0 16x16 3 -d uint8 -o "$WORK/red.png"
+oiiotool --pattern constant:color=0,0,1 16x16 3 -d uint8 -o "$WORK/blue.png"
+python3 - "$WORK/red.png" "$WORK/blue.png" <<'PY'
+import sys  # the same size: the shorter is padded after its IEND chunk, which readers ignore
+a, b = (open(p, "rb").read() for p in sys.argv[1:])
+n = max(len(a), len(b))
+for p, data in zip(sys.argv[1:], (a, b)):
+    open(p, "wb").write(data + bytes(n - len(data)))
+PY
+cp -p "$WORK/red.png" "$WORK/picture.png"
+textured picture picture.png
+render_obj picture --tx-cache "$WORK/keyed"
+cp "$WORK/blue.png" "$WORK/picture.png"
+touch -r "$WORK/red.png" "$WORK/picture.png"
+render_obj picture --tx-cache "$WORK/keyed"
+textured blue blue.png
+render_obj blue --tx-cache off
+idiff -fail 0.004 "$WORK/blue-render.png" "$WORK/picture-render.png" >/dev/null || fail "the copy of the old picture was used"
+
+# A copy cut short (a full disk, a damaged file) is made again, not used nor read around.
+copy=$(find "$WORK/tx/rt-tx-copies" -name 'checker-*.tx')
+size=$(stat -c %s "$copy")
+truncate -s $((size / 2)) "$copy"
+render remade --tx-cache "$WORK/tx"
+! grep -q "warning: texture" "$WORK/stderr" || fail "a cut copy: $(cat "$WORK/stderr")"
+[ "$(stat -c %s "$copy")" = "$size" ] || fail "the cut copy was not made again: $(stat -c %s "$copy") bytes of $size"
+
+for name in first again fromEnv fallback afterKill one two remade; do
     idiff -fail 0.004 "$WORK/plain.png" "$WORK/$name.png" >/dev/null || fail "$name.png differs from plain.png"
 done
 echo "render_tx_cache: ok"

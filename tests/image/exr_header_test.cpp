@@ -10,6 +10,8 @@
 #include <fstream>
 #include <iterator>
 
+#include "core/error.h"
+#include "image/image_header.h"
 #include "image/texture_files.h"
 
 using namespace rt;
@@ -45,10 +47,10 @@ std::vector<std::uint8_t> withCommentSize(std::vector<std::uint8_t> bytes, std::
 TEST(ExrHeader, AWellFormedFileAndOtherFormatsPass) {
     const std::string path = testing::TempDir() + "/exr-header-good.exr";
     writeExr(path);
-    EXPECT_EQ(exrFileHeaderProblem(path), std::nullopt);
+    EXPECT_EQ(checkImageHeader(path).refusal, std::nullopt);
     const std::string png = testing::TempDir() + "/exr-header-other.png";
     EXPECT_TRUE(OIIO::ImageBuf(OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)).write(png));
-    EXPECT_EQ(exrFileHeaderProblem(png), std::nullopt);
+    EXPECT_EQ(checkImageHeader(png).refusal, std::nullopt);
 }
 
 // The fuzzer's input (fuzz/corpus/image_texture/exr_attribute_declares_1.8_gb) in a file of the
@@ -56,7 +58,7 @@ TEST(ExrHeader, AWellFormedFileAndOtherFormatsPass) {
 TEST(ExrHeader, AnAttributeLargerThanTheFileIsRefused) {
     const std::string path = testing::TempDir() + "/exr-header-bad.exr";
     writeBytes(path, withCommentSize(writeExr(path), 0x6e720055));
-    const std::optional<std::string> why = exrFileHeaderProblem(path);
+    const std::optional<std::string> why = checkImageHeader(path).refusal;
     ASSERT_TRUE(why);
     EXPECT_NE(why->find("attribute 'comments' declares 1852964949 bytes"), std::string::npos) << *why;
 }
@@ -72,15 +74,17 @@ TEST(ExrHeader, AHeaderCutShortIsRefused) {
     EXPECT_TRUE(exrHeaderProblem(read, bytes.size()));
 }
 
-TEST(ExrHeader, ATextureWithSuchAHeaderIsAWarningAndWhite) {
+TEST(ExrHeader, ATextureWithSuchAHeaderIsAnInputError) {
     const std::string path = testing::TempDir() + "/exr-header-texture.exr";
     writeBytes(path, withCommentSize(writeExr(path), 0x7ffffff0));
     Scene scene;
     scene.textures.push_back({.name = "huge", .path = path});
     std::vector<std::string> warnings;
-    const TextureFiles images(scene, warnings, {.txCache = "off"});
-    ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_NE(warnings[0].find("texture 'huge'"), std::string::npos) << warnings[0];
-    EXPECT_NE(warnings[0].find("declares 2147483632 bytes"), std::string::npos) << warnings[0];
-    EXPECT_EQ(images.lookup(0, {0.5f, 0.5f}), (Color{1, 1, 1}));
+    try {
+        const TextureFiles images(scene, warnings, {.txCache = "off"});
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("texture 'huge'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("declares 2147483632 bytes"), std::string::npos) << e.what();
+    }
 }

@@ -15,6 +15,7 @@
 
 #include "../unit/render_test_scenes.h"
 #include "accel/naive.h"
+#include "core/error.h"
 #include "render/renderer.h"
 
 using namespace rt;
@@ -287,7 +288,7 @@ TEST(TextureFiles, AMissingPictureIsAWarningAndWhite) {
 
 // OpenImageIO makes an untiled image's MIP levels at its display window's size: a 4 x 4 EXR
 // displayed at 257 x 16,795,137 (found by fuzz_image_texture) asked for 2 GB at the first lookup.
-TEST(TextureFiles, AnUntiledPictureOfAHugeDisplayWindowIsAWarningAndWhite) {
+TEST(TextureFiles, AnUntiledPictureOfAHugeDisplayWindowIsAnInputError) {
     const std::string path = testing::TempDir() + "/huge-display-window.exr";
     OIIO::ImageSpec spec(4, 4, 4, OIIO::TypeDesc::HALF);
     spec.full_width = 257;
@@ -296,11 +297,16 @@ TEST(TextureFiles, AnUntiledPictureOfAHugeDisplayWindowIsAWarningAndWhite) {
     Scene scene;
     scene.textures.push_back({.name = "tall", .path = path});
     std::vector<std::string> warnings;
-    const TextureFiles images(scene, warnings);
-    ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_NE(warnings[0].find("4 x 4 pixels displayed at 257 x 16795137, more than the 1 GiB"), std::string::npos)
-        << warnings[0];
-    EXPECT_EQ(images.lookup(0, {0.5f, 0.5f, 0.01f, 0, 0, 0.01f}), (Color{1, 1, 1}));
+    try {
+        const TextureFiles images(scene, warnings);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("4 x 4 pixels displayed at 257 x 16795137 of 4 channels, 32.2 GiB decoded, "
+                                       "more than the 1.0 GiB an image may take"),
+            std::string::npos)
+            << e.what();
+    }
 }
 
 // ---- Tiled copies (image/tiled_textures.h) -------------------------------------------------
@@ -314,11 +320,12 @@ std::string freshFolder(const std::string& name) {
     return folder;
 }
 
-// The copies in `folder`, sorted; none if it does not exist.
+// The copies in the tx cache `folder`, sorted; none if it does not exist.
 std::vector<std::filesystem::path> copiesIn(const std::string& folder) {
     std::vector<std::filesystem::path> copies;
-    if (std::filesystem::is_directory(folder))
-        for (const auto& entry : std::filesystem::directory_iterator(folder))
+    const std::filesystem::path own = std::filesystem::path(folder) / kTxCopiesFolder;
+    if (std::filesystem::is_directory(own))
+        for (const auto& entry : std::filesystem::directory_iterator(own))
             if (!entry.path().filename().string().starts_with(".")) copies.push_back(entry.path());  // not .lock
     std::sort(copies.begin(), copies.end());
     return copies;

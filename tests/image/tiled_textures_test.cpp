@@ -39,17 +39,18 @@ TextureSource noisePicture(const fs::path& folder, int seed) {
     return source;
 }
 
-// The names in `folder`, sorted.
+// The names in the copies' folder of the tx cache `folder`, sorted.
 std::vector<std::string> namesIn(const fs::path& folder) {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(folder / kTxCopiesFolder))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
 
 std::uintmax_t copiesSize(const fs::path& folder) {
     std::uintmax_t total = 0;
-    for (const auto& entry : fs::directory_iterator(folder))
+    for (const auto& entry : fs::directory_iterator(folder / kTxCopiesFolder))
         if (entry.path().extension() == ".tx" && !entry.path().filename().string().starts_with("."))
             total += entry.file_size();
     return total;
@@ -70,13 +71,14 @@ fs::path leftTemporary(const fs::path& folder, const std::string& name, std::chr
 
 TEST(TiledTextures, TemporariesOfDeadMakersUnchangedForLongAreRemoved) {
     const fs::path folder = freshFolder("tx-stale"), sources = freshFolder("tx-stale-sources");
-    fs::create_directories(folder);
+    const fs::path copies = folder / kTxCopiesFolder;
+    fs::create_directories(copies);
     const std::string dead = "4194305", alive = std::to_string(getpid());  // above Linux's largest PID
-    const fs::path stale = leftTemporary(folder, ".old-0123.rt-tmp-" + dead + "-0.tx", std::chrono::minutes(60));
+    const fs::path stale = leftTemporary(copies, ".old-0123.rt-tmp-" + dead + "-0.tx", std::chrono::minutes(60));
     // Kept: a dead maker's recent one (maybe another machine's, where the id means another
     // process), and a live process's old one.
-    const fs::path recent = leftTemporary(folder, ".new-0123.rt-tmp-" + dead + "-1.tx", std::chrono::minutes(1));
-    const fs::path running = leftTemporary(folder, ".run-0123.rt-tmp-" + alive + "-2.tx", std::chrono::minutes(60));
+    const fs::path recent = leftTemporary(copies, ".new-0123.rt-tmp-" + dead + "-1.tx", std::chrono::minutes(1));
+    const fs::path running = leftTemporary(copies, ".run-0123.rt-tmp-" + alive + "-2.tx", std::chrono::minutes(60));
     const TiledCopy copy = tiledCopy(folder.string(), noisePicture(sources, 1));
     EXPECT_FALSE(fs::exists(stale));
     EXPECT_TRUE(fs::exists(recent));
@@ -125,7 +127,8 @@ TEST(TiledTextures, MakersOfTheSameCopyAtTheSameTimeAllSucceedWithOneCopy) {
     std::vector<std::string> paths;
     for (auto& maker : makers) ASSERT_NO_THROW(paths.push_back(maker.get()));
     for (const std::string& path : paths) EXPECT_EQ(path, paths[0]);
-    EXPECT_EQ(namesIn(folder), (std::vector<std::string>{".lock", fs::path(paths[0]).filename().string()}));
+    EXPECT_EQ(namesIn(folder),
+              (std::vector<std::string>{".lock", ".rt-tx-cache", fs::path(paths[0]).filename().string()}));
     OIIO::ImageBuf copy(paths[0]);
     ASSERT_TRUE(copy.init_spec(paths[0], 0, 0));
     EXPECT_EQ(copy.nmiplevels(), 7);  // 64 texels a side down to 1

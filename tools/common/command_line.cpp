@@ -67,6 +67,14 @@ CLI::Option* addMaxInputOption(CLI::App& app) {
         ->check(numberIn<std::uint64_t>(1, std::uint64_t(1) << 30));
 }
 
+CLI::Option* addMaxMemoryOption(CLI::App& app, std::optional<double>& gigabytes) {
+    return app
+        .add_option("--max-memory", gigabytes,
+                    "Refuse to start work estimated to need more memory than this, in GB (the picture, the scene and "
+                    "tree, textures) [default: 3/4 of the machine's]")
+        ->check(numberIn(0.01, 1e6));
+}
+
 CLI::Option* addSandboxOption(CLI::App& app) {
     return app
         .add_option_function<std::string>(

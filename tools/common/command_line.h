@@ -79,6 +79,9 @@ CLI::Option* addThreadsOption(CLI::App& app, int& threads);
 // --max-input MIB: the largest scene, model file or standard input read (scene/input_file.h).
 CLI::Option* addMaxInputOption(CLI::App& app);
 
+// --max-memory GB: the estimate a run must stay within (render/memory_estimate.h); unset: the default.
+CLI::Option* addMaxMemoryOption(CLI::App& app, std::optional<double>& gigabytes);
+
 // --sandbox DIR: every file the scene names must lie inside DIR (scene/sandbox.h).
 CLI::Option* addSandboxOption(CLI::App& app);
 

@@ -11,9 +11,11 @@
 #include "image/heatmap_png.h"
 #include "image/image_output.h"
 #include "import/load_scene.h"
+#include "inspect/heatmap.h"
 #include "inspect/leaf_boxes_obj.h"
 #include "inspect/tree_dump.h"
 #include "inspect/tree_report.h"
+#include "render/memory_estimate.h"
 #include "tool.h"
 #include "version.h"
 
@@ -132,6 +134,10 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
 
 int runInspection(const InspectOptions& o) {
     checkOptions(o);
+    MemoryEstimate memory;
+    if (!o.heatmapPath.empty()) memory.image = heatmapMemory(o.picture.width, o.picture.height, o.trees.size());
+    checkMemoryLimit(memory, o.maxMemoryGb ? std::uint64_t(*o.maxMemoryGb * 1e9) : defaultMemoryLimit(),
+                     "make the heat map smaller (-x, -y)");  // before the scene is read
     Scene scene = loadScene(o.scenePath);
     scene.dropDescription();
     if (!o.quiet)

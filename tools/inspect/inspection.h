@@ -31,6 +31,7 @@ struct InspectOptions {
     std::string heatmapPath;
     PixelRays heatmapRays = PixelRays::Camera;  // --heatmap-rays camera|all
     HeatmapOptions heatmap;
+    std::optional<double> maxMemoryGb;  // --max-memory GB; default: rt::defaultMemoryLimit()
 };
 
 // Returns the exit code. Throws rt::InputError for bad input, other exceptions for failures.

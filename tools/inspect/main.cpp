@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     rt::tool::addThreadsOption(app, o.picture.threads);
     rt::tool::addMaxInputOption(app);
     rt::tool::addSandboxOption(app);
+    rt::tool::addMaxMemoryOption(app, o.maxMemoryGb);
 
     app.add_flag("--rays", o.rays, "Render the picture (options as rt-render's) and report the work per ray");
     rt::tool::addPictureOptions(app, o.picture);

@@ -201,7 +201,7 @@ Scene loadWithCamera(const RenderOptions& o) {
 // --skip-existing: the output a task wrote before it was requeued is kept if it reads back whole.
 bool outputIsComplete(const RenderOptions& o, const ImageOutputSettings& output, ProgressMode progress) {
     if (output.path == "-") return false;
-    const std::string why = whyNotCompleteImage(output.path, o.render.width, o.render.height, o.render.window());
+    const std::string why = whyNotCompleteImage(output, o.render.width, o.render.height, o.render.window());
     if (why.empty())
         announce(progress, output.path + " is complete: nothing to render (--skip-existing)");
     else if (why != "missing")
@@ -354,9 +354,11 @@ int renderAll(RenderOptions o) {
 
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
-    checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
-    const TextureFiles images(scene, scene.warnings,  // before the warnings are shown: it adds its own
-                              {o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb});
+    const TextureCacheSettings textureCache{o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb};
+    MemoryEstimate memory = estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly);
+    memory.textures = estimateTextureMemory(scene, textureCache);  // before any is read
+    checkMemoryLimit(memory, memoryLimit);
+    const TextureFiles images(scene, scene.warnings, textureCache);  // before the warnings are shown: it adds its own
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;

@@ -51,11 +51,7 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
         ->group(group);
     rt::tool::addMaxInputOption(app)->group(group);
     rt::tool::addSandboxOption(app)->group(group);
-    app.add_option("--max-memory", o.maxMemoryGb,
-                   "Refuse to start a render estimated to need more memory than this, in GB [default: 3/4 of the "
-                   "machine's]")
-        ->check(rt::tool::numberIn(0.01, 1e6))
-        ->group(group);
+    rt::tool::addMaxMemoryOption(app, o.maxMemoryGb)->group(group);
     app.add_option("--texture-cache", o.textureCacheMb,
                    "Memory for image textures, in MB: OpenImageIO keeps the tiles it reads within it")
         ->check(rt::tool::numberIn(1.0, 1e6))
