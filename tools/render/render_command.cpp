@@ -277,7 +277,8 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
         if (stats.samplesPerPixel == 0) throw TimeLimitReached(timeLimitMessage(o.render));
         const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, stats.samplesPerPixel,
                                  stats.renderSeconds};
-        for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
+        for (const ImageOutputSettings& out : frameOutputs)
+            std::cerr << halfClipWarning(out.path, writeImage(image, out, meta));  // even with -q, as below
         std::cerr << nonFiniteWarning(stats);         // even with -q: a replaced sample is never silent
         std::cerr << timeLimitNote(o.render, stats);  // even with -q: the picture has fewer samples than asked
     }
