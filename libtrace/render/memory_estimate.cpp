@@ -30,7 +30,7 @@ void checkMemoryLimit(const MemoryEstimate& e, std::uint64_t limit) {
     if (e.total() <= limit) return;
     throw InputError("rendering needs about " + gigabytes(e.total()) + " (image " + gigabytes(e.image) +
                      ", scene and tree " + gigabytes(e.sceneAndTree) + "), more than --max-memory " + gigabytes(limit) +
-                     "; render the image in regions (--region) or raise --max-memory");
+                     "; render the image in regions (rt-render --region) or raise --max-memory");
 }
 
 }  // namespace rt

@@ -328,7 +328,7 @@ int renderAll(RenderOptions o) {
     const TextureFiles images(scene, scene.warnings,  // before the warnings are shown: it adds its own
                               {o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb});
     if (!o.quiet)
-        for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
+        for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << oneLine(w) << '\n';
     RenderStats stats;
     const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);  // once for every frame
     const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, &images);  // cut-outs, single-sided
