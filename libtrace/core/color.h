@@ -2,6 +2,7 @@
 // and float keeps framebuffers half the size.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
@@ -37,6 +38,20 @@ constexpr Color operator*(float s, const Color& a) { return a * s; }
 constexpr float luminance(const Color& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 inline bool isFinite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
+
+// The largest colour value rt reads (a light's colour, an emission, a material's factor, glTF's
+// and OBJ's colours and intensities) and the largest a camera sample adds to a pixel: 1e15, far
+// beyond any radiance a scene means (the sun's is about 1e9 W/sr/m^2), and far enough below
+// float's 3.4e38 that the sum of a pixel's 2^20 samples and their squared deviations (the
+// variance) stay finite.
+// A double, so that a file's "1e15" is within it; as a float it rounds to a little less.
+inline constexpr double kMaxColorValue = 1e15;
+
+// Each channel held to +-kMaxColorValue (a NaN stays NaN).
+inline Color clampedToMaxColorValue(const Color& c) {
+    const auto clamp = [](float v) { return std::clamp(v, -float(kMaxColorValue), float(kMaxColorValue)); };
+    return {clamp(c.r), clamp(c.g), clamp(c.b)};
+}
 
 inline std::ostream& operator<<(std::ostream& os, const Color& c) {
     return os << '(' << c.r << ", " << c.g << ", " << c.b << ')';

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
@@ -157,7 +158,18 @@ void writeExrWithAovs(const Framebuffer& image, const ImageOutputSettings& s, OI
     writeImageFile(s.path, formatName(ImageFormat::Exr).oiioName, spec, OIIO::TypeDesc::UNKNOWN, pixels.data());
 }
 
-void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
+// Holds every value of `values` to +-kMaxHalfValue (half's +inf otherwise) and counts those it changed.
+std::uint64_t clipToHalfRange(std::vector<float>& values) {
+    std::uint64_t clipped = 0;
+    for (float& v : values) {
+        if (std::abs(v) <= kMaxHalfValue) continue;
+        v = std::copysign(kMaxHalfValue, v);
+        ++clipped;
+    }
+    return clipped;
+}
+
+std::uint64_t writeExr(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
     const ColorPipeline color(s.color);  // resolves and checks the colour space name
     OIIO::ImageSpec spec =
         specFor(image, s.exrPixels == ExrPixelType::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT, s.alpha);
@@ -170,12 +182,15 @@ void writeExr(const Framebuffer& image, const ImageOutputSettings& s, const Imag
     spec.attribute("rt:samplesPerPixel", meta.samplesPerPixel);
     spec.attribute("rt:renderSeconds", float(meta.renderSeconds));
     const Colors which = s.alpha ? Colors::Premultiplied : Colors::OverBackground;
-    const std::vector<float> colors = withAlpha(packedRgb(image, which), image, s.alpha);
+    std::vector<float> colors = withAlpha(packedRgb(image, which), image, s.alpha);
+    const std::uint64_t clipped = s.exrPixels == ExrPixelType::Half ? clipToHalfRange(colors) : 0;
     if (!s.aovs.empty()) {
         if (!image.hasAovs()) throw std::invalid_argument("AOVs asked of a picture rendered without them");
-        return writeExrWithAovs(image, s, spec, colors);
+        writeExrWithAovs(image, s, spec, colors);
+    } else {
+        writeImageFile(s.path, formatName(ImageFormat::Exr).oiioName, spec, OIIO::TypeDesc::FLOAT, colors.data());
     }
-    writeImageFile(s.path, formatName(ImageFormat::Exr).oiioName, spec, OIIO::TypeDesc::FLOAT, colors.data());
+    return clipped;
 }
 
 // The integer type a display-referred file stores: 16 bits where asked and the format has them.
@@ -288,25 +303,33 @@ bool imageFormatWritable(ImageFormat format) {
     return OIIO::ImageOutput::create("probe" + extension) != nullptr;
 }
 
-void writeImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
+std::uint64_t writeImage(const Framebuffer& image, const ImageOutputSettings& s, const ImageMetadata& meta) {
     switch (s.format) {
         case ImageFormat::Null:
-            return;
+            break;
         case ImageFormat::Exr:
             return writeExr(image, s, meta);
         case ImageFormat::Hdr:
         case ImageFormat::Pfm:
-            return writeLinearImage(image, s, meta);
+            writeLinearImage(image, s, meta);
+            break;
         case ImageFormat::Tiff:
-            return s.tiffBits == 32 ? writeLinearImage(image, s, meta) : writeDisplayImage(image, s, meta);
+            if (s.tiffBits == 32)
+                writeLinearImage(image, s, meta);
+            else
+                writeDisplayImage(image, s, meta);
+            break;
         case ImageFormat::Png:
         case ImageFormat::Tga:
         case ImageFormat::Jpeg:
         case ImageFormat::Webp:
-            return writeDisplayImage(image, s, meta);
+            writeDisplayImage(image, s, meta);
+            break;
         case ImageFormat::Text:
-            return writeText(image, s);
+            writeText(image, s);
+            break;
     }
+    return 0;  // float and display-referred files hold every value the renderer makes (kMaxColorValue)
 }
 
 }  // namespace rt

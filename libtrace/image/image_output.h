@@ -5,6 +5,7 @@
 // standard output.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,8 +79,13 @@ struct ImageMetadata {
     double renderSeconds = 0;
 };
 
-// Writes `image` as the settings say. Throws rt::InputError for bad colour settings and
+// The largest value a half-float EXR holds; a larger one would be written as +inf.
+inline constexpr float kMaxHalfValue = 65504.0f;
+
+// Writes `image` as the settings say and returns how many values it had to change to fit: the
+// colour values beyond kMaxHalfValue of a half-float EXR, written as kMaxHalfValue (the tool
+// says so; --exr-pixels float keeps them). Throws rt::InputError for bad colour settings and
 // std::runtime_error when the file cannot be written.
-void writeImage(const Framebuffer& image, const ImageOutputSettings& settings, const ImageMetadata& metadata);
+std::uint64_t writeImage(const Framebuffer& image, const ImageOutputSettings& settings, const ImageMetadata& metadata);
 
 }  // namespace rt

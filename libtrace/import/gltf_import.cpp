@@ -11,6 +11,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/text.h"
@@ -146,6 +147,17 @@ tinygltf::Model loadGltf(const std::string& name, bool binary, const FileAccess&
 double finiteNumber(double v, const std::string& file, const std::string& what) {
     if (!std::isfinite(v)) throw InputError(file + ": " + what + " is not a finite number");
     return v;
+}
+
+// A number of the file within [lowest, highest]: rt's scenes hold each field within its range
+// (docs/conversion.md), and a value beyond it (an ior of 1e300 made a NaN specular) is the
+// file's error, named with its field, whether rt-convert or rt-render reads it.
+double numberWithin(double v, double lowest, double highest, const std::string& file, const std::string& what) {
+    finiteNumber(v, file, what);
+    if (v >= lowest && v <= highest) return v;
+    std::ostringstream message;
+    message << file << ": " << what << " " << v << " is out of range (" << lowest << " to " << highest << ")";
+    throw InputError(message.str());
 }
 
 // A number from an extension object, which tinygltf leaves as untyped JSON values.
@@ -383,13 +395,16 @@ private:
             m.doubleSided = gm.doubleSided;  // false, as glTF's default, when the file leaves it out
             m.colorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture, what + " baseColorTexture");
             m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
+            if (!(std::max({m.emission.r, m.emission.g, m.emission.b}) <= kMaxColorValue))
+                fail(what + ": emissiveFactor times emissiveStrength is beyond 1e15");
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             keepMetallicRoughnessTexture(gm, what, m);
             keepTransmissionTexture(gm, what, m);
             readAlphaMode(gm, what, m);
             m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
             if (m.normalTexture)
-                m.normalScale = float(finiteNumber(gm.normalTexture.scale, file_, what + " normal scale"));
+                m.normalScale = float(numberWithin(gm.normalTexture.scale, -kMaxTextureTransform, kMaxTextureTransform,
+                                                   file_, what + " normal scale"));
         }
         return m;
     }
@@ -426,7 +441,7 @@ private:
     void readAlphaMode(const tinygltf::Material& gm, const std::string& what, Material& m) {
         if (gm.alphaMode != "MASK" && gm.alphaMode != "BLEND") return;
         const bool blend = gm.alphaMode == "BLEND";
-        m.alphaCutoff = blend ? 0.5f : float(finiteNumber(gm.alphaCutoff, file_, what + " alphaCutoff"));
+        m.alphaCutoff = blend ? 0.5f : float(numberWithin(gm.alphaCutoff, 0, 1, file_, what + " alphaCutoff"));
         const std::vector<double>& factor = gm.pbrMetallicRoughness.baseColorFactor;
         if (factor.size() == 4) m.alpha = float(std::clamp(finiteNumber(factor[3], file_, what + " alpha"), 0.0, 1.0));
         m.alphaTexture = m.colorTexture;
@@ -437,8 +452,8 @@ private:
     float emissiveStrength(const tinygltf::Material& gm, const std::string& what) const {
         const auto ext = gm.extensions.find("KHR_materials_emissive_strength");
         if (ext == gm.extensions.end() || !ext->second.Has("emissiveStrength")) return 1;
-        return float(
-            std::max(0.0, numberValue(ext->second.Get("emissiveStrength"), file_, what + " emissiveStrength")));
+        const double strength = numberValue(ext->second.Get("emissiveStrength"), file_, what + " emissiveStrength");
+        return float(numberWithin(std::max(0.0, strength), 0, kMaxColorValue, file_, what + " emissiveStrength"));
     }
 
     // The scene texture for a material's texture reference: an image file beside the model or
@@ -492,19 +507,23 @@ private:
         const auto pair = [&](const char* key, std::array<float, 2>& to) {
             if (!v.Has(key) || !v.Get(key).IsArray() || v.Get(key).ArrayLen() < 2) return;
             for (int i = 0; i < 2; ++i)
-                to[std::size_t(i)] = float(numberValue(v.Get(key).Get(i), file_, what + " " + key));
+                to[std::size_t(i)] = float(transformNumber(v.Get(key).Get(i), what + " " + key));
         };
         pair("offset", t.offset);
         pair("scale", t.scale);
-        if (v.Has("rotation")) t.rotation = float(numberValue(v.Get("rotation"), file_, what + " rotation"));
+        if (v.Has("rotation")) t.rotation = float(transformNumber(v.Get("rotation"), what + " rotation"));
+    }
+
+    double transformNumber(const tinygltf::Value& v, const std::string& what) const {
+        return numberWithin(numberValue(v, file_, what), -kMaxTextureTransform, kMaxTextureTransform, file_, what);
     }
 
     MetallicRoughness metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
         const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
         MetallicRoughness in;
         in.baseColor = color(pbr.baseColorFactor, what + " baseColorFactor");
-        in.metallic = float(finiteNumber(pbr.metallicFactor, file_, what + " metallicFactor"));
-        in.roughness = float(finiteNumber(pbr.roughnessFactor, file_, what + " roughnessFactor"));
+        in.metallic = float(colorValue(pbr.metallicFactor, what + " metallicFactor"));
+        in.roughness = float(colorValue(pbr.roughnessFactor, what + " roughnessFactor"));
         // The texture, which a Phong material cannot follow per hit, usually holds the real
         // values and leaves the factors at 1 (rough metal): take a dielectric of middle roughness.
         if (pbr.metallicRoughnessTexture.index >= 0) {
@@ -513,12 +532,14 @@ private:
         }
         const auto ior = gm.extensions.find("KHR_materials_ior");
         if (ior != gm.extensions.end() && ior->second.Has("ior"))
-            in.ior = float(numberValue(ior->second.Get("ior"), file_, what + " ior"));
+            in.ior = float(numberWithin(numberValue(ior->second.Get("ior"), file_, what + " ior"), 0, kMaxIor, file_,
+                                        what + " ior"));
         const auto specular = gm.extensions.find("KHR_materials_specular");
         if (specular != gm.extensions.end()) {
             const tinygltf::Value& ext = specular->second;
             if (ext.Has("specularFactor"))
-                in.specularFactor = float(numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"));
+                in.specularFactor = float(colorValue(
+                    numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"), what + " specularFactor"));
             if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray())
                 in.specularColor = color(numbers(ext.Get("specularColorFactor"), what), what + " specularColorFactor");
         }
@@ -532,7 +553,8 @@ private:
     // follow it per hit: keepTransmissionTexture()).
     void readTransmission(const tinygltf::Material& gm, MetallicRoughness& in, const std::string& what) const {
         const auto number = [&](const tinygltf::Value& ext, const char* key, float& to) {
-            if (ext.Has(key)) to = float(numberValue(ext.Get(key), file_, what + " " + key));
+            if (ext.Has(key))
+                to = float(colorValue(numberValue(ext.Get(key), file_, what + " " + key), what + " " + key));
         };
         const auto transmission = gm.extensions.find("KHR_materials_transmission");
         if (transmission != gm.extensions.end()) {
@@ -556,8 +578,12 @@ private:
 
     Color color(const std::vector<double>& v, const std::string& what) const {
         if (v.size() < 3) fail(what + " needs 3 numbers");
-        return {float(finiteNumber(v[0], file_, what)), float(finiteNumber(v[1], file_, what)),
-                float(finiteNumber(v[2], file_, what))};
+        return {float(colorValue(v[0], what)), float(colorValue(v[1], what)), float(colorValue(v[2], what))};
+    }
+
+    // A colour channel, factor or intensity: kept within kMaxColorValue either way.
+    double colorValue(double v, const std::string& what) const {
+        return numberWithin(v, -kMaxColorValue, kMaxColorValue, file_, what);
     }
 
     // --camera NAME|INDEX, else the first perspective camera a node places; none for --camera auto.
@@ -611,8 +637,17 @@ private:
                                         std::to_string(aspect));
         }
         const Transform& w = placed.world;
-        Camera camera = viewCamera(w.point(Vec3()), w.vector(Vec3(0, 0, -1)), w.vector(Vec3(0, 1, 0)),
-                                   horizontalFov(yfov, aspect), bounds);
+        const Vec3 forward = w.vector(Vec3(0, 0, -1)), up = w.vector(Vec3(0, 1, 0));
+        // A sheared or degenerate node matrix can turn the view and up directions into one.
+        if (!(length(cross(normalize(forward), normalize(up))) > 1e-6))
+            fail(what + ": its node's matrix makes the view and up directions parallel (sheared or degenerate)");
+        Camera camera = viewCamera(w.point(Vec3()), forward, up, horizontalFov(yfov, aspect), bounds);
+        if (!(camera.fovDegrees && *camera.fovDegrees > 0 && *camera.fovDegrees < 180)) {
+            std::ostringstream message;
+            message << what << ": yfov " << yfov << " and aspectRatio " << aspect
+                    << " make a horizontal fov of 180 degrees or more";
+            fail(message.str());
+        }
         camera.name = cam.name;
         return camera;
     }
@@ -638,7 +673,7 @@ private:
     }
 
     double lightIntensity(const tinygltf::Light& light, int index) const {
-        const double i = finiteNumber(light.intensity, file_, "light " + std::to_string(index) + " intensity");
+        const double i = colorValue(light.intensity, "light " + std::to_string(index) + " intensity");
         if (i < 0) fail("light " + std::to_string(index) + " has a negative intensity");
         return i;
     }

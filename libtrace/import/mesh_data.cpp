@@ -128,7 +128,7 @@ std::uint32_t addTexture(Scene& scene, Texture texture) {
 }
 
 Color fileColor(float r, float g, float b) {
-    const auto channel = [](float v) { return std::isfinite(v) ? std::max(v, 0.0f) : 0.0f; };
+    const auto channel = [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, float(kMaxColorValue)) : 0.0f; };
     return {channel(r), channel(g), channel(b)};
 }
 

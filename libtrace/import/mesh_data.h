@@ -66,7 +66,8 @@ Texture textureBeside(const std::string& modelPath, const std::string& file);
 // Adds a texture to the scene; returns its index.
 std::uint32_t addTexture(Scene& scene, Texture texture);
 
-// A colour read from a file: NaN, infinite and negative channels read as 0.
+// A colour read from a file: NaN, infinite and negative channels read as 0, channels beyond
+// kMaxColorValue (core/color.h) as kMaxColorValue.
 Color fileColor(float r, float g, float b);
 
 // rt's material from the classic Phong parameters of OBJ/MTL and Assimp materials

@@ -129,22 +129,45 @@ Material materialFromMtl(const tinyobj::material_t& mtl) {
     return m;
 }
 
+// The numbers of an option of a map_* line (-o, -s, -bm) within kMaxTextureTransform; if one is
+// beyond it (1e39, which tinyobjloader reads as +inf), the option takes its default and a note:
+// a bad material file is notes, not an error (docs/conversion.md).
+template <std::size_t N>
+std::array<float, N> textureOption(const std::array<float, N>& values, float fallback, const std::string& what,
+                                   std::vector<std::string>& notes) {
+    const auto within = [](float v) { return std::isfinite(v) && std::abs(v) <= kMaxTextureTransform; };
+    if (std::all_of(values.begin(), values.end(), within)) return values;
+    std::ostringstream note;
+    note << what;
+    for (const float v : values) note << " " << v;
+    note << " is out of range (at most 1e6 in magnitude): " << fallback << " used";
+    notes.push_back(note.str());
+    std::array<float, N> defaults;
+    defaults.fill(fallback);
+    return defaults;
+}
+
 // A map_* texture, its file relative to the .obj's folder. OBJ's -o and -s work with v up the
 // image; rt's v runs down (v' = 1 - v), so the v offset becomes 1 - s - o.
-Texture mapTexture(const std::string& file, const tinyobj::texture_option_t& o, const std::string& objPath) {
+Texture mapTexture(const std::string& file, const tinyobj::texture_option_t& o, const std::string& objPath,
+                   std::vector<std::string>& notes) {
     Texture t = textureBeside(objPath, file);
     t.wrapS = t.wrapT = o.clamp ? Texture::Wrap::Clamp : Texture::Wrap::Repeat;
-    t.scale = {float(o.scale[0]), float(o.scale[1])};
-    t.offset = {float(o.origin_offset[0]), float(1 - o.scale[1] - o.origin_offset[1])};
+    const std::string what = "texture " + file + ": ";
+    t.scale = textureOption(std::array{float(o.scale[0]), float(o.scale[1])}, 1, what + "-s", notes);
+    const auto offset =
+        textureOption(std::array{float(o.origin_offset[0]), float(o.origin_offset[1])}, 0, what + "-o", notes);
+    t.offset = {offset[0], 1 - t.scale[1] - offset[1]};
     return t;
 }
 
 // Cut-outs: map_d is a mask (its alpha channel, or its grey); without it, the alpha channel of
 // map_Kd, as McGuire's archive models (scrub-pine) expect. An image without alpha then cuts
 // nothing, and the renderer drops the material from the cut-out test (render/cutout.h).
-void readCutout(const tinyobj::material_t& mtl, const std::string& objPath, Scene& scene, Material& m) {
+void readCutout(const tinyobj::material_t& mtl, const std::string& objPath, ImportResult& out, Material& m) {
     if (!mtl.alpha_texname.empty())
-        m.alphaTexture = addTexture(scene, mapTexture(mtl.alpha_texname, mtl.alpha_texopt, objPath));
+        m.alphaTexture =
+            addTexture(out.scene, mapTexture(mtl.alpha_texname, mtl.alpha_texopt, objPath, out.report.notes));
     else
         m.alphaTexture = m.colorTexture;
     if (m.alphaTexture) m.alphaCutoff = 0.5f;
@@ -152,20 +175,22 @@ void readCutout(const tinyobj::material_t& mtl, const std::string& objPath, Scen
 
 // The normal map: `norm`, else `map_bump` or `bump`, read as a tangent-space normal map in
 // glTF's convention (as Blender writes them), -bm as its scale. A grey height map is not.
-void readNormalMap(const tinyobj::material_t& mtl, const std::string& objPath, Scene& scene, Material& m) {
+void readNormalMap(const tinyobj::material_t& mtl, const std::string& objPath, ImportResult& out, Material& m) {
     const bool norm = !mtl.normal_texname.empty();
     const std::string& file = norm ? mtl.normal_texname : mtl.bump_texname;
     if (file.empty()) return;
     const tinyobj::texture_option_t& o = norm ? mtl.normal_texopt : mtl.bump_texopt;
-    m.normalTexture = addTexture(scene, mapTexture(file, o, objPath));
-    m.normalScale = float(o.bump_multiplier);
+    m.normalTexture = addTexture(out.scene, mapTexture(file, o, objPath, out.report.notes));
+    m.normalScale =
+        textureOption(std::array{float(o.bump_multiplier)}, 1, "texture " + file + ": -bm", out.report.notes)[0];
 }
 
 // The emission map: map_Ke times Ke, as map_Kd is times Kd; a map without Ke (or with Ke 0)
 // glows at the map's own colour: a file that names a map wants it to show (display screens).
-void readEmissionMap(const tinyobj::material_t& mtl, const std::string& objPath, Scene& scene, Material& m) {
+void readEmissionMap(const tinyobj::material_t& mtl, const std::string& objPath, ImportResult& out, Material& m) {
     if (mtl.emissive_texname.empty()) return;
-    m.emissionTexture = addTexture(scene, mapTexture(mtl.emissive_texname, mtl.emissive_texopt, objPath));
+    m.emissionTexture =
+        addTexture(out.scene, mapTexture(mtl.emissive_texname, mtl.emissive_texopt, objPath, out.report.notes));
     if (m.emission == Color{}) m.emission = {1, 1, 1};
 }
 
@@ -377,10 +402,11 @@ private:
         Material m = materialFromMtl(mtl);
         m.name = mtl.name;
         if (!mtl.diffuse_texname.empty())
-            m.colorTexture = addTexture(out_.scene, mapTexture(mtl.diffuse_texname, mtl.diffuse_texopt, path_));
-        readCutout(mtl, path_, out_.scene, m);
-        readNormalMap(mtl, path_, out_.scene, m);
-        readEmissionMap(mtl, path_, out_.scene, m);
+            m.colorTexture =
+                addTexture(out_.scene, mapTexture(mtl.diffuse_texname, mtl.diffuse_texopt, path_, out_.report.notes));
+        readCutout(mtl, path_, out_, m);
+        readNormalMap(mtl, path_, out_, m);
+        readEmissionMap(mtl, path_, out_, m);
         return m;
     }
 

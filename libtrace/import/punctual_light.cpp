@@ -1,5 +1,6 @@
 #include "import/punctual_light.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -29,6 +30,8 @@ Light placeLight(const PunctualLight& in, const Transform& node, double unitScal
         light.color *= float(unitScale * unitScale);
         light.range = Real(in.range * unitScale);
     }
+    if (!(std::max({light.color.r, light.color.g, light.color.b}) <= kMaxColorValue))
+        throw InputError(what + ": its colour times its intensity is beyond 1e15");
     if (in.type == Light::Type::Spot) {
         if (!(0 <= in.innerConeRadians && in.innerConeRadians <= in.outerConeRadians &&
               in.outerConeRadians <= kPi / 2 + 1e-6))

@@ -18,10 +18,11 @@ struct PixelEstimate {
     int hits = 0;  // samples whose camera ray hit something
 
     // Adds one sample; a non-finite one counts as black and the call returns false, so that
-    // the caller can record it (RenderCounters::nonFinite).
+    // the caller can record it (RenderCounters::nonFinite). A finite one beyond kMaxColorValue
+    // (products of bright lights, emitters and factors) is held to it, so that the sums stay finite.
     bool add(const Color& sample, bool hit) {
         const bool finite = isFinite(sample);
-        const Color x = finite ? sample : Color{};
+        const Color x = finite ? clampedToMaxColorValue(sample) : Color{};
         const Color before = runningMean;
         sum += x;
         ++samples;

@@ -29,7 +29,7 @@ void validate(const RenderSettings& s) {
         throw InputError("rendering " + std::to_string(w.width()) + "x" + std::to_string(w.height()) +
                          " pixels at once needs more than " +
                          gigabytes(std::uint64_t(kMaxPixels) * kRenderBytesPerPixel) +
-                         "; render it in regions (--region)");
+                         "; render it in regions (rt-render --region)");
     if (s.reflectionDepth < 0 || s.reflectionDepth > kMaxReflectionDepth)
         throw InputError("reflection depth " + std::to_string(s.reflectionDepth) + " is outside 0-" +
                          std::to_string(kMaxReflectionDepth));

@@ -165,8 +165,8 @@ void Scene::selectCamera(const std::string& nameOrIndex) {
         if (std::to_string(i) == nameOrIndex) return take(*all[i]);
         known += (i ? ", " : "") + std::to_string(i) + (all[i]->name.empty() ? "" : " \"" + all[i]->name + "\"");
     }
-    throw InputError("--camera " + nameOrIndex + ": the scene has no camera of that name or number (it has " + known +
-                     ")");
+    throw InputError("--camera " + nameOrIndex + ": the scene has no camera of that name or number (" +
+                     (all.size() == 1 ? "its one camera: " : "its cameras: ") + known + ")");
 }
 
 }  // namespace rt

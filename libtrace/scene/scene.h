@@ -43,6 +43,17 @@ struct Texture {
     float size = 1;
 };
 
+// The largest offset, scale and rotation of a texture's coordinate transform and the largest
+// normal-map scale, as every reader (XML, glTF's KHR_texture_transform, OBJ's -o, -s and -bm)
+// holds them: a million repeats or radians, where float texture coordinates have long lost every
+// texel; beyond float they made NaN.
+inline constexpr double kMaxTextureTransform = 1e6;
+
+// The farthest from the origin a scene file's loose primitive may reach: a sphere at 1e300 made
+// every ray's squared distance to it infinite and vanished without a word; 1e15 squared still
+// fits a float.
+inline constexpr double kMaxCoordinate = 1e15;
+
 // The glTF metallic-roughness factors the path tracer renders with (docs/path-tracing.md;
 // rt extension). The base colour is the material's colour.
 struct MetallicRoughnessFactors {

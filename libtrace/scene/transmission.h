@@ -28,4 +28,8 @@ struct Transmission {
     bool absorbs() const { return !thin && attenuationDistance < std::numeric_limits<float>::infinity(); }
 };
 
+// The largest index of refraction a reader takes: every material's is below 5 (germanium's, 4.0);
+// an ior of 1e300 became an infinite float and a NaN Fresnel term.
+inline constexpr double kMaxIor = 100;
+
 }  // namespace rt

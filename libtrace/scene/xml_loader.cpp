@@ -3,6 +3,8 @@
 // they may name any material or model of the file.
 #include "scene/xml_loader.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
@@ -36,6 +38,7 @@ Transmission readTransmission(const XmlElement& e) {
     if (t.weight > 1) e.fail("<material> transmission must be between 0 and 1");
     t.color = e.color("transmission_color", t.color);
     if (e.has("ior")) t.ior = float(e.positive("ior"));
+    if (t.ior > kMaxIor) e.fail("<material> ior must be at most 100");
     t.thin = e.boolean("thin", t.thin);
     t.attenuationColor = e.color("attenuation_color", t.attenuationColor);
     if (e.has("attenuation_distance")) t.attenuationDistance = float(e.positive("attenuation_distance"));
@@ -81,7 +84,7 @@ private:
     template <class K>
     void addFrustum(const XmlElement& e, const Transform& toWorld, Real baseRadius, Real topRadius);
     template <class K>
-    void addLoose(const K& primitive, std::uint32_t material);
+    void addLoose(const XmlElement& e, const K& primitive, std::uint32_t material);
     void addPolygon(const XmlElement& e, const Transform& toWorld, std::size_t corners);
     void addInstance(const XmlElement& e, const Transform& toWorld);
     std::uint32_t materialOf(const XmlElement& e);
@@ -213,7 +216,7 @@ void SceneBuilder::readEnvironment(const XmlElement& e, bool& seen) {
     e.requireNoChildren();
     Environment environment;
     environment.intensity = e.nonNegativeFloat("intensity", environment.intensity);
-    environment.rotation = float(e.number("rotation", environment.rotation));
+    environment.rotation = e.floatWithin("rotation", environment.rotation, kMaxTextureTransform);
     scene_.environment = environment;
     environmentTexture_ = TextureUse{0, nullptr, e.string("texture"), e.node()};
 }
@@ -297,7 +300,7 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     readCutout(e, index, m);
     if (const auto name = e.optionalString("normal_texture"))
         textureUses_.push_back({index, &Material::normalTexture, *name, e.node()});
-    m.normalScale = float(e.number("normal_scale", m.normalScale));
+    m.normalScale = e.floatWithin("normal_scale", m.normalScale, kMaxTextureTransform);
     m.doubleSided = e.boolean("double_sided", m.doubleSided);
     scene_.materials.push_back(std::move(m));
 }
@@ -363,11 +366,13 @@ void SceneBuilder::readTexture(const XmlElement& e) {
     const auto pair = [&](const char* attribute, std::array<float, 2> fallback) {
         if (!e.has(attribute)) return fallback;
         const std::vector<Real> v = e.numbers(attribute, 2);
+        if (std::abs(double(v[0])) > kMaxTextureTransform || std::abs(double(v[1])) > kMaxTextureTransform)
+            e.fail("<texture> attribute '" + std::string(attribute) + "' is out of range (at most 1e6 in magnitude)");
         return std::array<float, 2>{float(v[0]), float(v[1])};
     };
     t.offset = pair("offset", t.offset);
     t.scale = pair("scale", t.scale);
-    t.rotation = float(e.number("rotation", 0));
+    t.rotation = e.floatWithin("rotation", 0, kMaxTextureTransform);
     t.colorA = e.color("color_a", t.colorA);
     t.colorB = e.color("color_b", t.colorB);
     if (e.has("size")) t.size = float(e.positive("size"));
@@ -574,7 +579,7 @@ void SceneBuilder::addSphere(const XmlElement& e, const Transform& toWorld) {
     e.requireNoChildren();
     const std::uint32_t material = materialOf(e);
     // Under a non-uniform scale the radius takes the largest stretch, as Scene::flatten does.
-    addLoose(Sphere{place(toWorld, e.xyz(0)), e.number("r") * toWorld.maxScale()}, material);
+    addLoose(e, Sphere{place(toWorld, e.xyz(0)), e.number("r") * toWorld.maxScale()}, material);
 }
 
 // The end centres are transformed; the radii, as a sphere's, take the largest stretch.
@@ -587,11 +592,15 @@ void SceneBuilder::addFrustum(const XmlElement& e, const Transform& toWorld, Rea
     k.top = place(toWorld, {e.number("x1"), e.number("y1"), e.number("z1")});
     k.baseRadius = baseRadius * toWorld.maxScale();
     k.topRadius = topRadius * toWorld.maxScale();
-    addLoose(k, material);
+    addLoose(e, k, material);
 }
 
 template <class K>
-void SceneBuilder::addLoose(const K& primitive, std::uint32_t material) {
+void SceneBuilder::addLoose(const XmlElement& e, const K& primitive, std::uint32_t material) {
+    const Aabb box = primitive.bounds();
+    const Real reach = std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z), std::abs(box.hi.x),
+                                 std::abs(box.hi.y), std::abs(box.hi.z)});
+    if (!(reach <= kMaxCoordinate)) e.fail(e.tag() + " reaches beyond 1e15 from the origin, where no ray can find it");
     if (primitive.degenerate())
         ++dropped_;
     else
@@ -606,13 +615,7 @@ void SceneBuilder::addPolygon(const XmlElement& e, const Transform& toWorld, std
     for (const pugi::xml_node& child : e.node().children()) v.push_back(place(toWorld, readPoint(child)));
     if (v.size() != corners)
         e.fail(e.tag() + " needs " + std::to_string(corners) + " <vertex> elements, not " + std::to_string(v.size()));
-    for (std::size_t i = 2; i < corners; ++i) {
-        const Triangle t{v[0], v[i - 1], v[i]};
-        if (t.degenerate())
-            ++dropped_;
-        else
-            scene_.looseObjects.add<Triangle>(t, material);
-    }
+    for (std::size_t i = 2; i < corners; ++i) addLoose(e, Triangle{v[0], v[i - 1], v[i]}, material);
 }
 
 void SceneBuilder::addInstance(const XmlElement& e, const Transform& toWorld) {

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "core/error.h"
 
@@ -145,7 +146,17 @@ Real XmlElement::nonNegative(const char* attribute, Real fallback) const {
 
 float XmlElement::nonNegativeFloat(const char* attribute, float fallback) const {
     const Real v = nonNegative(attribute, fallback);
-    if (v > std::numeric_limits<float>::max()) fail(tag() + " attribute '" + attribute + "' is too large");
+    if (v > kMaxColorValue) fail(tag() + " attribute '" + attribute + "' is too large (at most 1e15)");
+    return float(v);
+}
+
+float XmlElement::floatWithin(const char* attribute, float fallback, double limit) const {
+    const Real v = number(attribute, fallback);
+    if (std::abs(double(v)) > limit) {
+        std::ostringstream range;
+        range << "-" << limit << " to " << limit;
+        fail(tag() + " attribute '" + attribute + "' is out of range (" + range.str() + ")");
+    }
     return float(v);
 }
 
@@ -182,7 +193,7 @@ Color XmlElement::color(const char* attribute, Color fallback) const {
     const std::vector<Real> v = numbers(attribute, 3);
     if (v[0] < 0 || v[1] < 0 || v[2] < 0) fail(std::string(attribute) + " must not be negative");
     for (const Real x : v)
-        if (x > std::numeric_limits<float>::max()) fail(std::string(attribute) + " is too large");
+        if (x > kMaxColorValue) fail(std::string(attribute) + " is too large (at most 1e15)");
     return {float(v[0]), float(v[1]), float(v[2])};
 }
 

@@ -72,9 +72,11 @@ public:
     // Whitespace-separated numbers, exactly `count` of them.
     std::vector<Real> numbers(const char* attribute, std::size_t count) const;
 
-    // nonNegative() kept as a float (colours, material factors): beyond float's range is an
-    // error here, not +inf in the picture.
+    // nonNegative() kept as a float (colours, material factors): beyond kMaxColorValue
+    // (core/color.h) is an error here, not +inf in the picture.
     float nonNegativeFloat(const char* attribute, float fallback) const;
+    // number() kept as a float whose magnitude is at most `limit` (a texture's transform).
+    float floatWithin(const char* attribute, float fallback, double limit) const;
     // One of the names in `table`; an error naming them all for any other.
     template <class E, std::size_t N>
     E named(const char* attribute, const NamedValues<E, N>& table, E fallback) const {

@@ -58,7 +58,10 @@ done
 "$RT_RENDER" "$WORK/two.xml" "${opts[@]}" -f "$WORK/first.exr"
 if idiff -fail 0 -warn 0 "$WORK/a.exr" "$WORK/first.exr" >/dev/null; then fail "the first camera is not the default"; fi
 expect_exit 2 "$RT_RENDER" "$WORK/two.xml" -q --camera side
-expect_one_error rt-render '--camera side: .*(it has 0 "far", 1 "near")'
+expect_one_error rt-render '--camera side: .*(its cameras: 0 "far", 1 "near")'
+# A scene of one camera says so, not "(it has 0)".
+expect_exit 2 "$RT_RENDER" "$WORK/a.xml" -q --camera 1
+expect_one_error rt-render '--camera 1: .*(its one camera: 0)'
 
 # Bad values are usage errors.
 expect_exit 2 "$RT_RENDER" "$WORK/a.xml" -q --look-from 1,2

@@ -1,15 +1,15 @@
 # A sample that comes out NaN or infinite is written as black, counted in --stats-json and
 # reported once on standard error with the first pixel it hit (even with -q), never written
-# silently: two lights of 3e38 overflow float in the ambient sum of their intensities.
+# silently: a light of 1e15 on a material of colour 1e15 and diffuse 1e15 (each within the
+# loader's bound, render_radiance_limits.sh) overflows float in their product.
 source "$(dirname "$0")/common.bash"
 cat >"$WORK/overflow.xml" <<'XML'
 <scene>
   <camera fov="50"><origin x="0" y="0" z="-5" /><destination x="0" y="0" z="0" /></camera>
-  <materials><material name="white" r="1" g="1" b="1" ambient="0.1" diffuse="0.9" /></materials>
+  <materials><material name="white" r="1e15" g="1e15" b="1e15" ambient="0.1" diffuse="1e15" /></materials>
   <objects><sphere x="0" y="0" z="0" r="1" material="white" /></objects>
   <lights>
-    <light x="0" y="5" z="-5" r="3e38" g="3e38" b="3e38" />
-    <light x="0" y="-5" z="-5" r="3e38" g="3e38" b="3e38" />
+    <light x="0" y="5" z="-5" r="1e15" g="1e15" b="1e15" />
   </lights>
 </scene>
 XML

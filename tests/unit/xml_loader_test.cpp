@@ -458,10 +458,23 @@ const BadScene kBadScenes[] = {
     // Beyond float: too large for the colour in the double build, for any number in the float build.
     {"colour beyond float", sceneWith("<lights>\n<light r=\"1e308\"/></lights>"),
      kFloatGeometry ? "s.xml:4: <light> attribute 'r': '1e308' is not a finite number"
-                    : "s.xml:4: <light> attribute 'r' is too large"},
+                    : "s.xml:4: <light> attribute 'r' is too large (at most 1e15)"},
     {"material factor beyond float", sceneWith("<materials>\n<material name=\"m\" diffuse=\"1e39\"/></materials>"),
      kFloatGeometry ? "s.xml:4: <material> attribute 'diffuse': '1e39' is not a finite number"
-                    : "s.xml:4: <material> attribute 'diffuse' is too large"},
+                    : "s.xml:4: <material> attribute 'diffuse' is too large (at most 1e15)"},
+    // Within float but beyond what a scene may hold (docs/robustness.md, Limits).
+    {"light beyond 1e15", sceneWith("<lights>\n<light r=\"3.4e38\"/></lights>"),
+     "s.xml:4: <light> attribute 'r' is too large (at most 1e15)"},
+    {"texture scale beyond 1e6",
+     sceneWith("<textures>\n<texture name=\"t\" type=\"checker\" scale=\"1 2e6\"/></textures>"),
+     "s.xml:4: <texture> attribute 'scale' is out of range (at most 1e6 in magnitude)"},
+    {"texture rotation beyond 1e6",
+     sceneWith("<textures>\n<texture name=\"t\" type=\"checker\" rotation=\"-2e6\"/></textures>"),
+     "s.xml:4: <texture> attribute 'rotation' is out of range (-1e+06 to 1e+06)"},
+    {"ior beyond 100", sceneWith("<materials>\n<material name=\"m\" transmission=\"1\" ior=\"1e30\"/></materials>"),
+     "s.xml:4: <material> ior must be at most 100"},
+    {"sphere beyond 1e15", sceneWith("<objects>\n<sphere x=\"1e16\" r=\"1\"/></objects>"),
+     "s.xml:4: <sphere> reaches beyond 1e15 from the origin, where no ray can find it"},
     {"transforms nested too deep",
      sceneWith("<objects>\n" + repeated("<translate>", 300) + repeated("</translate>", 300) + "</objects>"),
      "s.xml:4: transforms nested deeper than 256"},

@@ -1,10 +1,16 @@
 #include "command_line.h"
 
 #include <omp.h>
+#include <pthread.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "scene/input_file.h"
 #include "scene/sandbox.h"
 #include "tool.h"
@@ -50,9 +56,37 @@ CLI::Validator positiveNumber() {
         "POSITIVE");
 }
 
+namespace {
+
+// Why `threads` threads cannot all start, or nothing. A thread OpenMP cannot make ends the
+// process with libgomp's own message ("Thread creation failed"), not rt's error line; under an
+// address-space limit (ulimit -v) that happens when their stacks (glibc's default size, which
+// libgomp takes too) do not fit in what the limit leaves, so that is checked first.
+std::string threadStacksProblem(int threads) {
+    rlimit limit{};
+    if (threads <= 1 || getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return {};
+    pthread_attr_t attributes;
+    std::size_t stack = 0;
+    if (pthread_attr_init(&attributes) != 0) return {};
+    pthread_attr_getstacksize(&attributes, &stack);
+    pthread_attr_destroy(&attributes);
+    std::uint64_t pages = 0;  // the address space in use: the first field of statm, in pages
+    std::ifstream("/proc/self/statm") >> pages;
+    const std::uint64_t used = pages * std::uint64_t(sysconf(_SC_PAGESIZE));
+    const std::uint64_t stacks = std::uint64_t(threads - 1) * stack;
+    if (used + stacks <= limit.rlim_cur) return {};
+    return std::to_string(threads) + " threads need " + gigabytes(stacks) + " of address space for their stacks; " +
+           "the limit (ulimit -v) leaves " + gigabytes(limit.rlim_cur > used ? limit.rlim_cur - used : 0) +
+           ": use fewer threads";
+}
+
+}  // namespace
+
 CLI::Option* addThreadsOption(CLI::App& app, int& threads) {
     return app.add_option("--threads", threads, "Threads of the build and the render (default 0: all cores)")
         ->check(numberIn(0, kMaxThreads))
+        ->check(
+            CLI::Validator([](std::string& text) { return threadStacksProblem(std::stoi(text)); }, "", "thread stacks"))
         ->each([](const std::string& text) {
             if (const int n = std::stoi(text); n > 0) omp_set_num_threads(n);
         });

@@ -24,7 +24,22 @@ std::string versionLine(const std::string& toolName) {
 }
 
 void printError(const std::string& toolName, const std::string& message) {
-    std::cerr << toolName << " ERROR: " << message << std::endl;
+    std::cerr << toolName << " ERROR: " << oneLine(message) << std::endl;
+}
+
+std::string oneLine(std::string_view message) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    std::string line;
+    for (std::size_t i = 0; i < message.size(); ++i) {
+        if (message[i] != '\n' && message[i] != '\r') {
+            line += message[i];
+            continue;
+        }
+        while (!line.empty() && blank(line.back())) line.pop_back();
+        while (i + 1 < message.size() && blank(message[i + 1])) ++i;
+        if (!line.empty() && i + 1 < message.size()) line += "; ";
+    }
+    return line;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace rt::tool {
 
@@ -21,7 +22,12 @@ std::string versionLine(const std::string& toolName);
 // is flushed and checked before run returns.
 int run(const std::string& toolName, const std::function<int()>& body);
 
-// Prints "tool ERROR: message" on stderr.
+// Prints "tool ERROR: message" on stderr, on one line (oneLine).
 void printError(const std::string& toolName, const std::string& message);
+
+// `message` as one line: a library's message of several lines (OpenImageIO's, libpng's through
+// it) with each line break and the blanks around it turned into "; ", trailing ones dropped, so
+// that every error and warning is one line, as docs/robustness.md promises.
+std::string oneLine(std::string_view message);
 
 }  // namespace rt::tool

@@ -303,7 +303,8 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
         if (stats.samplesPerPixel == 0) throw TimeLimitReached(timeLimitMessage(o.render));
         const ImageMetadata meta{std::string("rt-render ") + kVersion, o.scenePath, stats.samplesPerPixel,
                                  stats.renderSeconds};
-        for (const ImageOutputSettings& out : frameOutputs) writeImage(image, out, meta);
+        for (const ImageOutputSettings& out : frameOutputs)
+            std::cerr << halfClipWarning(out.path, writeImage(image, out, meta));  // even with -q, as below
         std::cerr << nonFiniteWarning(stats);         // even with -q: a replaced sample is never silent
         std::cerr << timeLimitNote(o.render, stats);  // even with -q: the picture has fewer samples than asked
         std::cerr << endRequestNote(workEndRequested(), o.render, stats);
@@ -360,7 +361,7 @@ int renderAll(RenderOptions o) {
     checkMemoryLimit(memory, memoryLimit);
     const TextureFiles images(scene, scene.warnings, textureCache);  // before the warnings are shown: it adds its own
     if (!o.quiet)
-        for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
+        for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << oneLine(w) << '\n';
     RenderStats stats;
     const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);  // once for every frame
     const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, &images);  // cut-outs, single-sided

@@ -135,7 +135,7 @@ void addAdaptiveOptions(CLI::App& app, rt::RenderSettings& s) {
         ->group(quality);
     app.add_option("--adaptive-threshold", s.adaptiveThreshold,
                    "Largest difference of linear colour (and alpha) between corners that --adaptive interpolates")
-        ->check(CLI::Range(0.0, 1e30))
+        ->check(rt::tool::numberIn(0.0, 1e30))
         ->capture_default_str()
         ->group(quality);
 }
@@ -148,7 +148,7 @@ void addCameraOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--look-at", o.lookAt, "Camera destination X,Y,Z")->group(group);
     app.add_option("--up", o.up, "Camera up vector X,Y,Z")->group(group);
     app.add_option("--fov", o.fov, "Horizontal field of view in degrees (replaces f and zoom)")
-        ->check(CLI::Range(0.0, 180.0))
+        ->check(rt::tool::numberIn(0.0, 180.0))
         ->group(group);
     app.add_flag("--frame", o.frame, "Move the camera along its view to fit the scene's bounding sphere")->group(group);
     app.add_option("--orbit", o.orbit, "Render N frames around the look-at point to -f out_####.png")
@@ -170,7 +170,7 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--exposure", o.color.exposure,
                    "Stops of exposure for PNG, TGA, JPEG, WebP, TIFF, text and the window: 2^EV times the linear "
                    "values before the looks and the view (EXR, HDR, PFM and float TIFF keep the render's values)")
-        ->check(CLI::Range(-64.0, 64.0))
+        ->check(rt::tool::numberIn(-64.0, 64.0))
         ->group(group);
     addNamedOption(app, "--exr-pixels", o.exrPixels, rt::kExrPixelTypeNames, "EXR pixel type")->group(group);
     app.add_option_function<std::string>(

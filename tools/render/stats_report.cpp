@@ -91,6 +91,14 @@ std::string nonFiniteWarning(const RenderStats& s) {
         static_cast<unsigned long long>(n.count), n.firstX, n.firstY);
 }
 
+std::string halfClipWarning(const std::string& path, std::uint64_t clipped) {
+    if (!clipped) return {};
+    return format(
+        "rt-render: warning: %s: %llu values above half float's 65504 written as 65504 (--exr-pixels float "
+        "keeps them)\n",
+        path.c_str(), static_cast<unsigned long long>(clipped));
+}
+
 std::string timeLimitMessage(const RenderSettings& settings) {
     const std::string limit = format("--time-limit %g s", settings.timeLimitSeconds);
     if (settings.integrator == Integrator::Path)

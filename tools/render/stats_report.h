@@ -38,6 +38,9 @@ void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary&
 // black), else nothing.
 std::string nonFiniteWarning(const RenderStats& stats);
 
+// One warning line if writing `path` held `clipped` values to a half-float EXR's range, else nothing.
+std::string halfClipWarning(const std::string& path, std::uint64_t clipped);
+
 // Why a render that --time-limit cut short wrote nothing (RenderStats::samplesPerPixel 0).
 std::string timeLimitMessage(const RenderSettings& settings);
 
