@@ -81,7 +81,7 @@ void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options
         report.lightGenerated = true;
         report.notes.push_back(scene.hasEmissiveMaterial()
                                    ? "no light: added a headlight, a white point light at the camera "
-                                     "(the path tracer lights the model by its emissive materials instead)"
+                                     "(the path tracer lights the model by its emitters instead)"
                                    : "no light: added a headlight, a white point light at the camera");
     }
 }

@@ -72,7 +72,7 @@ for f in 0 1 2 3; do
     m=$(mean "$WORK/orbit_$f.exr")
     above "$m" 0.25 || fail "orbit frame $f is dark (mean $m)"
 done
-# --frame moves the camera too; --no-default-light takes the headlight away (only the ambient
+# --no-default-light takes the headlight away (only the ambient
 # term of no light: black).
 expect_exit 0 "$RT_RENDER" "$WORK/box.obj" "${whitted[@]}" --look-from 0,0,0 --look-at 0,0,-1 --fov 90 \
     --no-default-light -f "$WORK/none.exr"
