@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -125,6 +126,9 @@ private:
 constexpr int kCameraProbes = 8;
 constexpr int kConeProbes = 3;
 
+// The first line of an OpenImageIO error, whose further lines repeat or detail it: a warning is one line.
+std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+
 // The sRGB transfer function, inverted (IEC 61966-2-1).
 float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
@@ -147,7 +151,8 @@ struct TextureFiles::Impl {
     OIIO::TextureSystem* system = nullptr;
     std::string txCache;  // tiled_textures.h; "off" once a copy could not be made
     std::uint64_t txCacheBytes = 0;
-    std::vector<TiledCopy> copies;  // in use: no other render removes them while this one runs
+    std::function<void(const std::string&)> announce;  // TextureCacheSettings::announce
+    std::vector<TiledCopy> copies;                     // in use: no other render removes them while this one runs
     std::vector<Entry> entries;
     // Readers of the embedded images and their bytes, alive as long as the system, which may reopen them.
     std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> memoryReaders;
@@ -206,21 +211,18 @@ struct TextureFiles::Impl {
         Entry e;
         if (t.kind != Texture::Kind::Image) return e;
         if (const std::optional<std::string> why = headerProblem(t)) {
-            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + ": " +
-                               *why + ": white is used");
+            warnUnreadable(t, ": " + *why, warnings);
             return e;
         }
         const OIIO::ustring file = t.embedded ? addEmbedded(t, index) : OIIO::ustring(t.path);
         const OIIO::ImageSpec* spec = system->imagespec(file);
         if (!spec) {
-            warnings.push_back("texture '" + t.name + "': cannot read " + (t.embedded ? "embedded " + t.file : t.path) +
-                               " (" + system->geterror() + "): white is used");
+            warnUnreadable(t, ": cannot read it (" + firstLine(system->geterror()) + ")", warnings);
             return e;
         }
         const OIIO::ImageSpec stored = nativeSpec(*system->imagecache(), file);
         if (const std::optional<std::string> why = refusal(stored)) {
-            warnings.push_back("texture '" + t.name + "': " + (t.embedded ? "embedded " + t.file : t.path) + " " +
-                               *why + ": white is used");
+            warnUnreadable(t, " " + *why, warnings);
             return e;
         }
         e.file = tiled(t, file, stored, warnings);
@@ -235,6 +237,16 @@ struct TextureFiles::Impl {
         // Bilinear: OpenImageIO's default (smart bicubic) blurs a magnified texture with a B-spline.
         e.options.interpmode = OIIO::TextureOpt::InterpBilinear;
         return e;
+    }
+
+    // Files already named in a warning: a picture that several textures use (an OBJ's map in
+    // several materials) is one line, not one per use.
+    std::set<std::string> unreadable;
+
+    // "texture file F<what is wrong>: white is used", once per file.
+    void warnUnreadable(const Texture& t, const std::string& wrong, std::vector<std::string>& warnings) {
+        const std::string file = t.embedded ? "embedded " + t.file : t.path;
+        if (unreadable.insert(file).second) warnings.push_back("texture file " + file + wrong + ": white is used");
     }
 
     // Every channel of the picture `handle` (stored as `spec`) if it is of one colour, as a texel
@@ -263,7 +275,13 @@ struct TextureFiles::Impl {
         if (txCacheOff(txCache) || (spec.tile_width > 0 && levels > 1) || decodedBytes(spec) > kMaxUntiledTextureBytes)
             return file;
         try {
-            TiledCopy copy = tiledCopy(txCache, {t.path, t.embedded, t.file}, txCacheBytes);
+            const auto making = [&] {
+                if (announce)
+                    announce("making a tiled, MIP-mapped copy of " + (t.embedded ? "embedded " + t.file : t.path) +
+                             " (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ") in " +
+                             txCache + ", once for every later render");
+            };
+            TiledCopy copy = tiledCopy(txCache, {t.path, t.embedded, t.file}, txCacheBytes, making);
             const OIIO::ustring path(copy.path());
             if (!system->imagespec(path))
                 throw std::runtime_error("cannot read " + path.string() + ": " + system->geterror());
@@ -309,6 +327,7 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
     impl_->system->attribute("max_memory_MB", cache.megabytes);
     impl_->txCache = cache.txCache;
     impl_->txCacheBytes = std::uint64_t(cache.txCacheMegabytes * 1024 * 1024);
+    impl_->announce = cache.announce;
     impl_->system->attribute("automip", 1);
     for (std::size_t i = 0; i < scene.textures.size(); ++i)
         impl_->entries.push_back(impl_->open(scene.textures[i], i, warnings));

@@ -193,9 +193,11 @@ TiledCopy::~TiledCopy() {
     if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
-TiledCopy tiledCopy(const std::string& folder, const TextureSource& source, std::uint64_t maxBytes) {
+TiledCopy tiledCopy(const std::string& folder, const TextureSource& source, std::uint64_t maxBytes,
+                    const std::function<void()>& beforeMaking) {
     const fs::path target = fs::path(folder) / copyName(source);
     if (std::optional<TiledCopy> existing = openCopy(target)) return std::move(*existing);
+    if (beforeMaking) beforeMaking();
     std::error_code error;
     fs::create_directories(folder, error);
     if (error) throw std::runtime_error("cannot create " + folder + ": " + error.message());

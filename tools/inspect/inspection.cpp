@@ -45,6 +45,17 @@ void checkOptions(const InspectOptions& o) {
     validate(o.picture);  // bounds the pixels, so the heat map cannot ask for more memory than a render
 }
 
+// An output that cannot be written is bad usage, found before the scene is read, as in rt-render.
+void prepareOutputs(const InspectOptions& o) {
+    const bool several = o.trees.size() > 1;
+    for (const AccelKind kind : o.trees) {
+        const std::string name = accelKindName(kind);
+        if (!o.leavesPath.empty()) prepareOutputFile(pathFor(o.leavesPath, name, several));
+        if (o.dumpFormat) prepareOutputFile(pathFor(o.dumpPath, name, several));
+        if (!o.heatmapPath.empty()) prepareOutputFile(pathFor(o.heatmapPath, name, several));
+    }
+}
+
 // Whether something other than the report goes to standard output.
 bool dumpsToStdout(const InspectOptions& o) { return o.leavesPath == "-" || (o.dumpFormat && o.dumpPath == "-"); }
 
@@ -98,6 +109,7 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
     std::cout << "scene " << summary.file << ": ";
     for (const KindCount& k : summary.primitives) std::cout << k.count << ' ' << k.name << ", ";
     std::cout << summary.lights << " lights\n";
+    std::cout << "bounds " << describeBounds(summary.bounds) << "\n";
     if (o.rays) {
         const RenderSettings& p = o.picture;
         std::cout << "rays: " << p.width << "x" << p.height << ", " << p.pixelSamples << " per pixel, shadows "
@@ -132,6 +144,7 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
 
 int runInspection(const InspectOptions& o) {
     checkOptions(o);
+    prepareOutputs(o);
     Scene scene = loadScene(o.scenePath);
     scene.dropDescription();
     if (!o.quiet)

@@ -174,6 +174,7 @@ CameraOverrides cameraOverrides(const RenderOptions& o) {
 Scene loadWithCamera(const RenderOptions& o) {
     ImportOptions import = o.import;
     import.camera = o.camera.value_or("");
+    import.cameraFromCommandLine = o.lookFrom || o.lookAt || o.fov;
     for (const std::string& assignment : o.parameters) {  // a later --set of the same name wins
         auto [name, value] = parseParameterAssignment(assignment);
         import.parameters.insert_or_assign(std::move(name), std::move(value));
@@ -325,7 +326,8 @@ int renderAll(RenderOptions o) {
     scene.dropDescription();
     checkMemoryLimit(estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly), memoryLimit);
     const TextureFiles images(scene, scene.warnings,  // before the warnings are shown: it adds its own
-                              {o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb});
+                              {o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb,
+                               [progress](const std::string& step) { announce(progress, step); }});
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << w << '\n';
     RenderStats stats;
