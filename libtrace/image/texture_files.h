@@ -26,7 +26,7 @@ struct TextureCacheSettings {
     double txCacheMegabytes = kDefaultTxCacheMegabytes;  // the bound on its size (rt-render --tx-cache-size)
     // Told what is being done before each copy is made ("making a tiled copy of ..."), the
     // seconds a first render of a textured model spends before its tree is built; none: silence.
-    std::function<void(const std::string&)> announce;
+    std::function<void(const std::string&)> announce{};
 };
 
 class TextureFiles : public ImageTextures {
