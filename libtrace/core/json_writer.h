@@ -15,7 +15,7 @@ namespace rt {
 
 // The version of the documents' schema (docs/schema/), the first member of every document.
 // It grows when a field is removed or changes its meaning or type; a new field keeps it.
-inline constexpr int kJsonSchemaVersion = 1;
+inline constexpr int kJsonSchemaVersion = 2;
 
 class JsonWriter {
 public:

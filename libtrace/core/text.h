@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rt {
 
@@ -35,6 +36,15 @@ std::optional<std::array<T, N>> parseSeparated(std::string_view text, std::strin
     }
     return values;
 }
+
+// The fewest single-character insertions, deletions and substitutions that turn `a` into `b`
+// (Levenshtein's distance), for "did you mean" in messages about mistyped names.
+std::size_t editDistance(std::string_view a, std::string_view b);
+
+// The name of `names` nearest to `typed` by editDistance, if it is near enough to be what was
+// meant (at most a third of its length changed, and at most 3 characters: a one-letter option is no typo
+// of another), else nothing.
+std::optional<std::string> nearestName(std::string_view typed, const std::vector<std::string>& names);
 
 // "6.4 GB" (decimal gigabytes, one decimal), for messages about memory.
 std::string gigabytes(std::uint64_t bytes);

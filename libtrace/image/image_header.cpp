@@ -81,7 +81,9 @@ ImageHeaderCheck checkHeader(const std::string& name, OIIO::Filesystem::IOProxy*
     const OIIO::ImageSpec spec = in->spec(0, 0);
     if (std::optional<std::string> why = sizeRefusal(spec)) return {.refusal = std::move(why)};
     const bool mipMapped = in->seek_subimage(0, 1);
-    return {.header = {.decodedBytes = std::uint64_t(decodedBytes(spec)),
+    return {.header = {.width = spec.width,
+                       .height = spec.height,
+                       .decodedBytes = std::uint64_t(decodedBytes(spec)),
                        .tiledMipMapped = spec.tile_width > 0 && mipMapped}};
 }
 

@@ -27,6 +27,7 @@ constexpr std::uint64_t kMaxDecodedImageBytes = std::uint64_t(1) << 30;
 
 // What an image's header declares about the memory it takes.
 struct ImageHeader {
+    int width = 0, height = 0;       // its finest level's pixels
     std::uint64_t decodedBytes = 0;  // its finest level, decoded (see kMaxDecodedImageBytes)
     bool tiledMipMapped = false;     // read a tile at a time within the texture cache (a .tx file)
 };

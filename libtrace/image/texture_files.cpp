@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -35,11 +36,6 @@ OIIO::TextureOpt::Wrap wrapOf(Texture::Wrap w) {
 
 // The picture `t` names, as messages name it.
 std::string sourceName(const Texture& t) { return t.embedded ? "embedded " + t.file : t.path; }
-
-// The warning for a texture OpenImageIO cannot read.
-std::string unreadableWarning(const Texture& t, const std::string& why) {
-    return "texture '" + t.name + "': cannot read " + sourceName(t) + " (" + why + "): white is used";
-}
 
 // The image `t` names, checked (image/image_header.h): a refused one is an input error.
 ImageHeaderCheck checkedHeader(const Texture& t) {
@@ -119,7 +115,8 @@ struct TextureFiles::Impl {
     OIIO::TextureSystem* system = nullptr;
     std::string txCache;  // tiled_textures.h; "off" once a copy could not be made
     std::uint64_t txCacheBytes = 0;
-    std::vector<TiledCopy> copies;  // in use: no other render removes them while this one runs
+    std::function<void(const std::string&)> announce;  // TextureCacheSettings::announce
+    std::vector<TiledCopy> copies;                     // in use: no other render removes them while this one runs
     std::vector<Entry> entries;
     // Readers of the embedded images and their bytes, alive as long as the system, which may reopen them.
     std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> memoryReaders;
@@ -179,13 +176,13 @@ struct TextureFiles::Impl {
         if (t.kind != Texture::Kind::Image) return e;
         const ImageHeaderCheck check = checkedHeader(t);
         if (check.unreadable) {
-            warnings.push_back(unreadableWarning(t, *check.unreadable));
+            warnUnreadable(t, *check.unreadable, warnings);
             return e;
         }
         const OIIO::ustring file = t.embedded ? addEmbedded(t, index) : OIIO::ustring(t.path);
         const OIIO::ImageSpec* spec = system->imagespec(file);
         if (!spec) {
-            warnings.push_back(unreadableWarning(t, system->geterror()));
+            warnUnreadable(t, system->geterror(), warnings);
             return e;
         }
         e.file = tiled(t, file, check.header, warnings);
@@ -200,6 +197,18 @@ struct TextureFiles::Impl {
         // Bilinear: OpenImageIO's default (smart bicubic) blurs a magnified texture with a B-spline.
         e.options.interpmode = OIIO::TextureOpt::InterpBilinear;
         return e;
+    }
+
+    // Files already named in a warning: a picture that several textures use (an OBJ's map in
+    // several materials) is one line, not one per use.
+    std::set<std::string> unreadable;
+
+    // "texture file F: cannot read it (why): white is used", once per file (the tools fold a
+    // `why` of several lines, as OpenImageIO's are, into one).
+    void warnUnreadable(const Texture& t, const std::string& why, std::vector<std::string>& warnings) {
+        const std::string file = sourceName(t);
+        if (unreadable.insert(file).second)
+            warnings.push_back("texture file " + file + ": cannot read it (" + why + "): white is used");
     }
 
     // Every channel of the picture `handle` (stored as `spec`) if it is of one colour, as a texel
@@ -225,7 +234,13 @@ struct TextureFiles::Impl {
                         std::vector<std::string>& warnings) {
         if (txCacheOff(txCache) || header.tiledMipMapped) return file;
         try {
-            TiledCopy copy = tiledCopy(txCache, {t.path, t.embedded, t.file}, txCacheBytes);
+            const auto making = [&] {
+                if (announce)
+                    announce("making a tiled, MIP-mapped copy of " + sourceName(t) + " (" +
+                             std::to_string(header.width) + " x " + std::to_string(header.height) + ") in " + txCache +
+                             ", once for every later render");
+            };
+            TiledCopy copy = tiledCopy(txCache, {t.path, t.embedded, t.file}, txCacheBytes, making);
             const OIIO::ustring path(copy.path());
             if (!system->imagespec(path))
                 throw std::runtime_error("cannot read " + path.string() + ": " + system->geterror());
@@ -289,6 +304,7 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
     impl_->system->attribute("max_memory_MB", cache.megabytes);
     impl_->txCache = cache.txCache;
     impl_->txCacheBytes = std::uint64_t(cache.txCacheMegabytes * 1024 * 1024);
+    impl_->announce = cache.announce;
     impl_->system->attribute("automip", 1);
     for (std::size_t i = 0; i < scene.textures.size(); ++i)
         impl_->entries.push_back(impl_->open(scene.textures[i], i, warnings));

@@ -7,6 +7,7 @@
 // linear.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ struct TextureCacheSettings {
     float megabytes = 256;        // OpenImageIO's texture cache (rt-render --texture-cache)
     std::string txCache = "off";  // the folder of tiled copies (rt-render --tx-cache); "off": sources as they are
     double txCacheMegabytes = kDefaultTxCacheMegabytes;  // the bound on its size (rt-render --tx-cache-size)
+    // Told what is being done before each copy is made ("making a tiled copy of ..."), the
+    // seconds a first render of a textured model spends before its tree is built; none: silence.
+    std::function<void(const std::string&)> announce{};
 };
 
 // What opening the scene's image textures takes in memory at most, from their headers

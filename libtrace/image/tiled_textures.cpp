@@ -255,10 +255,12 @@ TiledCopy::~TiledCopy() {
     if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
-TiledCopy tiledCopy(const std::string& folder, const TextureSource& source, std::uint64_t maxBytes) {
+TiledCopy tiledCopy(const std::string& folder, const TextureSource& source, std::uint64_t maxBytes,
+                    const std::function<void()>& beforeMaking) {
     const fs::path own = ownFolder(folder);
     const fs::path target = own / copyName(source);
     if (std::optional<TiledCopy> existing = wholeCopy(target)) return std::move(*existing);
+    if (beforeMaking) beforeMaking();
     removeStaleTemporariesIn(own.string(), kStaleAfter);
     try {
         // make_texture writes a temporary of its own beside the name it is given: both in here.

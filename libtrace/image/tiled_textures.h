@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -72,7 +73,10 @@ private:
 // if missing), for which older copies are removed until the folder's copies fit in `maxBytes`.
 // Throws std::runtime_error saying why when the copy can neither be found nor made (the folder
 // not writable, the source unreadable).
+// `beforeMaking`, if given, is called when a copy is to be made (not when one is found): making
+// it takes about a second per megapixel, which a tool says rather than seem to hang.
 TiledCopy tiledCopy(const std::string& folder, const TextureSource& source,
-                    std::uint64_t maxBytes = std::uint64_t(kDefaultTxCacheMegabytes * 1024 * 1024));
+                    std::uint64_t maxBytes = std::uint64_t(kDefaultTxCacheMegabytes * 1024 * 1024),
+                    const std::function<void()>& beforeMaking = {});
 
 }  // namespace rt

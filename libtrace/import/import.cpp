@@ -1,9 +1,12 @@
 #include "import/import.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string_view>
 #include <vector>
 
@@ -92,6 +95,16 @@ ImportResult importByFormat(const std::string& path, const ImportOptions& option
     return importAssimp(path, options);
 }
 
+// Extensions of the pictures OpenImageIO reads that no importer does: given as a scene, such a
+// file is a slip (an environment map for the model), which Assimp would call an unknown format.
+constexpr std::string_view kImageExtensions[] = {".exr", ".hdr", ".png",  ".jpg", ".jpeg", ".tif", ".tiff", ".tga",
+                                                 ".tx",  ".bmp", ".webp", ".pfm", ".gif",  ".psd", ".dds"};
+
+bool isImageFile(const std::string& path) {
+    const std::string extension = lowerCaseExtension(path);
+    return std::find(std::begin(kImageExtensions), std::end(kImageExtensions), extension) != std::end(kImageExtensions);
+}
+
 // What every import ends with: something to render, its drops noted, a camera and a light.
 ImportResult finishImport(ImportResult result, const std::string& name, const ImportOptions& options) {
     if (result.scene.instances.empty()) throw InputError(name + ": nothing to convert: the scene places no triangles");
@@ -131,6 +144,10 @@ ImportResult importScene(const std::string& path, const ImportOptions& options) 
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a model file");
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+    if (isImageFile(path))
+        throw InputError(path +
+                         ": is an image, not a model or scene (an environment map goes to rt-render "
+                         "--environment; a texture is named by the model's materials)");
     inputFileSize(path);  // refuses a file beyond --max-input before any parser sees it
     return finishImport(importByFormat(path, options), path, options);
 }
@@ -142,6 +159,22 @@ ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportO
         throw InputError(
             name + ": standard input takes a glTF 2.0 model (binary GLB or JSON); give other model files by name");
     return finishImport(importGltfBytes(bytes, name, options), name, options);
+}
+
+std::vector<std::string> unreadableTextureNotes(const Scene& scene) {
+    std::vector<std::string> notes;
+    std::set<std::string> checked;
+    for (const Texture& t : scene.textures) {
+        if (t.kind != Texture::Kind::Image || t.embedded || !checked.insert(t.path).second) continue;
+        std::error_code ec;
+        std::string why;
+        if (std::filesystem::is_directory(t.path, ec))
+            why = "is a directory";
+        else if (std::ifstream(t.path, std::ios::binary).fail())
+            why = std::string("cannot read it (") + std::strerror(errno) + ")";
+        if (!why.empty()) notes.push_back("texture file " + t.path + ": " + why + ": renders white");
+    }
+    return notes;
 }
 
 }  // namespace rt

@@ -31,7 +31,10 @@ struct ImportOptions {
     std::optional<int> scene;  // glTF scene index; default: the file's default scene, else 0
     std::string camera;        // camera name or index; empty: the first perspective camera placed;
                                // kFramingCamera: none of the file's, the generated framing camera
-    double scale = 1;          // uniform factor applied at the root (units)
+    // rt-render --look-from, --look-at or --fov: the command line places the camera, so that a
+    // camera generated for a file without one is no news (no note says so).
+    bool cameraFromCommandLine = false;
+    double scale = 1;  // uniform factor applied at the root (units)
     // The file's up axis as its author knows it (3DS and most CAD exports: Z), whatever the
     // importer does internally; the scene is turned so that it becomes rt's +Y. Unset: the
     // format's own convention (3DS: Z, a Collada file's <up_axis>, otherwise Y).
@@ -98,6 +101,11 @@ ImportResult importScene(const std::string& path, const ImportOptions& options =
 
 // importScene for a model held in memory, read from standard input: GLB or glTF JSON.
 ImportResult importGltfFromStandardInput(const std::string& bytes, const ImportOptions& options);
+
+// One note per image file that the scene's textures name and that cannot be read (missing, a
+// folder, not readable), however many textures use it: what rendering will warn about, said
+// by rt-convert before it writes a scene naming the file.
+std::vector<std::string> unreadableTextureNotes(const Scene& scene);
 
 // The root transform of the options: --up-axis, then --scale. `importerUp` is the up axis
 // the importer already turned to +Y (Assimp's 3DS reader turns Z-up to Y-up, the others

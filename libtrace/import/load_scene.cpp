@@ -1,5 +1,7 @@
 #include "import/load_scene.h"
 
+#include <string_view>
+
 #include "core/error.h"
 #include "core/text.h"
 #include "import/mesh_data.h"
@@ -32,13 +34,25 @@ Scene withOptions(Scene scene, const ImportOptions& options) {
     return scene;
 }
 
-// Standard input holds an XML scene or a glTF 2.0 model (GLB or JSON), told apart by content.
+// Whether `bytes` can be an XML document: '<' first, after blanks and a UTF-8 byte order mark.
+bool looksLikeXml(std::string_view bytes) {
+    if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);
+    const std::size_t first = bytes.find_first_not_of(" \t\r\n");
+    return first != std::string_view::npos && bytes[first] == '<';
+}
+
+// Standard input holds an XML scene or a glTF 2.0 model (GLB or JSON), told apart by content;
+// anything else (an OBJ piped in) is named as such rather than reported as broken XML.
 Scene loadStandardInput(const ImportOptions& options) {
     const std::string bytes = readStandardInput();
     if (looksLikeGltf(bytes)) {
         requireNoParameters("<stdin>", options);
         return flattenedScene(importGltfFromStandardInput(bytes, options));
     }
+    if (!looksLikeXml(bytes))
+        throw InputError(
+            "<stdin>: standard input takes an rt XML scene or a glTF 2.0 model (binary GLB or JSON), "
+            "and this is neither; give other model files by name");
     return withOptions(loadSceneXmlFromString(bytes, "<stdin>", ".", readModelFile, options.parameters), options);
 }
 

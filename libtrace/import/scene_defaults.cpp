@@ -70,8 +70,10 @@ void addMissingCameraAndLight(ImportResult& result, const ImportOptions& options
         const Vec3 eye = sphere.centre + direction * Real(sphere.radius / std::sin(half));
         scene.camera = viewCamera(eye, sphere.centre - eye, Vec3(0, 1, 0), kFov, bounds);
         report.cameraGenerated = true;
-        report.notes.push_back(std::string(options.camera == kFramingCamera ? "--camera auto" : "no usable camera") +
-                               ": made one with a 50 degree fov framing the scene's bounds");
+        if (!options.cameraFromCommandLine)
+            report.notes.push_back(
+                std::string(options.camera == kFramingCamera ? "--camera auto" : "no usable camera") +
+                ": made one with a 50 degree fov framing the scene's bounds");
     }
     if (scene.lights.empty()) {
         Light headlight;

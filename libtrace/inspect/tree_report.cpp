@@ -1,6 +1,8 @@
 #include "inspect/tree_report.h"
 
+#include <cstdio>
 #include <functional>
+#include <utility>
 
 #include "accel/kdtree.h"
 #include "core/json_writer.h"
@@ -127,7 +129,31 @@ void printThesisTable43(std::ostream& out, const std::string& sceneName, const T
 }
 
 SceneSummary summarizeScene(const std::string& path, const Scene& scene) {
-    return {path == "-" ? "<stdin>" : path, scene.primitives.countsPerKind(), std::uint32_t(scene.lights.size())};
+    return {path == "-" ? "<stdin>" : path, scene.primitives.countsPerKind(), std::uint32_t(scene.lights.size()),
+            scene.primitives.bounds()};
+}
+
+std::string describeBounds(const Aabb& box) {
+    if (box.empty()) return "empty";
+    const auto point = [](const Vec3& p) {
+        char text[96];
+        std::snprintf(text, sizeof text, "(%g, %g, %g)", double(p.x), double(p.y), double(p.z));
+        return std::string(text);
+    };
+    return point(box.lo) + " to " + point(box.hi) + ", centre " + point(box.center());
+}
+
+void writeBoundsJson(JsonWriter& json, const Aabb& box) {
+    if (box.empty()) return json.null();
+    json.beginObject();
+    for (const auto& [key, p] :
+         {std::pair{"min", box.lo}, std::pair{"max", box.hi}, std::pair{"centre", box.center()}}) {
+        json.key(key);
+        json.beginArray();
+        for (int axis = 0; axis < 3; ++axis) json.value(double(p[axis]));
+        json.endArray();
+    }
+    json.endObject();
 }
 
 void writeSceneJson(JsonWriter& json, const SceneSummary& scene) {
@@ -135,6 +161,8 @@ void writeSceneJson(JsonWriter& json, const SceneSummary& scene) {
     json.member("file", scene.file);
     for (const KindCount& k : scene.primitives) json.member(k.name, k.count);
     json.member("lights", scene.lights);
+    json.key("bounds");
+    writeBoundsJson(json, scene.bounds);
     json.endObject();
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel/settings.h"
+#include "core/aabb.h"
 #include "core/json_writer.h"
 #include "geometry/primitives.h"
 #include "inspect/depth_histogram.h"
@@ -29,7 +30,15 @@ struct SceneSummary {
     std::string file;
     std::vector<KindCount> primitives;  // per kind, in the list's order
     std::uint32_t lights = 0;
+    Aabb bounds;  // of every primitive, in world space: where a camera can be put (empty: none)
 };
+
+// "(x0, y0, z0) to (x1, y1, z1), centre (x, y, z)", six significant digits, as `assimp info`
+// gives a scene's extent; "empty" for an empty box.
+std::string describeBounds(const Aabb& box);
+
+// {"min": [x, y, z], "max": [x, y, z], "centre": [x, y, z]}, or null for an empty box.
+void writeBoundsJson(JsonWriter& json, const Aabb& box);
 
 // The summary of `scene`, read from `path` ("-" is reported as "<stdin>").
 SceneSummary summarizeScene(const std::string& path, const Scene& scene);
@@ -48,7 +57,7 @@ void writeReportJson(std::ostream& out, const SceneSummary& scene, const std::op
 
 // The objects rt-inspect --json and rt-render --stats-json share, so that a quantity has one
 // name and one shape in both (docs/json.md):
-// {"file", one count per primitive kind ("triangles", ...), "lights"}
+// {"file", one count per primitive kind ("triangles", ...), "lights", "bounds"}
 void writeSceneJson(JsonWriter& json, const SceneSummary& scene);
 // {"width", "height", "region", "pixelSamples", "reflectionDepth", "shadows", "softShadows",
 // "glossyReflections", "distributedSamples"}

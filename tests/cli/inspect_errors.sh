@@ -36,13 +36,17 @@ sed 's|<destination x="0" y="0" z="20" />|<destination x="0" y="0" z="0" />|' "$
 expect_error 2 --rays "$WORK/blind.xml"
 grep -q "camera" "$WORK/stderr" || fail "camera error not explained: $(cat "$WORK/stderr")"
 
-# An output that cannot be written is a runtime failure, and leaves nothing behind.
-expect_error 1 --dump-leaves "$WORK/no/such/dir/leaves.obj" "$WORK/one_sphere.xml"
-expect_error 1 --heatmap "$WORK/no/such/dir/heat.png" -x 40 -y 30 "$WORK/one_sphere.xml"
+# An output that cannot be written is bad usage, as in rt-render and rt-convert, found before the
+# scene is read (tools_unwritable_output.sh), and leaves nothing behind; missing folders are made.
+touch "$WORK/file"
+expect_error 2 --dump-leaves "$WORK/file/dir/leaves.obj" "$WORK/one_sphere.xml"
+expect_error 2 --heatmap "$WORK/file/dir/heat.png" -x 40 -y 30 "$WORK/one_sphere.xml"
+expect_exit 0 "$RT_INSPECT" --dump-leaves "$WORK/new/dir/leaves.obj" "$WORK/one_sphere.xml"
+[ -s "$WORK/new/dir/leaves.obj" ] || fail "--dump-leaves into a missing folder wrote nothing"
 echo "old" >"$WORK/keep.obj"
 chmod a-w "$WORK"
 if [ ! -w "$WORK" ]; then  # root can write anyway; then this part says nothing
-    expect_error 1 --dump-leaves "$WORK/keep.obj" "$WORK/one_sphere.xml"
+    expect_error 2 --dump-leaves "$WORK/keep.obj" "$WORK/one_sphere.xml"
     [ "$(cat "$WORK/keep.obj")" = "old" ] || fail "a failed write changed the old file"
 fi
 chmod u+w "$WORK"

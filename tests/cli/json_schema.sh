@@ -52,9 +52,12 @@ o = d["options"]
 assert d["frame"] == int(sys.argv[2]), d["frame"]
 assert d["rtVersion"] == sys.argv[3], d["rtVersion"]
 assert d["commandLine"][1:5] == [d["scene"]["file"], "-x", "32", "-y"], d["commandLine"]
-assert (o["supersample"], o["seed"], o["orbit"], o["width"]) == ("2", "7", "2", "32"), o
+# Typed as the options are: numbers, booleans, lists of strings, names; never a number as a string.
+assert (o["supersample"], o["seed"], o["orbit"], o["width"]) == (2, 7, 2, 32), o
 assert o["file"] == [sys.argv[1].rsplit("/", 1)[0] + "/o_#.png", sys.argv[1].rsplit("/", 1)[0] + "/o_#.exr"], o["file"]
-assert (o["depth"], o["shadows"], o["region"]) == ("5", "false", None), o   # defaults, a flag, nothing
+assert (o["depth"], o["shadows"], o["region"], o["set"]) == (5, False, None, []), o   # defaults, a flag, nothing
+assert (o["accel"], o["adaptive-threshold"], o["quiet"]) == ("kd", 0.02, True), o
+assert not any(isinstance(v, str) and v.lstrip("-").replace(".", "", 1).isdigit() for v in o.values()), o
 assert d["picture"]["seed"] == 7 and d["peakMemoryBytes"] > 1 << 20, d
 PY
 done
@@ -88,6 +91,8 @@ valid convertSummary "$WORK"/convert_*.json
 invalid renderStats "$WORK/render1.json" 'd["rays"]["cameraRays"] = str(d["rays"]["cameraRays"])'
 invalid renderStats "$WORK/render1.json" 'd["picture"]["maxDepth"] = 5'
 invalid renderStats "$WORK/render1.json" 'del d["version"]'
+invalid renderStats "$WORK/render1.json" 'd["options"]["width"] = str(d["options"]["width"])'
+invalid renderStats "$WORK/render1.json" 'd["options"]["file"] = "[]"'
 invalid renderStats "$WORK/render1.json" 'd["trees"] = []'
 invalid inspectReport "$WORK/inspect_all.json" 'd["trees"][1]["settings"]["maxDepth"] = "auto"'
 invalid inspectReport "$WORK/inspect_all.json" 'd["trees"][0]["settings"]["traversalCost"] = 2'

@@ -69,4 +69,13 @@ expect_one_error rt-render "--look-from: expected X,Y,Z"
 expect_exit 2 "$RT_RENDER" "$WORK/a.xml" -q --look-at 3,2,-9 --look-from 3,2,-9
 expect_one_error rt-render "origin and destination are the same point"
 expect_exit 2 "$RT_RENDER" "$WORK/a.xml" -q --fov 180
+# A model without a camera gets one framing it, and a note says so, unless --look-from, --look-at
+# or --fov place the camera: then the note would speak of a camera not used (issue 36, item 9).
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$WORK/nocamera.obj"
+expect_exit 0 "$RT_RENDER" "$WORK/nocamera.obj" -x 8 -y 6 --progress none
+grep -q "warning: no usable camera: made one" "$WORK/stderr" || fail "no note on the generated camera: $(cat "$WORK/stderr")"
+for placed in "--look-from 0.3,0.3,3" "--look-at 0.3,0.3,0" "--fov 30" "--look-from 0.3,0.3,3 --look-at 0.3,0.3,0"; do
+    expect_exit 0 "$RT_RENDER" "$WORK/nocamera.obj" -x 8 -y 6 --progress none $placed
+    grep -q "usable camera" "$WORK/stderr" && fail "$placed: a note on a camera it replaced: $(cat "$WORK/stderr")"
+done
 echo "render_camera: ok"

@@ -27,6 +27,17 @@ copy=$(find "$WORK/tx" -name '*.tx')
 touch -d '2000-01-01' "$copy"
 render again --tx-cache "$WORK/tx"
 [ "$(stat -c %Y "$copy")" = "$(date -d 2000-01-01 +%s)" ] || fail "the copy was made again"
+# Making a copy is said on standard error (it takes seconds for a large picture), once: not when
+# the copy is found, and not with -q (issue 36, item 15).
+made="rt-render: making a tiled, MIP-mapped copy of $WORK/checker.png (16 x 16) in $WORK/said, once for every later render"
+said() { expect_exit 0 "$RT_RENDER" "$WORK/square.obj" -x 40 -y 30 -f "$WORK/said.png" "$@"; }
+said --tx-cache "$WORK/said" --progress lines
+grep -qxF "$made" "$WORK/stderr" || fail "no line saying the copy is made: $(cat "$WORK/stderr")"
+said --tx-cache "$WORK/said" --progress lines
+grep -q "making a tiled" "$WORK/stderr" && fail "the copy was found, yet said to be made: $(cat "$WORK/stderr")"
+said --tx-cache "$WORK/quiet" -q
+[ "$(copies "$WORK/quiet")" = 1 ] || fail "-q made no copy"
+grep -q "making a tiled" "$WORK/stderr" && fail "-q said it: $(cat "$WORK/stderr")"
 RT_TX_CACHE="$WORK/env" render fromEnv
 [ "$(copies "$WORK/env")" = 1 ] || fail "\$RT_TX_CACHE: no copy in $WORK/env"
 render fallback --tx-cache "$WORK/checker.png/tx"

@@ -278,12 +278,28 @@ TEST(TextureFiles, WrapModesRepeatClampAndMirror) {
 
 TEST(TextureFiles, AMissingPictureIsAWarningAndWhite) {
     Scene scene;
-    scene.textures.push_back({.name = "gone", .path = testing::TempDir() + "/no-such-picture.png"});
+    const std::string path = testing::TempDir() + "/no-such-picture.png";
+    scene.textures.push_back({.name = "gone", .path = path});
     std::vector<std::string> warnings;
     const TextureFiles images(scene, warnings);
     ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_NE(warnings[0].find("texture 'gone': cannot read"), std::string::npos) << warnings[0];
+    EXPECT_EQ(warnings[0].rfind("texture file " + path + ": cannot read it (", 0), 0u) << warnings[0];
     EXPECT_EQ(images.lookup(0, {0.5f, 0.5f}), (Color{1, 1, 1}));
+}
+
+// An OBJ's map named by several materials is several textures of one file: one warning, of one
+// line (OpenImageIO's error text has a second line), not one per texture.
+TEST(TextureFiles, AMissingPictureUsedThriceIsOneWarningOfOneLine) {
+    Scene scene;
+    const std::string path = testing::TempDir() + "/no-such-picture-either.jpg";
+    for (const char* name : {"a", "b", "c"}) scene.textures.push_back({.name = name, .path = path});
+    scene.textures.push_back({.name = "d", .path = testing::TempDir() + "/nor-this.jpg"});
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings, {.txCache = "off"});
+    ASSERT_EQ(warnings.size(), 2u);
+    for (const std::string& warning : warnings) EXPECT_EQ(warning.find('\n'), std::string::npos) << warning;
+    EXPECT_NE(warnings[0].find(path), std::string::npos) << warnings[0];
+    for (std::uint32_t i = 0; i < 4; ++i) EXPECT_EQ(images.lookup(i, {0.5f, 0.5f}), (Color{1, 1, 1}));
 }
 
 // OpenImageIO makes an untiled image's MIP levels at its display window's size: a 4 x 4 EXR

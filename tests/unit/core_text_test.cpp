@@ -1,4 +1,4 @@
-// ASCII lower case for names and extensions (core/text.h).
+// ASCII lower case for names and extensions, numbers in option values, names near a typo (core/text.h).
 #include <gtest/gtest.h>
 
 #include "core/text.h"
@@ -28,6 +28,25 @@ TEST(CoreText, ParseSeparatedReadsExactlyTheNumbersAsked) {
     for (const char* bad : {"1.5/2", "1/", "/2", "1/2/3", "99999999999/1", "1-2"})
         EXPECT_FALSE((parseSeparated<int, 2>(bad, "/"))) << bad;
     EXPECT_FALSE((parseSeparated<int, 1>("1..2", "..")));
+}
+
+TEST(CoreText, EditDistanceCountsSingleCharacterEdits) {
+    EXPECT_EQ(editDistance("", ""), 0u);
+    EXPECT_EQ(editDistance("width", "width"), 0u);
+    EXPECT_EQ(editDistance("", "abc"), 3u);
+    EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+    EXPECT_EQ(editDistance("--widht", "--width"), 2u);  // a transposition is two substitutions
+    EXPECT_EQ(editDistance("--treads", "--threads"), 1u);
+}
+
+TEST(CoreText, NearestNameSuggestsOnlyWhatIsNearEnough) {
+    const std::vector<std::string> names{"--width", "--height", "--threads", "--seed"};
+    EXPECT_EQ(nearestName("--widht", names), "--width");
+    EXPECT_EQ(nearestName("--treads", names), "--threads");
+    EXPECT_EQ(nearestName("--heigth", names), "--height");
+    EXPECT_FALSE(nearestName("--no-such-option", names));
+    EXPECT_FALSE(nearestName("-x", {"-y"}));              // one letter for another is no typo
+    EXPECT_EQ(nearestName("--fob", {"--fov"}), "--fov");  // a third of five characters: one edit
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -17,17 +19,68 @@
 
 namespace rt::tool {
 
+namespace {
+
+// Every name `app`'s options answer to, with their dashes: "-x", "--width", ...
+std::vector<std::string> optionNames(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options()) {
+        for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    }
+    return names;
+}
+
+// What was left over, in the order given (CLI11's own message reverses it), with the option
+// meant where an unknown one is near a known one's name ("--widht": "did you mean --width?").
+std::string leftOverMessage(const CLI::App& app) {
+    const std::vector<std::string> left = app.remaining();
+    std::string message = std::string(left.size() > 1 ? "The following arguments were not expected: "
+                                                      : "The following argument was not expected: ") +
+                          CLI::detail::join(left, " ");
+    const auto unknown = std::find_if(left.begin(), left.end(), [](const std::string& word) {
+        return word.size() > 1 && word[0] == '-' && !std::isdigit(static_cast<unsigned char>(word[1]));
+    });
+    if (unknown == left.end()) return message;
+    const std::string typed = unknown->substr(0, unknown->find('='));  // --widht=100 means --widht
+    if (const std::optional<std::string> meant = nearestName(typed, optionNames(app)))
+        message += "; did you mean " + *meant + "?";
+    return message;
+}
+
+// Whether CLI11 reads `option`'s value as a number (its type names are INT, UINT, FLOAT, NUMBER,
+// followed by any check's description).
+bool takesNumber(const CLI::Option& option) {
+    const std::string type = option.get_type_name();
+    return type.starts_with("INT") || type.starts_with("UINT") || type.starts_with("FLOAT") ||
+           type.starts_with("NUMBER");
+}
+
+OptionValue::Type typeOf(const CLI::Option& option, const std::vector<std::string>& values) {
+    if (option.get_items_expected_max() > 1) return OptionValue::Type::List;
+    // A flag is true or false; one with a value (--adaptive=GRID) holds a number.
+    const bool truth = values.size() == 1 && (values[0] == "true" || values[0] == "false");
+    if (option.get_items_expected_max() == 0 && truth) return OptionValue::Type::Boolean;
+    if (option.get_items_expected_max() == 0 || takesNumber(option)) return OptionValue::Type::Number;
+    return OptionValue::Type::Text;
+}
+
+}  // namespace
+
 std::optional<int> parseCommandLine(CLI::App& app, const std::string& toolName, int argc, char** argv) {
-    app.failure_message(
-        [toolName](const CLI::App*, const CLI::Error& e) { return toolName + " ERROR: " + e.what() + "\n"; });
+    // A mistake on the command line ends with the pointer to the options (docs/rt-render.md).
+    app.failure_message([toolName](const CLI::App*, const CLI::Error& e) {
+        return toolName + " ERROR: " + e.what() + " (" + toolName + " --help lists the options)\n";
+    });
     try {
         app.parse(argc, argv);
         return std::nullopt;
     } catch (const CLI::ParseError& e) {
         // CLI11 checks required arguments and values before it looks at what is left over.
         const bool isError = e.get_exit_code() != int(CLI::ExitCodes::Success);
-        const int code =
-            isError && !app.remaining().empty() ? app.exit(CLI::ExtrasError(app.remaining())) : app.exit(e);
+        const int code = isError && !app.remaining().empty()
+                             ? app.exit(CLI::ExtrasError(leftOverMessage(app), CLI::ExitCodes::ExtrasError))
+                             : app.exit(e);
         return code == 0 ? kExitOk : kExitBadInput;
     }
 }
@@ -38,9 +91,12 @@ OptionValues optionValues(const CLI::App& app) {
         const std::string name = option->get_single_name();
         if (name == "help" || name == "version") continue;
         std::vector<std::string> given = option->reduced_results();
-        if (given.empty() && !option->get_default_str().empty()) given.push_back(option->get_default_str());
-        if (given.empty() && option->get_expected_min() == 0) given.push_back("false");  // a flag not given
-        values.emplace_back(name, std::move(given));
+        const std::string fallback = option->get_default_str();
+        const bool list = option->get_items_expected_max() > 1;
+        if (given.empty() && !fallback.empty() && !(list && fallback == "[]")) given.push_back(fallback);
+        if (given.empty() && !list && option->get_expected_min() == 0) given.push_back("false");  // a flag not given
+        const OptionValue::Type type = typeOf(*option, given);
+        values.push_back({name, type, std::move(given)});
     }
     return values;
 }

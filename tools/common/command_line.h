@@ -25,15 +25,27 @@ inline constexpr const char* kDoubleSidedHelp =
     "Make every material two-sided, whatever the file says (glTF doubleSided false): for a model whose triangles "
     "face inwards and that renders inside out";
 
+// The scene argument of rt-render and rt-inspect, which read it the same way (import/load_scene.h).
+inline constexpr const char* kSceneHelp = "Scene: rt XML (- reads standard input) or any model rt-convert reads";
+
 // Parses the command line. Returns the exit code when the tool must stop (0 after --help or
 // --version, 2 after a parse error, printed as "tool ERROR: what"), nothing when it runs.
 // An unknown argument is reported before anything else: "--treads 2" is a typo, and a
 // missing scene or a bad value reported instead of it would send the user the wrong way.
 std::optional<int> parseCommandLine(CLI::App& app, const std::string& toolName, int argc, char** argv);
 
+// One option's value as a statistics record keeps it (--stats-json), typed as the option is:
+// a flag is a boolean, a number a number, an option given several times (-f) a list.
+struct OptionValue {
+    enum class Type { Boolean, Number, Text, List };
+    std::string name;  // the long name, without dashes
+    Type type = Type::Text;
+    std::vector<std::string> values;  // the command line's words, else the default; empty: neither
+};
+using OptionValues = std::vector<OptionValue>;
+
 // Every option of `app` after parsing, by its long name, with the values the command line gave it,
-// else its default, else none (a flag: "false"): what a statistics record needs to repeat a run.
-using OptionValues = std::vector<std::pair<std::string, std::vector<std::string>>>;
+// else its default, else none (a flag: false): what a statistics record needs to repeat a run.
 OptionValues optionValues(const CLI::App& app);
 
 // A validator for a number from `lowest` to `highest` (inclusive) that T holds.

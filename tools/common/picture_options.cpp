@@ -21,7 +21,8 @@ void addPictureOptions(CLI::App& app, RenderSettings& s) {
     app.add_flag("-s,--shadows", s.shadows, "Shadows: a shadow ray to each light")->group(rendering);
 
     const char* quality = "Image quality options";
-    app.add_option("-S,--supersample", s.pixelSamples, "Stochastic supersampling: rays per pixel on a jittered grid")
+    app.add_option("-S,--supersample,--spp", s.pixelSamples,
+                   "Stochastic supersampling: rays (the path tracer's paths) per pixel on a jittered grid")
         ->check(numberIn(1, kMaxSamples))
         ->group(quality);
     app.add_option_function<std::string>(

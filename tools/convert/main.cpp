@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "command_line.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/text.h"
 #include "import/import.h"
@@ -46,8 +47,10 @@ int convert(Options& o) {
         throw rt::InputError(o.output +
                              ": rt-convert writes rt's XML scene only: name it .xml, or - for standard output");
     if (!o.upAxis.empty()) o.import.upAxis = rt::parseNamed(rt::kUpAxisNames, o.upAxis);
-    const rt::ImportResult result =
-        o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
+    // An output that cannot be written is bad usage, found before the model is read, as in rt-render.
+    if (!o.output.empty()) rt::prepareOutputFile(o.output);
+    rt::ImportResult result = o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
+    for (std::string& note : rt::unreadableTextureNotes(result.scene)) result.report.notes.push_back(std::move(note));
     if (!o.output.empty()) rt::saveSceneXml(result.scene, o.output);  // all or nothing (core/atomic_file.h)
     const rt::tool::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
     if (!o.quiet) rt::tool::convert::printSummary(std::cerr, summary);
@@ -60,7 +63,13 @@ int convert(Options& o) {
 int main(int argc, char** argv) {
     CLI::App app{
         "Converts a 3-D model (glTF, OBJ, 3DS and what else Assimp reads) to the rt XML+RAW scene format.\n"
-        "Without -o nothing is written: the file is checked and summarised."};
+        "Without -o nothing is written: the file is checked and summarised.\n"
+        "Examples:\n"
+        "  rt-convert model.glb                           check and summarise, write nothing\n"
+        "  rt-convert model.obj -o model.xml              the scene, its RAW models in model/\n"
+        "  rt-convert room.3ds --up-axis z --camera auto -o room.xml\n"
+        "  rt-convert --generate ships -o ships.xml       a test scene of the thesis\n"
+        "  cat model.glb | rt-convert - --json -q         the summary as JSON\n"};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-convert"));
     Options o;
     app.add_option("input", o.input,

@@ -1,6 +1,8 @@
 #include "summary.h"
 
 #include "core/json_writer.h"
+#include "import/scene_defaults.h"
+#include "inspect/tree_report.h"
 
 namespace rt::tool::convert {
 namespace {
@@ -26,6 +28,7 @@ void printSummary(std::ostream& out, const Summary& s) {
     out << "rt-convert: " << s.input << " (" << r.format << ")" << (s.output.empty() ? "" : " -> " + s.output) << "\n"
         << "  meshes     " << r.meshes << " placed, " << scene.models.size() << " models (one RAW each)\n"
         << "  triangles  " << c.modelTriangles << " in the models, " << c.sceneTriangles << " in the scene\n"
+        << "  bounds     " << describeBounds(sceneBounds(scene)) << "\n"
         << "  instances  " << scene.instances.size() << "\n"
         << "  materials  " << scene.materials.size() << "\n"
         << "  cameras    " << r.camerasInFile << " in the file, "
@@ -49,6 +52,8 @@ void printSummaryJson(std::ostream& out, const Summary& s) {
     json.member("models", scene.models.size());
     json.member("modelTriangles", c.modelTriangles);
     json.member("sceneTriangles", c.sceneTriangles);
+    json.key("bounds");
+    writeBoundsJson(json, sceneBounds(scene));
     json.member("instances", scene.instances.size());
     json.member("materials", scene.materials.size());
     json.key("cameras");

@@ -51,6 +51,17 @@ void checkOptions(const InspectOptions& o) {
 // a scene file of spheres and more (a 16.5 MB glTF's KD tree: 372 MB), which nobody expects.
 constexpr std::streamoff kLargeDumpBytes = 10'000'000;
 
+// An output that cannot be written is bad usage, found before the scene is read, as in rt-render.
+void prepareOutputs(const InspectOptions& o) {
+    const bool several = o.trees.size() > 1;
+    for (const AccelKind kind : o.trees) {
+        const std::string name = accelKindName(kind);
+        if (!o.leavesPath.empty()) prepareOutputFile(pathFor(o.leavesPath, name, several));
+        if (o.dumpFormat) prepareOutputFile(pathFor(o.dumpPath, name, several));
+        if (!o.heatmapPath.empty()) prepareOutputFile(pathFor(o.heatmapPath, name, several));
+    }
+}
+
 // Whether something other than the report goes to standard output.
 bool dumpsToStdout(const InspectOptions& o) { return o.leavesPath == "-" || (o.dumpFormat && o.dumpPath == "-"); }
 
@@ -110,6 +121,7 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
     std::cout << "scene " << summary.file << ": ";
     for (const KindCount& k : summary.primitives) std::cout << k.count << ' ' << k.name << ", ";
     std::cout << summary.lights << " lights\n";
+    std::cout << "bounds " << describeBounds(summary.bounds) << "\n";
     if (o.rays) {
         const RenderSettings& p = o.picture;
         std::cout << "rays: " << p.width << "x" << p.height << ", " << p.pixelSamples << " per pixel, shadows "
@@ -144,6 +156,7 @@ void printReport(const InspectOptions& o, const SceneSummary& summary, const std
 
 int runInspection(const InspectOptions& o) {
     checkOptions(o);
+    prepareOutputs(o);
     MemoryEstimate memory;
     if (!o.heatmapPath.empty()) memory.image = heatmapMemory(o.picture.width, o.picture.height, o.trees.size());
     checkMemoryLimit(memory, o.maxMemoryGb ? std::uint64_t(*o.maxMemoryGb * 1e9) : defaultMemoryLimit(),

@@ -21,14 +21,21 @@ std::vector<rt::AccelKind> treesNamed(const std::string& name) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Shows how the KD and BSP trees of a scene look and perform."};
+    CLI::App app{
+        "Shows how the KD and BSP trees of a scene look and perform.\n"
+        "Examples:\n"
+        "  rt-inspect scenes/demo.xml                     the KD tree's statistics and the scene's bounds\n"
+        "  rt-inspect model.glb --tree all --rays -x 320 -y 240   BSP against KD, the work per ray\n"
+        "  rt-inspect scene.xml --heatmap heat.png        where the camera rays' work goes\n"
+        "  rt-inspect scene.xml --dump dot -f tree.dot --max-depth 6\n"
+        "  rt-inspect scene.xml --json > report.json\n"};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-inspect"));
     rt::tool::inspect::InspectOptions o;
     std::string tree = "kd";
     std::optional<std::uint32_t> maxDepth;
     std::optional<float> heatmapMax;
 
-    app.add_option("scene", o.scenePath, "Scene file (thesis XML), - for standard input")->required();
+    app.add_option("scene", o.scenePath, rt::tool::kSceneHelp)->required();
     std::vector<std::string> treeNames = rt::namesOf(rt::kAccelKindNames);
     treeNames.push_back("all");
     app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, or all (bsp and kd)")

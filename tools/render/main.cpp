@@ -21,7 +21,14 @@ std::string versionText() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Renders a scene by ray tracing (thesis appendix B)."};
+    CLI::App app{
+        "Renders a scene by ray tracing (thesis appendix B).\n"
+        "Examples:\n"
+        "  rt-render scenes/demo.xml -f demo.png           the demo scene as a PNG\n"
+        "  rt-render model.glb -x 1280 -y 720 --integrator path --spp 64 -f model.exr\n"
+        "  rt-render model.obj --look-from 0,2,5 --look-at 0,1,0 --fov 60 -f view.png\n"
+        "  rt-render scene.xml --orbit 36 -f turn/frame_####.png   a turntable of 36 frames\n"
+        "  rt-render scene.xml -p --stats-json stats.json  the tree and an estimate, no picture\n"};
     app.set_version_flag("-v,--version", versionText());
     rt::tool::render::RenderOptions options;
     rt::tool::render::addRenderOptions(app, options);

@@ -185,6 +185,7 @@ void addCommandLineLights(const RenderOptions& o, Scene& scene) {
 Scene loadWithCamera(const RenderOptions& o) {
     ImportOptions import = o.import;
     import.camera = o.camera.value_or("");
+    import.cameraFromCommandLine = o.lookFrom || o.lookAt || o.fov;
     for (const std::string& assignment : o.parameters) {  // a later --set of the same name wins
         auto [name, value] = parseParameterAssignment(assignment);
         import.parameters.insert_or_assign(std::move(name), std::move(value));
@@ -355,7 +356,8 @@ int renderAll(RenderOptions o) {
 
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
-    const TextureCacheSettings textureCache{o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb};
+    const TextureCacheSettings textureCache{o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb,
+                                            [progress](const std::string& step) { announce(progress, step); }};
     MemoryEstimate memory = estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly);
     memory.textures = estimateTextureMemory(scene, textureCache);  // before any is read
     checkMemoryLimit(memory, memoryLimit);

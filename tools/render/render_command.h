@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "accel/settings.h"
+#include "command_line.h"
 #include "core/vec3.h"
 #include "image/image_output.h"
 #include "image/tiled_textures.h"
@@ -57,7 +58,7 @@ struct RenderOptions {
     std::vector<std::string> parameters;  // --set NAME=VALUE, any number: $NAME in the XML scene
     // For --stats-json: the command line as given, and every option's value (given or default).
     std::vector<std::string> arguments;
-    std::vector<std::pair<std::string, std::vector<std::string>>> optionValues;
+    OptionValues optionValues;
     std::optional<double> maxMemoryGb;        // --max-memory GB; default: rt::defaultMemoryLimit()
     std::optional<std::string> environment;   // --environment FILE: the sky image (light and background)
     std::vector<std::string> lights;          // --light TYPE:NUMBERS, any number (light_option.h)

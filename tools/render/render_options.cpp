@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <algorithm>
 #include <array>
 
 #include "accel_options.h"
@@ -14,11 +15,25 @@ using rt::AccelKind;
 using rt::tool::addNamedOption;
 using rt::tool::numberIn;
 
+// -o's check: one of outputNames(). A file name there is the usual slip (rt-convert's -o is a file,
+// as in most tools), so it is answered with the option that takes one.
+CLI::Validator outputTypeCheck() {
+    const std::vector<std::string> names = outputNames();
+    return CLI::Validator(
+        [names](std::string& type) -> std::string {
+            if (std::find(names.begin(), names.end(), type) != names.end()) return {};
+            const std::string valid = "{" + CLI::detail::join(names, ",") + "}";
+            if (!rt::imageFormatFromPath(type)) return type + " not in " + valid;
+            return type + " is a file name, and -o takes an output type " + valid + ": did you mean -f " + type + "?";
+        },
+        "{" + CLI::detail::join(names, ",") + "}");
+}
+
 void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     const char* group = "Rendering options";
     app.add_option("-o,--output", o.outputType,
                    "Output type (default: -f's extension; neither -o nor -f: null); sdl: a window, beside any -f")
-        ->check(CLI::IsMember(outputNames()))
+        ->check(outputTypeCheck())
         ->group(group);
     app.add_option("-f,--file", o.outputPaths,
                    "Output file; - for standard output; several -f write each from one render")
@@ -252,8 +267,7 @@ std::vector<std::string> optionsTheIntegratorIgnores(const CLI::App& app, Integr
 
 void addRenderOptions(CLI::App& app, RenderOptions& options) {
     app.option_defaults()->always_capture_default();  // so that --stats-json records every default
-    app.add_option("scene", options.scenePath, "Scene: rt XML (- reads standard input) or any model rt-convert reads")
-        ->required();
+    app.add_option("scene", options.scenePath, rt::tool::kSceneHelp)->required();
     rt::tool::addPictureOptions(app, options.render);
     addRenderingOptions(app, options);
     addAdaptiveOptions(app, options.render);

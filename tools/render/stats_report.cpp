@@ -1,7 +1,10 @@
 #include "stats_report.h"
 
+#include <charconv>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 
 #include "core/json_writer.h"
 #include "core/peak_memory.h"
@@ -17,20 +20,46 @@ std::string format(const char* fmt, auto... args) {
     return buffer;
 }
 
-// "options": {"width": "800", "file": ["a.png", "a.exr"], "region": null}: the command line's words.
+// Writes `text` as a Whole if it is all one, and says whether it was.
+template <class Whole>
+bool writeWhole(JsonWriter& json, const std::string& text) {
+    Whole whole = 0;
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, whole);
+    if (error != std::errc() || stop != end) return false;
+    json.value(whole);
+    return true;
+}
+
+// An option's number as CLI11 read it: a whole number as an integer ("--seed 7": 7), else a double.
+void writeNumber(JsonWriter& json, const std::string& text) {
+    if (!writeWhole<std::int64_t>(json, text) && !writeWhole<std::uint64_t>(json, text))
+        json.value(std::strtod(text.c_str(), nullptr));
+}
+
+// One option's value in its type: a number, a boolean or a string; a list is an array of strings.
+void writeOptionValue(JsonWriter& json, const OptionValue& option) {
+    if (option.type == OptionValue::Type::List) {
+        json.beginArray();
+        for (const std::string& v : option.values) json.value(v);
+        json.endArray();
+    } else if (option.values.empty()) {
+        json.null();
+    } else if (option.type == OptionValue::Type::Boolean) {
+        json.value(option.values[0] == "true");
+    } else if (const std::string& text = option.values[0]; option.type == OptionValue::Type::Number) {
+        writeNumber(json, text);
+    } else {
+        json.value(text);
+    }
+}
+
+// "options": {"width": 800, "shadows": false, "file": ["a.png", "a.exr"], "region": null}.
 void writeOptionsJson(JsonWriter& json, const RunRecord& run) {
     json.beginObject();
-    for (const auto& [name, values] : run.options) {
-        json.key(name);
-        if (values.empty()) {
-            json.null();
-        } else if (values.size() == 1) {
-            json.value(values[0]);
-        } else {
-            json.beginArray();
-            for (const std::string& v : values) json.value(v);
-            json.endArray();
-        }
+    for (const OptionValue& option : run.options) {
+        json.key(option.name);
+        writeOptionValue(json, option);
     }
     json.endObject();
 }

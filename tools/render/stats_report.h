@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel/accelerator.h"
+#include "command_line.h"
 #include "inspect/tree_report.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
@@ -23,7 +24,7 @@ std::string thesisStatsLine(const RenderStats& stats);
 // every option's value (given or default), and which frame of a turntable the record is for.
 struct RunRecord {
     std::vector<std::string> arguments;
-    std::vector<std::pair<std::string, std::vector<std::string>>> options;
+    OptionValues options;
     std::optional<int> frame;  // --orbit's frame; none for a single picture
 };
 
