@@ -19,7 +19,6 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <regex>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -79,8 +78,10 @@ std::string copyName(const TextureSource& source) {
 }
 
 bool isCopyName(const std::string& name) {
-    static const std::regex copy(R"(.+-[0-9a-f]{16}\.tx)");
-    return std::regex_match(name, copy);
+    constexpr std::size_t kTail = 1 + 16 + 3;  // "-", the hash's 16 hex digits, ".tx"
+    if (name.size() <= kTail || !name.ends_with(".tx") || name[name.size() - kTail] != '-') return false;
+    const std::string hash = name.substr(name.size() - kTail + 1, 16);
+    return hash.find_first_not_of("0123456789abcdef") == std::string::npos;
 }
 
 // The cache's own folder inside the folder it is given, which may hold a user's files (maketx
