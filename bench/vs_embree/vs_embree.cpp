@@ -459,8 +459,9 @@ void printTables(const std::vector<SceneReport>& reports) {
 // The --kd-* options as given, else their defaults (tool::optionValues), to name the tree measured.
 std::string kdOptions(const CLI::App& app) {
     std::string line;
-    for (const auto& [name, values] : tool::optionValues(app))
-        if (name.rfind("kd-", 0) == 0) line += " --" + name + " " + (values.empty() ? "(default)" : values.front());
+    for (const tool::OptionValue& o : tool::optionValues(app))
+        if (o.name.rfind("kd-", 0) == 0)
+            line += " --" + o.name + " " + (o.values.empty() ? "(default)" : o.values.front());
     return line;
 }
 

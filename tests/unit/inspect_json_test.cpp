@@ -213,7 +213,7 @@ TEST(ReportJson, OneSphereWithTheNaiveList) {
     report.depths = depthHistogram(naive);
 
     std::ostringstream out;
-    writeReportJson(out, {"one \"sphere\".xml", {{"triangles", 0}, {"spheres", 1}}, 1}, rays, {report});
+    writeReportJson(out, {"one \"sphere\".xml", {{"triangles", 0}, {"spheres", 1}}, 1, {}}, rays, {report});
     const Json j = parse(out.str());
     EXPECT_EQ(j["version"].num(), kJsonSchemaVersion);
     EXPECT_EQ(j["scene"]["file"].str(), "one \"sphere\".xml");
