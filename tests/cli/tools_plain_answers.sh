@@ -42,9 +42,9 @@ cat >"$WORK/tex.xml" <<'XML'
 XML
 printf '\x89PNG\r\n\x1a\ngarbagegarbagegarbage' >"$WORK/bad.png"
 expect_exit 0 "$RT_RENDER" "$WORK/tex.xml" -x 16 -y 12 --tx-cache off -o null
-grep -q "^rt-render: warning: texture file .*bad.png: cannot read it (.*; Invalid image file .*): white is used$" \
+grep -q "^rt-render: warning: texture file .*bad.png: cannot read it (.*; PNG read error: .*): white is used$" \
     "$WORK/stderr" || fail "the texture's warning is not one line: $(cat "$WORK/stderr")"
-grep -q '^Invalid image file' "$WORK/stderr" && fail "a message of several lines: $(cat "$WORK/stderr")"
+grep -q '^PNG read error' "$WORK/stderr" && fail "a message of several lines: $(cat "$WORK/stderr")"
 # A tree dump of more than 10 MB (25,000 spheres: about 12 MB of JSON) says its size.
 python3 - >"$WORK/many.xml" <<'PY'
 import random
