@@ -14,14 +14,14 @@ using rt::tool::addNamedOption;
 std::vector<rt::AccelKind> treesNamed(const std::string& name) {
     // "all" means the trees; the naive list is the reference, and tracing a real scene
     // through it takes hours, so it is inspected only by name.
-    if (name == "all") return {rt::AccelKind::Bsp, rt::AccelKind::Kd};
+    if (name == "all") return {rt::AccelKind::Bsp, rt::AccelKind::Kd, rt::AccelKind::Bvh};
     return {*rt::parseAccelKind(name)};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Shows how the KD and BSP trees of a scene look and perform."};
+    CLI::App app{"Shows how the BSP and KD trees and the BVH of a scene look and perform."};
     app.set_version_flag("-v,--version", rt::tool::versionLine("rt-inspect"));
     rt::tool::inspect::InspectOptions o;
     std::string tree = "kd";
@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     app.add_option("scene", o.scenePath, "Scene file (thesis XML), - for standard input")->required();
     std::vector<std::string> treeNames = rt::namesOf(rt::kAccelKindNames);
     treeNames.push_back("all");
-    app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, or all (bsp and kd)")
+    app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, bvh, or all (bsp, kd and bvh)")
         ->check(CLI::IsMember(treeNames))
         ->capture_default_str();
     app.add_flag("--json", o.json, "Print the statistics as one JSON document");
