@@ -103,10 +103,7 @@ private:
     // that grazes a flat box; the traversal must still enter its box there (the property tests
     // shoot rays along axes and from surfaces). A few ulps of the scene's largest coordinate.
     static Real padding(const Aabb& scene) {
-        if (scene.empty()) return 0;
-        Real largest = 0;
-        for (int axis = 0; axis < 3; ++axis)
-            largest = std::max({largest, std::abs(scene.lo[axis]), std::abs(scene.hi[axis])});
+        const Real largest = largestMagnitude(scene);
         return std::isfinite(largest) ? 16 * std::numeric_limits<Real>::epsilon() * largest : 0;
     }
 

@@ -17,20 +17,33 @@ namespace rt::RT_LEVEL_NAMESPACE {
 
 namespace {
 
-// The slab test's distances are rounded (each a subtraction and a product) and so are the
-// primitives' own hits: a child is entered when its interval [tNear, tFar] ends, widened by this
-// factor, at or after where it starts (and before the nearest hit so far, widened alike), so that
-// rounding never culls a child that holds a hit (Ize 2013; pbrt-v4's 1 + 2 gamma(3)). The builder
-// pads the boxes themselves for the hits' rounding in position (accel/bvh_build.cpp).
-constexpr Real kSlabWidening = 1 + 4 * std::numeric_limits<Real>::epsilon();
+// How far along the ray a child's box is taken to reach beyond its computed slab interval, on
+// both ends, and so beyond the nearest hit so far too: a primitive's computed hit is rounded in
+// its position by some units in the last place of the ray's origin and of the scene's
+// coordinates (a triangle's test subtracts its vertex from the origin), and may lie outside the
+// box of its primitive by that much, more than the builder's padding (accel/bvh_build.cpp, in
+// the scene's units only) when the origin lies far from the scene. A child that rounding would
+// cull although its primitive reports a nearer hit is then entered, so that the nearest hit is
+// the one every primitive's test would give. AccelPathological.AllPrimitivesAtOnePoint (float)
+// shoots rays from a unit away at tiny triangles and spheres: a triangle's hit comes out at t = 1
+// although the scene's padded box, which holds them all, is entered at 1.0000021 (18 ulps of 1),
+// and the spheres' child, entered there, was culled, while a sphere's test (its discriminant
+// cancels) reports a hit nearer still: 16 is the least slack that passes, 64 leaves room. It
+// covers the slab distances' own rounding too (a subtraction and a product, a few ulps of t,
+// which for a box in the scene is within the two magnitudes' sum):
+// pbrt-v4's 1 + 2 gamma(3), Ize 2013.
+constexpr Real kSlackUlps = 64;
 
 // The ray as the slab tests read it: per axis, its origin and reciprocal direction in every lane,
-// and which of a node's planes it meets first (the lower when it runs towards higher values).
+// and which of a node's planes it meets first (the lower when it runs towards higher values); and
+// its slack (kSlackUlps), for a scene whose largest coordinate has magnitude `sceneMagnitude`.
 struct SlabRay {
     RealLanes origin[3], inverse[3];
     int nearIsHigh[3];
+    Real slack;
 
-    explicit SlabRay(const Ray& ray) {
+    SlabRay(const Ray& ray, Real sceneMagnitude)
+        : slack(kSlackUlps * std::numeric_limits<Real>::epsilon() * (largestMagnitude(ray.origin) + sceneMagnitude)) {
         const Vec3 inv = reciprocal(ray.direction);
         for (int axis = 0; axis < 3; ++axis) {
             origin[axis] = broadcast(ray.origin[axis]);
@@ -41,13 +54,14 @@ struct SlabRay {
     }
 };
 
-// The children of `node` whose boxes the ray enters before `tLimit` (bit i for slot i), and where
-// it enters each (tNear[i], at least 0). A lane where the origin lies on a plane it runs parallel
-// to computes 0 * inf = NaN, which maximum and minimum pass over (their second operand is taken):
-// the ray then counts as inside that slab. An unused slot's box, +inf to -inf, is never entered.
+// The children of `node` whose boxes the ray enters before `tLimit` (bit i for slot i), both
+// widened by the ray's slack, and where it enters each (tNear[i], at least 0). A lane where the
+// origin lies on a plane it runs parallel to computes 0 * inf = NaN, which maximum and minimum
+// pass over (their second operand is taken): the ray then counts as inside that slab. An unused
+// slot's box, +inf to -inf, is never entered.
 [[gnu::always_inline]] inline unsigned childrenHit(const BvhNode& node, const SlabRay& ray, Real tLimit,
                                                    Real (&tNear)[kBvhWidth]) {
-    const RealLanes zero = broadcast(0), limit = broadcast(tLimit), widening = broadcast(kSlabWidening);
+    const RealLanes zero = broadcast(0), limit = broadcast(tLimit), slack = broadcast(ray.slack);
     unsigned bits = 0;
     for (int first = 0; first < kBvhWidth; first += kLanes) {
         RealLanes entry = zero, exit = limit;
@@ -58,7 +72,7 @@ struct SlabRay {
             exit = minimum((loadLanes(farPlanes + first) - ray.origin[axis]) * ray.inverse[axis], exit);
         }
         storeLanes(tNear + first, entry);
-        bits |= laneBits(lessEqual(entry, exit * widening)) << first;
+        bits |= laneBits(lessEqual(entry, exit + slack)) << first;
     }
     return bits;
 }
@@ -92,13 +106,14 @@ constexpr int kStackSize = (kBvhWidth - 1) * kMaxBvhDepth + 1;
 namespace rt {
 
 // Nearest first, down the nearest child hit, the others waiting on the stack nearest on top; a
-// child is taken from the stack only if it starts before the nearest hit so far, which a leaf's
-// tests (accel/leaf_tests.h) lower. A node with one child hit hands it on without the stack.
+// child is taken from the stack only if it starts before the nearest hit so far (with the ray's
+// slack), which a leaf's tests (accel/leaf_tests.h) lower. A node with one child hit hands it on
+// without the stack.
 template <SimdLevel level>
 void Bvh::searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
     static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
-    const SlabRay slabs(ray);
+    const SlabRay slabs(ray, sceneMagnitude_);
     const BlockTests testBlocks(ray);
     const HitFilter* filter = filter_;
     const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
@@ -120,7 +135,7 @@ void Bvh::searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) con
             }
             pushNearestLast(node, bits, tNear, stack, size);
         }
-        while (size != 0 && stack[size - 1].tNear > nearest.t * kSlabWidening) --size;
+        while (size != 0 && stack[size - 1].tNear > nearest.t + slabs.slack) --size;
         if (size == 0) break;
         current = stack[--size].child;
     }
@@ -134,7 +149,7 @@ template <SimdLevel level>
 bool Bvh::searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
     static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
-    const SlabRay slabs(ray);
+    const SlabRay slabs(ray, sceneMagnitude_);
     const BlockTests testBlocks(ray);
     const HitFilter* filter = filter_;
     const PrimitiveView prims = view_;

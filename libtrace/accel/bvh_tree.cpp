@@ -1,6 +1,7 @@
 #include "accel/bvh_tree.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "accel/level_dispatch.h"
@@ -36,6 +37,8 @@ Aabb BvhNode::bounds() const {
 Bvh::Bvh(const Primitives& prims, std::vector<BvhNode> nodes, LeafStore leaves, const BvhSettings& settings,
          double buildSeconds, int buildThreads)
     : prims_(prims), view_(prims.view()), nodes_(std::move(nodes)), leaves_(std::move(leaves)) {
+    sceneMagnitude_ = largestMagnitude(prims.bounds());
+    if (!std::isfinite(sceneMagnitude_)) sceneMagnitude_ = 0;
     stats_ = computeStats(settings);
     stats_.buildSeconds = buildSeconds;
     stats_.buildThreads = buildThreads;

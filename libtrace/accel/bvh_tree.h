@@ -3,6 +3,8 @@
 // one or two registers' work; a child is an inner node or a leaf of accel/leaf_store.h.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +35,13 @@ private:
     explicit BvhChild(std::uint32_t bits) : bits_(bits) {}
     std::uint32_t bits_;
 };
+
+// The largest magnitude of a point's coordinates, and of a box's (0 for an empty box, +inf for an
+// unbounded one): the scale of their rounding, for the builder's padding and the traversal's slack.
+inline Real largestMagnitude(const Vec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
+inline Real largestMagnitude(const Aabb& box) {
+    return box.empty() ? 0 : std::max(largestMagnitude(box.lo), largestMagnitude(box.hi));
+}
 
 // An unused slot has an empty box (lo = +inf, hi = -inf), which no ray enters.
 struct alignas(64) BvhNode {
@@ -69,7 +78,8 @@ private:
     AccelStats computeStats(const BvhSettings& settings) const;
 
     const Primitives& prims_;
-    PrimitiveView view_;  // of prims_, which must not change while the BVH is used
+    PrimitiveView view_;   // of prims_, which must not change while the BVH is used
+    Real sceneMagnitude_;  // largestMagnitude of the scene, finite (0 if not): scales each ray's slack
     std::vector<BvhNode> nodes_;
     LeafStore leaves_;
     AccelStats stats_;
