@@ -3,6 +3,7 @@
 //   build/release/bench/vs_embree            all scenes, about a minute on 2 cores
 //   build/release/bench/vs_embree --quick    two small scenes, one pass: a smoke test
 //   build/release/bench/vs_embree --kd-intersection-cost 1.5    another KD tree (rt-render's --kd-* options)
+//   build/release/bench/vs_embree --accel bvh    rt's wide BVH instead of its KD tree (or bsp, naive)
 //
 // Scenes: the five thesis scenes (rt::thesisScene), 10k/100k/1M uniform random triangles
 // and the "teapot in a stadium" (bench_scenes.h). Rays, all made once with rt's KD tree:
@@ -34,6 +35,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -44,7 +46,7 @@
 #include <string>
 #include <vector>
 
-#include "accel/kdtree.h"
+#include "accel/build.h"
 #include "accel_options.h"
 #include "bench_scenes.h"
 #include "command_line.h"
@@ -406,7 +408,7 @@ std::string buildRow(const std::string& name, const Primitives& prims, const Acc
            fixed(double(embree.memoryBytes()) / n, 1) + " |";
 }
 
-SceneReport measureScene(const std::string& name, const KdSettings& kdSettings, int passes, bool buildsOnly) {
+SceneReport measureScene(const std::string& name, const AccelSettings& settings, int passes, bool buildsOnly) {
     std::cerr << "vs_embree: " << name << ": generating\n";
     const Scene scene = loadScene(name);
     const Primitives& prims = scene.primitives;
@@ -419,7 +421,7 @@ SceneReport measureScene(const std::string& name, const KdSettings& kdSettings, 
     for (int b = 0; b < kBuilds; ++b) {
         kd.reset();
         embreeScene.reset();
-        kdTime.keepBest([&] { kd = buildKdTree(prims, kdSettings); });
+        kdTime.keepBest([&] { kd = buildAccelerator(prims, settings); });
         embreeTime.keepBest([&] { embreeScene = std::make_unique<EmbreeScene>(prims, kBuildThreads); });
     }
     const EmbreeScene& embree = *embreeScene;
@@ -436,23 +438,30 @@ SceneReport measureScene(const std::string& name, const KdSettings& kdSettings, 
     return report;
 }
 
-void printRayTable(const std::vector<SceneReport>& reports) {
+// The structure measured as the tables name it: "KD", "BVH".
+std::string structureName(AccelKind kind) {
+    std::string name = accelKindName(kind);
+    for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return name;
+}
+
+void printRayTable(const std::vector<SceneReport>& reports, AccelKind kind) {
     std::cout << "\n### Rays per second, one thread (rt / Embree > 1: rt is faster)\n\n"
-              << "| Scene | Primitives | Rays | Count | rt KD | Embree 1 | rt / Embree 1 | rt packets | rt packets / "
+              << "| Scene | Primitives | Rays | Count | rt " << structureName(kind)
+              << " | Embree 1 | rt / Embree 1 | rt packets | rt packets / "
                  "Embree 1 | Embree 8 | rt packets / Embree 8 | Differ |\n|---|---|---|---|---|---|---|---|---|---|---|"
                  "---|\n";
     for (const SceneReport& r : reports)
         for (const std::string& row : r.rayRows) std::cout << row << "\n";
 }
 
-void printTables(const std::vector<SceneReport>& reports) {
-    if (!reports.empty() && !reports.front().rayRows.empty()) printRayTable(reports);
-    std::cout
-        << "\n### Builds on " << kBuildThreads
-        << " threads and memory (rt / Embree > 1: rt takes longer)\n\n"
-           "| Scene | Primitives | rt KD build (wall / CPU) | Embree build (wall / CPU) | rt / Embree (wall / CPU) "
-           "| rt SAH cost | rt bytes/prim (tree + "
-           "geometry) | Embree bytes/prim |\n|---|---|---|---|---|---|---|---|\n";
+void printTables(const std::vector<SceneReport>& reports, AccelKind kind) {
+    if (!reports.empty() && !reports.front().rayRows.empty()) printRayTable(reports, kind);
+    std::cout << "\n### Builds on " << kBuildThreads << " threads and memory (rt / Embree > 1: rt takes longer)\n\n"
+              << "| Scene | Primitives | rt " << structureName(kind)
+              << " build (wall / CPU) | Embree build (wall / CPU) | rt / Embree (wall / CPU) "
+                 "| rt SAH cost | rt bytes/prim (tree + "
+                 "geometry) | Embree bytes/prim |\n|---|---|---|---|---|---|---|---|\n";
     for (const SceneReport& r : reports) std::cout << r.buildRow << "\n";
 }
 
@@ -473,28 +482,30 @@ int main(int argc, char** argv) {
                                        "tri10k", "tri100k", "tri1M", "stadium100k"};
     int passes = 3;
     bool quick = false, buildsOnly = false;
-    KdSettings kd;  // rt-render's defaults unless the --kd-* options say otherwise
+    AccelSettings accel;  // rt-render's defaults unless --accel and the --kd-* options say otherwise
     app.add_option("--scenes", scenes, "Scenes to measure (thesis scenes and tri10k, tri100k, tri1M, stadium100k)");
     app.add_option("--passes", passes, "Timed passes over each ray set; the best counts")->check(CLI::Range(1, 100));
     app.add_flag("--quick", quick, "Smoke test: ships and tri10k, one pass");
     app.add_flag("--builds", buildsOnly, "Builds only: no rays, only the build table");
-    tool::addKdOptions(app, kd);
+    tool::addNamedOption(app, "--accel", accel.kind, kAccelKindNames, "rt's structure: kd, bvh, bsp or naive")
+        ->capture_default_str();
+    tool::addKdOptions(app, accel.kd);
     CLI11_PARSE(app, argc, argv);
     if (quick) scenes = {"ships", "tri10k"}, passes = 1;
 
     omp_set_num_threads(kBuildThreads);
     std::vector<SceneReport> reports;
     try {
-        for (const std::string& name : scenes) reports.push_back(measureScene(name, kd, passes, buildsOnly));
+        for (const std::string& name : scenes) reports.push_back(measureScene(name, accel, passes, buildsOnly));
     } catch (const std::exception& e) {
         std::cerr << "vs_embree ERROR: " << e.what() << "\n";
         return 1;
     }
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
               << kHeight << ", best of " << passes << " passes, rt on " << simdLevelName(simdLevel())
-              << " lanes, single rays and packets (RT_SIMD=sse2|avx2|avx512 for another); rt's KD tree:"
-              << kdOptions(app) << "\n";
-    printTables(reports);
+              << " lanes, single rays and packets (RT_SIMD=sse2|avx2|avx512 for another); rt's "
+              << accelKindName(accel.kind) << (accel.kind == AccelKind::Kd ? kdOptions(app) : std::string()) << "\n";
+    printTables(reports, accel.kind);
     if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
     std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement
               << " % of a ray set, or rt's packets differ from its single rays (the first rays are listed above)\n";

@@ -1,6 +1,7 @@
 #include "accel/build.h"
 
 #include "accel/bsp.h"
+#include "accel/bvh.h"
 #include "accel/kdtree.h"
 #include "accel/naive.h"
 
@@ -12,6 +13,8 @@ std::unique_ptr<Accelerator> buildAccelerator(const Primitives& prims, const Acc
             return std::make_unique<NaiveAccelerator>(prims);
         case AccelKind::Bsp:
             return buildBspTree(prims, settings.bsp);
+        case AccelKind::Bvh:
+            return buildBvh(prims, settings.bvh);
         case AccelKind::Kd:
             break;
     }

@@ -16,91 +16,8 @@
 
 #include "accel/split_tree.h"
 
-// Last, in a block of its own (clang-format sorts a block): the level's region starts here.
-#include "accel/simd_level.h"
-
-// AVX2 and AVX-512 test a leaf's blocks two at a time, in one register twice SSE2's width (four
-// doubles or eight floats; AVX-512 takes AVX2's register, compiled for its own level): one test's
-// instructions for two blocks' triangles, each lane computing what it computes in a block alone.
-#define RT_BLOCK_PAIRS (RT_LEVEL_AVX2 || RT_LEVEL_AVX512)
-
-namespace rt::RT_LEVEL_NAMESPACE {
-
-namespace {
-
-#if RT_BLOCK_PAIRS
-struct PairLanes {
-    using Type = simd_avx2::RealLanes;
-    static Type all(Real x) { return simd_avx2::broadcast(x); }
-};
-static_assert(2 * kSimdWidth == simd_avx2::kLanes);
-
-// The blocks `first` and `first + 1`, lane i of the pair being lane i of the first and lane
-// kSimdWidth + i of the second. Always inlined, as the one-block test is in its loop.
-[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const TriangleBlock* first,
-                                                                          const RayLanesOf<PairLanes>& ray, Real tMax) {
-    return mollerTrumboreLanes<PairLanes, 2 * kSimdWidth>(
-        [&](auto component, int axis) {
-            return simd_avx2::loadHalves((first[0].*component)[axis], (first[1].*component)[axis]);
-        },
-        ray, tMax);
-}
-[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const SphereBlock* first,
-                                                                          const RayLanesOf<PairLanes>& ray, Real tMax) {
-    return sphereLanes<PairLanes, 2 * kSimdWidth>(
-        [&](int axis) {
-            return axis < 0 ? simd_avx2::loadHalves(first[0].r2, first[1].r2)
-                            : simd_avx2::loadHalves(first[0].center[axis], first[1].center[axis]);
-        },
-        ray, tMax);
-}
-#endif
-
-// A leaf's blocks of one kind (triangles or spheres) tested against one ray, in order: two at a
-// time where the level has pairs, the last alone when their number is odd.
-class BlockTests {
-public:
-    explicit BlockTests(const Ray& ray)
-        : one_(ray)
-#if RT_BLOCK_PAIRS
-          ,
-          two_(ray)
-#endif
-    {
-    }
-
-    // visit(blocks + b, b, hits, count) for each group of `count` of the `blockCount` blocks from
-    // block b on, lane i of `hits` in block b + i / kSimdWidth, each group tested against tMax as
-    // it is then; stops when visit returns true, and returns whether it did.
-    template <class Block, typename Visit>
-    [[gnu::always_inline]] bool operator()(const Block* blocks, std::uint32_t blockCount, const Real& tMax,
-                                           const Visit& visit) const {
-        std::uint32_t b = 0;
-#if RT_BLOCK_PAIRS
-        for (; b + 2 <= blockCount; b += 2)
-            if (visit(blocks + b, b, intersectBlockPair(blocks + b, two_, tMax), 2)) return true;
-#endif
-        for (; b < blockCount; ++b)
-            if (visit(blocks + b, b, intersectBlock(blocks[b], one_, tMax), 1)) return true;
-        return false;
-    }
-
-private:
-    RayLanes one_;
-#if RT_BLOCK_PAIRS
-    RayLanesOf<PairLanes> two_;
-#endif
-};
-
-// Lane `lane` of the hits of the blocks from `first` on as a Hit.
-template <class Block, int N>
-Hit laneHit(const Block* first, const LaneHits<N>& hits, int lane) {
-    return {hits.t[lane], first[lane / kSimdWidth].id[lane % kSimdWidth], hits.u[lane], hits.v[lane]};
-}
-
-}  // namespace
-
-}  // namespace rt::RT_LEVEL_NAMESPACE
+// Last, in a block of its own: the level's region starts in it (accel/simd_level.h).
+#include "accel/leaf_tests.h"
 
 namespace rt {
 
@@ -185,11 +102,7 @@ void SplitTree::traverse(const Ray& ray, const Vec3& invDir, std::uint32_t index
     counters.traversalSteps += steps;
 }
 
-// Nearest hit: each block's hits are taken in lane order, as the scalar loop took the
-// triangles, each only if nearer than the nearest so far (a lane before it may have come nearer)
-// and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
-// A pair of blocks is the same: its second block is tested with the nearest t from before the
-// first's hits, and its hits that the first's then beat are dropped here.
+// Nearest hit: the leaves' loop of accel/leaf_tests.h.
 template <SimdLevel level>
 void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Hit& nearest, RayCounters& counters) const {
@@ -199,34 +112,13 @@ void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t 
     traverse(
         ray, invDir, node, tMin, tMax, nearest.t,
         counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
-            tests += leaf.triangles + leaf.spheres + leaf.others;
-            const auto takeNearest = [&](const auto* first, std::uint32_t, const auto& hits, int) {
-                for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
-                    const int lane = std::countr_zero(bits);
-                    if (!(hits.t[lane] < nearest.t)) continue;
-                    const Hit candidate = RT_LEVEL_LANES::laneHit(first, hits, lane);
-                    if (filter && !filter->accepts(ray, candidate)) continue;
-                    nearest = candidate;
-                }
-                return false;
-            };
-            testBlocks(leaf.blocks(), leaf.blockCount(), nearest.t, takeNearest);
-            testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), nearest.t, takeNearest);
-            const std::uint32_t* otherIds = leaf.otherIds();
-            for (std::uint32_t i = 0; i < leaf.others; ++i) {
-                if (filter)
-                    intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
-                else
-                    prims.intersect(otherIds[i], ray, nearest.t, nearest);
-            }
+            RT_LEVEL_LANES::nearestInLeaf(testBlocks, prims, leaf, ray, filter, nearest, tests);
             return false;  // a nearer hit may still lie in a later node; traverse() knows when not
         });
     counters.intersectionTests += tests;
 }
 
-// Any hit before `rayTMax`, the whole shadow ray's end, in the subtree at `node`. The triangles
-// are counted block by block up to the first that blocks; a pair of blocks is counted as its two
-// blocks would be, the second only if the first does not block.
+// Any hit before `rayTMax`, the whole shadow ray's end, in the subtree at `node`.
 template <SimdLevel level>
 bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Real rayTMax, RayCounters& counters) const {
@@ -237,33 +129,7 @@ bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t 
     traverse(
         ray, invDir, node, tMin, tMax, rayTMax,
         counters, [&](const PrimitiveView& prims, const LeafPrimitives& leaf) __attribute__((always_inline)) {
-            // Block by block within a group of the `total` primitives of a kind: its tests counted,
-            // then whether one of its hits counts (any without a filter, else one the filter accepts).
-            const auto blockedIn = [&](std::uint32_t total) {
-                return [&, total](const auto* first, std::uint32_t firstIndex, const auto& hits, int count) {
-                    for (int k = 0; k < count; ++k) {
-                        const std::uint32_t b = firstIndex + std::uint32_t(k);
-                        tests += std::min<std::uint32_t>(kSimdWidth, total - b * kSimdWidth);
-                        unsigned bits = hits.lanes & (((1u << kSimdWidth) - 1) << (k * kSimdWidth));
-                        if (!filter && bits != 0) return true;
-                        for (; bits != 0; bits &= bits - 1)
-                            if (filter->accepts(ray, RT_LEVEL_LANES::laneHit(first, hits, std::countr_zero(bits))))
-                                return true;
-                    }
-                    return false;
-                };
-            };
-            if (testBlocks(leaf.blocks(), leaf.blockCount(), rayTMax, blockedIn(leaf.triangles)) ||
-                testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), rayTMax, blockedIn(leaf.spheres)))
-                return found = true;
-            const std::uint32_t* otherIds = leaf.otherIds();
-            for (std::uint32_t i = 0; i < leaf.others; ++i) {
-                ++tests;
-                const bool hits = filter ? occludesFiltered(prims, otherIds[i], ray, rayTMax, *filter)
-                                         : prims.intersectsAny(otherIds[i], ray, rayTMax);
-                if (hits) return found = true;
-            }
-            return false;
+            return found = RT_LEVEL_LANES::blockerInLeaf(testBlocks, prims, leaf, ray, rayTMax, filter, tests);
         });
     counters.intersectionTests += tests;
     return found;

@@ -12,10 +12,10 @@
 
 namespace rt {
 
-enum class AccelKind { Naive, Bsp, Kd };
+enum class AccelKind { Naive, Bsp, Kd, Bvh };
 
-inline constexpr NamedValues<AccelKind, 3> kAccelKindNames{
-    {{"naive", AccelKind::Naive}, {"bsp", AccelKind::Bsp}, {"kd", AccelKind::Kd}}};
+inline constexpr NamedValues<AccelKind, 4> kAccelKindNames{
+    {{"naive", AccelKind::Naive}, {"bsp", AccelKind::Bsp}, {"kd", AccelKind::Kd}, {"bvh", AccelKind::Bvh}}};
 
 // The deepest a tree may be: the traversal's stack holds one entry per level.
 inline constexpr int kMaxTreeDepth = 64;
@@ -60,13 +60,23 @@ struct KdSettings {
     double minimumGain = 3e-7;
 };
 
+// The wide BVH (accel/bvh.h, docs/trees.md). Its SAH weighs a node's box tests against a leaf's
+// block tests: one visit of an eight-wide node (eight slab tests in one or two registers) costs
+// about as much as testing one block of kSimdWidth triangles (geometry/triangle_block.h).
+struct BvhSettings {
+    int maxLeafPrimitives = 8;      // a larger node is always split
+    double traversalCost = 1.0;     // C_T: visiting one node
+    double intersectionCost = 1.0;  // C_I: testing one block of a leaf
+};
+
 struct AccelSettings {
     AccelKind kind = AccelKind::Kd;
     BspSettings bsp;
     KdSettings kd;
+    BvhSettings bvh;
 };
 
-// By the tables above: "naive", "bsp", "kd" and "sweep", "sort", "sample"; nullopt if unknown.
+// By the tables above: "naive", "bsp", "kd", "bvh" and "sweep", "sort", "sample"; nullopt if unknown.
 inline std::optional<AccelKind> parseAccelKind(const std::string& name) { return parseNamed(kAccelKindNames, name); }
 inline const char* accelKindName(AccelKind kind) { return nameOf(kAccelKindNames, kind); }
 inline std::optional<KdSplitMethod> parseKdSplitMethod(const std::string& name) {

@@ -1,29 +1,11 @@
 // SplitTree's queries on the lanes core/simd.h's simdLevel() chooses, by default the widest the CPU
 // has: AVX-512, AVX2 or SSE2. The single-ray traversal (kd_single.cpp) and the packet traversal
 // (kd_packet.cpp) are each compiled once per level and hold only that level's code; this file,
-// compiled once, picks the copy.
-#include <type_traits>
-
+// compiled once, picks the copy (accel/level_dispatch.h).
+#include "accel/level_dispatch.h"
 #include "accel/split_tree.h"
 
 namespace rt {
-
-namespace {
-
-// call(level) with the chosen level as a compile-time constant (std::integral_constant), so that
-// it names that level's copy: call(level) runs SplitTree::X<decltype(level)::value>.
-template <typename Call>
-decltype(auto) onChosenLevel(const Call& call) {
-#if RT_SIMD_AVX512
-    if (simdLevel() == SimdLevel::avx512) return call(std::integral_constant<SimdLevel, SimdLevel::avx512>{});
-#endif
-#if RT_SIMD_AVX2
-    if (simdLevel() == SimdLevel::avx2) return call(std::integral_constant<SimdLevel, SimdLevel::avx2>{});
-#endif
-    return call(std::integral_constant<SimdLevel, SimdLevel::sse2>{});
-}
-
-}  // namespace
 
 bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const {
     Hit nearest;

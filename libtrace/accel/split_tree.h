@@ -17,10 +17,9 @@
 #include <vector>
 
 #include "accel/accelerator.h"
+#include "accel/leaf_store.h"
 #include "accel/settings.h"
-#include "core/default_init.h"
-#include "geometry/sphere_block.h"
-#include "geometry/triangle_block.h"
+#include "accel/shape_stats.h"
 
 namespace rt {
 
@@ -68,43 +67,9 @@ struct FlatTree {
     void append(const FlatTree& subtree);
 };
 
-// SAH constants used to report a tree's cost (thesis 2.5.1). Their defaults are KdSettings's,
-// the one place they are set: both trees report with sahCosts(KdSettings).
-struct SahCosts {
-    double traversal;
-    double intersection;
-};
-
+// The trees' SAH constants (accel/shape_stats.h) are KdSettings's, the one place they are set:
+// both trees report with sahCosts(KdSettings).
 inline SahCosts sahCosts(const KdSettings& kd) { return {kd.traversalCost, kd.intersectionCost}; }
-
-// A non-empty leaf as the traversal reads it, in one piece of memory: this 16-byte record, then its
-// triangles, copied in blocks of kSimdWidth (two with Real = double, four with float;
-// geometry/triangle_block.h) so that they are read in sequence and tested together, then its
-// spheres likewise (geometry/sphere_block.h), then the ids of its other primitives (padded to 16
-// bytes), tested one by one through the PrimitiveView. The record and the first block lie side by
-// side, so the traversal fetches them together: the block's address does not wait for the record.
-struct alignas(16) LeafPrimitives {
-    std::uint32_t triangles = 0, spheres = 0, others = 0;
-
-    std::uint32_t blockCount() const { return (triangles + kSimdWidth - 1) / kSimdWidth; }
-    std::uint32_t sphereBlockCount() const { return (spheres + kSimdWidth - 1) / kSimdWidth; }
-    // The 16-byte units the leaf takes: this record, its blocks and its other ids, padded.
-    std::size_t units() const {
-        return 1 + (blockCount() * sizeof(TriangleBlock) + sphereBlockCount() * sizeof(SphereBlock)) / 16 +
-               (others + 3) / 4;
-    }
-    const TriangleBlock* blocks() const { return std::launder(reinterpret_cast<const TriangleBlock*>(this + 1)); }
-    const SphereBlock* sphereBlocks() const {
-        return std::launder(reinterpret_cast<const SphereBlock*>(blocks() + blockCount()));
-    }
-    const std::uint32_t* otherIds() const {
-        return std::launder(reinterpret_cast<const std::uint32_t*>(sphereBlocks() + sphereBlockCount()));
-    }
-};
-static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16 &&
-              sizeof(SphereBlock) % 16 == 0 && alignof(SphereBlock) <= 16);
-// What the traversal fetches ahead of a leaf (SplitTree::prefetchLeafOf): its record and first block.
-inline constexpr std::size_t kLeafPrefetchBytes = sizeof(LeafPrimitives) + sizeof(TriangleBlock);
 
 class SplitTree final : public Accelerator {
 public:
@@ -129,8 +94,9 @@ public:
 
 private:
     void layOutLeaves(const FlatTree& tree);
-    LeafPrimitives leafSizes(const FlatTree& tree, const SplitNode& node) const;
-    void layOutLeaf(const std::uint32_t* ids, const LeafPrimitives& sizes, std::size_t at);
+    LeafPrimitives leafSizes(const FlatTree& tree, const SplitNode& node) const {
+        return LeafStore::sizesOf(prims_, &tree.primitiveIndices[node.primitiveOffset()], node.primitiveCount());
+    }
     // The packet traversals on one level's lanes: kd_packet.cpp, compiled once per level.
     template <SimdLevel level>
     void tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found, RayCounters& counters) const;
@@ -164,9 +130,8 @@ private:
     // load may still be on its way: an inner node fetches its own cache line again, which is there.
     void prefetchLeafOf(std::uint32_t index) const {
         const SplitNode node = nodes_[index];
-        // As integers: an inner node's offset is its split's bits, no place in leafData_.
-        const auto leafBytes =
-            std::uintptr_t(leafData_.data()) + std::uintptr_t(node.primitiveOffset()) * sizeof(LeafUnit);
+        // As integers: an inner node's offset is its split's bits, no place in leaves_.
+        const auto leafBytes = leaves_.address(node.primitiveOffset());
         const auto nodeBytes = std::uintptr_t(&nodes_[index]);
         const auto* at = reinterpret_cast<const char*>(node.isLeaf() ? leafBytes : nodeBytes);
         for (std::size_t line = 0; line < kLeafPrefetchBytes; line += 64) __builtin_prefetch(at + line);
@@ -178,15 +143,10 @@ private:
     PrimitiveView view_;  // of prims_, which must not change while the tree is used
     Aabb bounds_;
     // As the builder made them, except that a non-empty leaf's primitiveOffset() is where its
-    // LeafPrimitives lies in leafData_, in 16-byte units.
+    // LeafPrimitives lies in leaves_, in 16-byte units.
     std::vector<SplitNode> nodes_;
-    struct alignas(16) LeafUnit {
-        std::byte bytes[16];
-    };
-    UninitializedVector<LeafUnit> leafData_;  // sized, then written in parallel (layOutLeaves)
-    const LeafPrimitives& leafAt(std::uint32_t unit) const {
-        return *std::launder(reinterpret_cast<const LeafPrimitives*>(&leafData_[unit]));
-    }
+    LeafStore leaves_;  // sized, then written in parallel (layOutLeaves)
+    const LeafPrimitives& leafAt(std::uint32_t unit) const { return leaves_.at(unit); }
     AccelStats stats_;
 };
 

@@ -106,6 +106,10 @@ inline RealLanes lessEqual(RealLanes a, RealLanes b) { return {_mm_cmple_pd(a.v,
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
     return {_mm_or_pd(_mm_and_pd(mask.v, a.v), _mm_andnot_pd(mask.v, b.v))};
 }
+// For the BVH's slab tests (accel/bvh_traversal.cpp): a < b ? a : b and a > b ? a : b, lane by
+// lane, so b where either is NaN (as the instructions of every level answer).
+inline RealLanes minimum(RealLanes a, RealLanes b) { return {_mm_min_pd(a.v, b.v)}; }
+inline RealLanes maximum(RealLanes a, RealLanes b) { return {_mm_max_pd(a.v, b.v)}; }
 
 #elif RT_SIMD_SSE2
 
@@ -132,6 +136,8 @@ inline RealLanes lessEqual(RealLanes a, RealLanes b) { return {_mm_cmple_ps(a.v,
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
     return {_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v))};
 }
+inline RealLanes minimum(RealLanes a, RealLanes b) { return {_mm_min_ps(a.v, b.v)}; }
+inline RealLanes maximum(RealLanes a, RealLanes b) { return {_mm_max_ps(a.v, b.v)}; }
 
 #else
 
@@ -195,6 +201,12 @@ inline RealLanes lessEqual(RealLanes a, RealLanes b) {
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
     return {{mask.v[0] != 0 ? a.v[0] : b.v[0], mask.v[1] != 0 ? a.v[1] : b.v[1], mask.v[2] != 0 ? a.v[2] : b.v[2],
              mask.v[3] != 0 ? a.v[3] : b.v[3]}};
+}
+inline RealLanes minimum(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return x < y ? x : y; });
+}
+inline RealLanes maximum(RealLanes a, RealLanes b) {
+    return eachLane(a, b, [](Real x, Real y) { return x > y ? x : y; });
 }
 
 #endif
@@ -263,6 +275,8 @@ RT_SIMD_COMPARISONS(RT_AVX2_COMPARE)
 inline unsigned laneBits(RealLanes mask) { return unsigned(RT_AVX2_OP(movemask)(mask.v)); }
 inline RealLanes squareRoot(RealLanes a) { return {RT_AVX2_OP(sqrt)(a.v)}; }
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) { return {RT_AVX2_OP(blendv)(b.v, a.v, mask.v)}; }
+inline RealLanes minimum(RealLanes a, RealLanes b) { return {RT_AVX2_OP(min)(a.v, b.v)}; }
+inline RealLanes maximum(RealLanes a, RealLanes b) { return {RT_AVX2_OP(max)(a.v, b.v)}; }
 // The lanes of two SSE2 registers' worth, `low` in the lower half: two leaf blocks tested at once
 // (accel/kd_single.cpp).
 #if defined(RT_REAL_FLOAT)
@@ -288,7 +302,7 @@ RT_AVX512_BEGIN
 using simd_avx2::kLanes;
 using simd_avx2::loadLanes, simd_avx2::broadcast, simd_avx2::storeLanes, simd_avx2::andNot, simd_avx2::squareRoot,
     simd_avx2::lessThan, simd_avx2::lessEqual, simd_avx2::notLessThan, simd_avx2::notGreaterThan, simd_avx2::notEqual,
-    simd_avx2::laneBits, simd_avx2::select;
+    simd_avx2::laneBits, simd_avx2::select, simd_avx2::minimum, simd_avx2::maximum;
 using simd_avx2::RealLanes;
 
 #else
@@ -309,8 +323,10 @@ RT_SIMD_ONE_INTRINSIC_OPERATIONS(RT_AVX512_OP)
 RT_SIMD_COMPARISONS(RT_AVX512_COMPARE)
 inline __mmask8 kMask(RealLanes mask) { return _mm512_movepi64_mask(_mm512_castpd_si512(mask.v)); }
 inline unsigned laneBits(RealLanes mask) { return kMask(mask); }
-// The zero-masked form: GCC 12's plain one reads an undefined register (-Wuninitialized).
+// The zero-masked forms: GCC 12's plain ones read an undefined register (-Wuninitialized).
 inline RealLanes squareRoot(RealLanes a) { return {_mm512_maskz_sqrt_pd(__mmask8(0xff), a.v)}; }
+inline RealLanes minimum(RealLanes a, RealLanes b) { return {_mm512_maskz_min_pd(__mmask8(0xff), a.v, b.v)}; }
+inline RealLanes maximum(RealLanes a, RealLanes b) { return {_mm512_maskz_max_pd(__mmask8(0xff), a.v, b.v)}; }
 inline RealLanes select(RealLanes mask, RealLanes a, RealLanes b) {
     return {_mm512_mask_blend_pd(kMask(mask), b.v, a.v)};
 }

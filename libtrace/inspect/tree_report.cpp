@@ -101,6 +101,10 @@ void writeSettingsJson(JsonWriter& json, const AccelSettings& settings, std::uin
         json.member("split", kdSplitMethodName(settings.kd.splitMethod));
         json.member("samples", settings.kd.samples);
         json.member("minimumGain", settings.kd.minimumGain);
+    } else if (settings.kind == AccelKind::Bvh) {
+        json.member("maxLeafPrimitives", settings.bvh.maxLeafPrimitives);
+        json.member("traversalCost", settings.bvh.traversalCost);
+        json.member("intersectionCost", settings.bvh.intersectionCost);
     }
     json.endObject();
 }

@@ -55,7 +55,7 @@ if command -v dot >/dev/null; then dot -Tsvg "$WORK/stdout" >/dev/null || fail "
 # --tree all writes one file per tree, and -f names them.
 expect_exit 0 "$RT_INSPECT" --tree all --dump json -f "$WORK/tree.json" --dump-leaves "$WORK/l.obj" \
     "$WORK/two_clusters.xml"
-for t in bsp kd; do
+for t in bsp kd bvh; do
     [ -s "$WORK/tree-$t.json" ] || fail "no tree-$t.json"
     grep -q "\"structure\": \"$t" "$WORK/tree-$t.json" || fail "tree-$t.json is not the $t tree"
     check_obj "$WORK/l-$t.obj" >/dev/null || fail "l-$t.obj is not a wireframe OBJ"

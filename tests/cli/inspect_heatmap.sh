@@ -27,7 +27,8 @@ done
 
 # Several trees: one picture each, on one shared scale.
 expect_exit 0 "$RT_INSPECT" --tree all --heatmap "$WORK/pair.png" -x 64 -y 48 --heatmap-scale log "$WORK/dense_left.xml"
-[ -s "$WORK/pair-bsp.png" ] && [ -s "$WORK/pair-kd.png" ] || fail "--tree all should write pair-bsp.png and pair-kd.png"
+[ -s "$WORK/pair-bsp.png" ] && [ -s "$WORK/pair-kd.png" ] && [ -s "$WORK/pair-bvh.png" ] ||
+    fail "--tree all should write pair-bsp.png, pair-kd.png and pair-bvh.png"
 [ ! -e "$WORK/pair.png" ] || fail "pair.png should not exist"
 # --heatmap-rays all adds each pixel's shadow rays to its camera rays: on one fixed scale
 # (--heatmap-max), the picture is nowhere cooler and somewhere warmer.

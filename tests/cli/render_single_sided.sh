@@ -24,7 +24,7 @@ centre() {
 # Whether "r g b" ($1) lies within 0.05 of $2 in every channel (the path tracer's glossy share).
 near() { awk -v a="$1" -v b="$2" 'BEGIN {split(a, x, " "); split(b, y, " ");
     for (i = 1; i <= 3; ++i) if (x[i] - y[i] > 0.05 || y[i] - x[i] > 0.05) exit 1}'; }
-for options in "--accel naive" "--accel bsp" "--accel kd" "--integrator path -S 4"; do
+for options in "--accel naive" "--accel bsp" "--accel kd" "--accel bvh" "--integrator path -S 4"; do
     # shellcheck disable=SC2086
     {
         front=$(centre 5 false $options)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel/bsp.h"
+#include "accel/bvh.h"
 #include "accel/kdtree.h"
 #include "accel/naive.h"
 #include "core/random.h"
@@ -84,6 +85,10 @@ std::vector<std::unique_ptr<Accelerator>> allTrees(const Primitives& prims) {
     KdSettings binned;  // the binning of the large nodes, here in every node of 16 primitives or more
     binned.binningMinimum = 16;
     trees.push_back(buildKdTree(prims, binned));
+    trees.push_back(buildBvh(prims, BvhSettings{}));
+    BvhSettings singles;  // a leaf per primitive: the most boxes between a ray and its hit
+    singles.maxLeafPrimitives = 1;
+    trees.push_back(buildBvh(prims, singles));
     return trees;
 }
 

@@ -41,7 +41,7 @@ TEST(Names, EveryTableReadsBackWhatItWrites) {
 }
 
 TEST(Names, ListedInTheTablesOrder) {
-    EXPECT_EQ(namesOf(kAccelKindNames), (std::vector<std::string>{"naive", "bsp", "kd"}));
+    EXPECT_EQ(namesOf(kAccelKindNames), (std::vector<std::string>{"naive", "bsp", "kd", "bvh"}));
     EXPECT_STREQ(accelKindName(AccelKind::Bsp), "bsp");
     EXPECT_EQ(parseKdSplitMethod("sample"), KdSplitMethod::Sample);
 }

@@ -135,11 +135,11 @@ inline Scene cylindersAndCones() {
     return s;
 }
 
-// The naive list, the BSP and the KD tree over `prims`, each with `filter` (may be null): the
-// three every agreement test compares.
+// The naive list, the BSP tree, the KD tree and the BVH over `prims`, each with `filter` (may be
+// null): the four every agreement test compares.
 inline std::vector<std::unique_ptr<Accelerator>> everyAccelerator(const Primitives& prims, const HitFilter* filter) {
     std::vector<std::unique_ptr<Accelerator>> accels;
-    for (AccelKind kind : {AccelKind::Naive, AccelKind::Bsp, AccelKind::Kd}) {
+    for (AccelKind kind : {AccelKind::Naive, AccelKind::Bsp, AccelKind::Kd, AccelKind::Bvh}) {
         AccelSettings settings;
         settings.kind = kind;
         accels.push_back(buildAccelerator(prims, settings));

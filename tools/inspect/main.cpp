@@ -14,7 +14,7 @@ using rt::tool::addNamedOption;
 std::vector<rt::AccelKind> treesNamed(const std::string& name) {
     // "all" means the trees; the naive list is the reference, and tracing a real scene
     // through it takes hours, so it is inspected only by name.
-    if (name == "all") return {rt::AccelKind::Bsp, rt::AccelKind::Kd};
+    if (name == "all") return {rt::AccelKind::Bsp, rt::AccelKind::Kd, rt::AccelKind::Bvh};
     return {*rt::parseAccelKind(name)};
 }
 
@@ -22,10 +22,10 @@ std::vector<rt::AccelKind> treesNamed(const std::string& name) {
 
 int main(int argc, char** argv) {
     CLI::App app{
-        "Shows how the KD and BSP trees of a scene look and perform.\n"
+        "Shows how the BSP and KD trees and the BVH of a scene look and perform.\n"
         "Examples:\n"
         "  rt-inspect scenes/demo.xml                     the KD tree's statistics and the scene's bounds\n"
-        "  rt-inspect model.glb --tree all --rays -x 320 -y 240   BSP against KD, the work per ray\n"
+        "  rt-inspect model.glb --tree all --rays -x 320 -y 240   BSP, KD and BVH: the work per ray\n"
         "  rt-inspect scene.xml --heatmap heat.png        where the camera rays' work goes\n"
         "  rt-inspect scene.xml --dump dot -f tree.dot --max-depth 6\n"
         "  rt-inspect scene.xml --json > report.json\n"};
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
     app.add_option("scene", o.scenePath, rt::tool::kSceneHelp)->required();
     std::vector<std::string> treeNames = rt::namesOf(rt::kAccelKindNames);
     treeNames.push_back("all");
-    app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, or all (bsp and kd)")
+    app.add_option("-t,--tree", tree, "Which structure: naive, bsp, kd, bvh, or all (bsp, kd and bvh)")
         ->check(CLI::IsMember(treeNames))
         ->capture_default_str();
     app.add_flag("--json", o.json, "Print the statistics as one JSON document");
