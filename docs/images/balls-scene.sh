@@ -3,7 +3,7 @@
 # Haines's sphereflake, scenes/thesis/README.md) to standard output, its spheres inline. Used for
 # the heat maps in the README (docs/rt-inspect.md):
 #   docs/images/balls-scene.sh >balls.xml
-#   rt-inspect --tree all --heatmap docs/images/heatmap.png balls.xml   # heatmap-bsp.png, heatmap-kd.png
+#   rt-inspect --tree all --heatmap docs/images/heatmap.png balls.xml   # heatmap-bsp.png, -kd.png, -bvh.png
 # The same as `rt-convert --generate balls -o -` (its summary goes to standard error), with
 # rt-convert taken from $RT_CONVERT, the PATH or this checkout's release build.
 set -euo pipefail
