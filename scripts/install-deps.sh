@@ -13,10 +13,11 @@ packages=(
     cmake ninja-build g++ pkg-config ccache
     libassimp-dev libtinygltf-dev libtinyobjloader-dev libopenimageio-dev libopencolorio-dev libcli11-dev
     libpugixml-dev libgtest-dev libbenchmark-dev  # configuring the release preset finds these two
+    openimageio-tools  # Debian's OpenImageIO CMake package names its programs: configuring fails without them
 )
 if [ "${1:-}" != --build ]; then
     packages+=(
-        openimageio-tools opencolorio-tools
+        opencolorio-tools
         clang-format-14  # the `format` test: scripts/check-format.sh against .clang-format
         python3 python3-jsonschema  # tests/cli: JSON checks; json_schema.sh validates against docs/schema
         libsdl2-dev xvfb  # rt-render -o sdl; tests/cli/render_sdl.sh opens its window in Xvfb
