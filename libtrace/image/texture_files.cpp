@@ -83,6 +83,10 @@ private:
     std::vector<OIIO::TextureSystem*> idle_;
 };
 
+struct SystemReturn {
+    void operator()(OIIO::TextureSystem* system) const { TextureSystemPool::give(system); }
+};
+
 // The most anisotropy a lookup's filter takes (TextureOpt::anisotropic; OpenImageIO probes up to
 // twice as many points along the footprint, on each of two MIP levels). OpenImageIO's default, 32,
 // took up to 63 probes a level; a camera ray's 8 (15 probes, about a GPU's 16x) and a ray cone's 3
@@ -112,7 +116,6 @@ struct TextureFiles::Impl {
         // instructions a lookup. Empty for any other picture.
         std::vector<float> constant;
     };
-    OIIO::TextureSystem* system = nullptr;
     std::string txCache;  // tiled_textures.h; "off" once a copy could not be made
     std::uint64_t txCacheBytes = 0;
     std::function<void(const std::string&)> announce;  // TextureCacheSettings::announce
@@ -121,6 +124,9 @@ struct TextureFiles::Impl {
     // Readers of the embedded images and their bytes, alive as long as the system, which may reopen them.
     std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> memoryReaders;
     std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> embeddedBytes;
+    // Given back to the pool however the TextureFiles ends, a constructor that throws included; declared
+    // after what it reads so that it is emptied before they go.
+    std::unique_ptr<OIIO::TextureSystem, SystemReturn> system{TextureSystemPool::take()};
 
     // The first three channels at `at` as stored (a grey image's one in all three), filtered
     // over the footprint its derivatives give (mip-mapped, anisotropic up to kCameraProbes; a ray
@@ -300,7 +306,6 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
     static std::atomic<std::uint64_t> serials{0};
     impl_->instanceSerial = ++serials;
-    impl_->system = TextureSystemPool::take();
     impl_->system->attribute("max_memory_MB", cache.megabytes);
     impl_->txCache = cache.txCache;
     impl_->txCacheBytes = std::uint64_t(cache.txCacheMegabytes * 1024 * 1024);
@@ -310,7 +315,7 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
         impl_->entries.push_back(impl_->open(scene.textures[i], i, warnings));
 }
 
-TextureFiles::~TextureFiles() { TextureSystemPool::give(impl_->system); }
+TextureFiles::~TextureFiles() = default;
 
 Color TextureFiles::lookup(std::uint32_t index, const TexCoord& at) const {
     const Impl::Entry& e = impl_->entries[index];
