@@ -12,14 +12,15 @@ set -euo pipefail
 
 # folder   | layers it may use (lowest first)  | third-party headers it may include
 readonly TABLE='
-core       |                                   |
-geometry   | core                              |
-accel      | core geometry                     |
-scene      | core geometry                     | pugixml.hpp
-import     | core geometry scene               | assimp/ tiny_gltf.h tiny_obj_loader.h
-render     | core geometry accel scene         |
-image      | core geometry accel scene render  | OpenImageIO/ OpenColorIO/
-inspect    | core geometry accel scene render  |
+core       |                                      |
+os         | core                                 |
+geometry   | core                                 |
+accel      | core geometry                        |
+scene      | core os geometry                     | pugixml.hpp
+import     | core os geometry scene               | assimp/ tiny_gltf.h tiny_obj_loader.h
+render     | core geometry accel scene            |
+image      | core os geometry accel scene render  | OpenImageIO/ OpenColorIO/
+inspect    | core geometry accel scene render     |
 '
 # Headers CMake generates into the build folder, which any layer may include.
 readonly GENERATED='version.h builtin_color_config.h'

@@ -11,11 +11,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/text.h"
 #include "image/ascii_art.h"
 #include "image/oiio_file.h"
+#include "os/atomic_file.h"
 
 namespace rt {
 

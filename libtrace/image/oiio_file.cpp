@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "core/atomic_file.h"
+#include "os/atomic_file.h"
 
 namespace rt {
 

@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/atomic_file.h"
+#include "os/atomic_file.h"
 
 namespace rt {
 

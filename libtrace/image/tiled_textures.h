@@ -12,7 +12,7 @@
 // "rt-tx-copies", which rt-render creates with a marker file, and the cache removes nothing but
 // files named as it names copies, in that subfolder, under that marker.
 //
-// Copies are made in a temporary folder (core/atomic_file.h: removed on SIGINT and SIGTERM, and
+// Copies are made in a temporary folder (os/atomic_file.h: removed on SIGINT and SIGTERM, and
 // by a later render once stale) and renamed into the cache: renders never read half a copy. The
 // cache is bounded: before a new copy is added, the least recently used copies are removed until
 // all fit in the bound, except copies in use. A render holds a shared flock on every copy it uses

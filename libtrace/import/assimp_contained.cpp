@@ -2,8 +2,8 @@
 
 #include <assimp/scene.h>
 
-#include "core/contained.h"
 #include "import/assimp_reply.h"
+#include "os/contained.h"
 
 namespace rt {
 namespace {

@@ -1,4 +1,4 @@
-// Assimp in a child process (core/contained.h): some broken PLY, STL and 3DS files make it
+// Assimp in a child process (os/contained.h): some broken PLY, STL and 3DS files make it
 // abort, crash, hang or ask for tens of gigabytes (docs/robustness.md), so every read runs
 // apart, and the scene comes back as a reply of rt's own (import/assimp_reply.h) that the tool
 // reads with every count checked. Both Assimp paths use it: importAssimp and a scene's 3ds models.

@@ -10,8 +10,8 @@
 #include <streambuf>
 #include <vector>
 
-#include "core/atomic_file.h"
 #include "core/error.h"
+#include "os/atomic_file.h"
 #include "scene/input_file.h"
 
 namespace rt {

@@ -36,7 +36,7 @@ Model readRawBytes(std::span<const std::uint8_t> bytes, const std::string& name)
 // holds one kind of primitive, so a model with both triangles and spheres, or with per-corner
 // arrays that do not cover its triangles, throws std::invalid_argument; an empty model is "T", 0.
 void writeRaw(std::ostream& out, const Model& model);
-// writeRaw to a file, atomically (core/atomic_file.h).
+// writeRaw to a file, atomically (os/atomic_file.h).
 void writeRawFile(const std::string& path, const Model& model);
 
 }  // namespace rt

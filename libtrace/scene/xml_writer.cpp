@@ -8,7 +8,7 @@
 #include <span>
 #include <sstream>
 
-#include "core/atomic_file.h"
+#include "os/atomic_file.h"
 #include "scene/base64.h"
 #include "scene/raw_model.h"
 #include "scene/unique_names.h"

@@ -1,5 +1,5 @@
 # The files of shared/models/hostile/assimp-mutants make Assimp abort, crash, hang or ask for
-# tens of gigabytes; rt reads through Assimp in a child process (core/contained.h), so each
+# tens of gigabytes; rt reads through Assimp in a child process (os/contained.h), so each
 # tool answers every one with exit 2 and one "TOOL ERROR: FILE: ..." line, within 10 s and 1 GB
 # (peak resident memory of the tool and its child; not measured in a sanitizer build), and
 # writes nothing.

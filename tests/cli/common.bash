@@ -35,7 +35,7 @@ expect_one_error() {
 }
 
 # wait_for_temporary FOLDER PATTERN: waits up to 60 s for a file matching PATTERN in FOLDER (a
-# temporary held by the test hook RT_TEST_WRITE_DELAY_MS, core/atomic_file.h) and prints its name.
+# temporary held by the test hook RT_TEST_WRITE_DELAY_MS, os/atomic_file.h) and prints its name.
 wait_for_temporary() {
     local name
     for _ in $(seq 600); do

@@ -86,7 +86,7 @@ jobs_gone() { [ -z "$(squeue -h -j "$1" 2>/dev/null)" ]; }
 opts=(-K -s -d 3 -x 96 -y 64 -S 2 -D b -r 4)
 "$RT_RENDER" "$WORK/balls.xml" "${opts[@]}" -q --exr-pixels float -f "$WORK/direct.exr"
 
-# Every write is held 1 s (the test hook of core/atomic_file.h, passed to the tasks by sbatch's
+# Every write is held 1 s (the test hook of os/atomic_file.h, passed to the tasks by sbatch's
 # --export=ALL), so that a task is caught running.
 RT_TEST_WRITE_DELAY_MS=1000 "$farm" submit "$WORK/balls.xml" "${opts[@]}" --tiles 4x4 -o "$WORK/out" \
     --cpus-per-task 1 >"$WORK/ids" 2>"$WORK/submit.log" || fail "submit failed: $(cat "$WORK/submit.log")"

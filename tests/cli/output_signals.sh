@@ -1,7 +1,7 @@
 # SIGINT and SIGTERM in the middle of a write remove the temporary (a file for rt-render, a file
 # and a folder of RAW models for rt-convert), leave the previous output as it was, and end the
 # process by that signal (exit status 128+N). The test hook RT_TEST_WRITE_DELAY_MS
-# (core/atomic_file.h) holds the written temporaries before their rename, so the kill lands there.
+# (os/atomic_file.h) holds the written temporaries before their rename, so the kill lands there.
 source "$(dirname "$0")/common.bash"
 scene="$RT_SOURCE_DIR/scenes/demo.xml"
 mkdir -p "$WORK/out"

@@ -23,7 +23,7 @@ kill -KILL "$pid"
 wait "$pid" 2>/dev/null || true
 unchanged "killed render"
 
-# Killed while the file is being written: the test hook RT_TEST_WRITE_DELAY_MS (core/atomic_file.h)
+# Killed while the file is being written: the test hook RT_TEST_WRITE_DELAY_MS (os/atomic_file.h)
 # holds the written temporary before its rename, long enough to kill the process then.
 RT_TEST_WRITE_DELAY_MS=60000 "$RT_RENDER" "$scene" -q -x 64 -y 48 -d 1 -f "$out" &
 pid=$!

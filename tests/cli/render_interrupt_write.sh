@@ -66,7 +66,7 @@ for signal in INT TERM; do
     written "SIG$signal"
 done
 
-# A second SIGINT abandons the write (held by the test hook RT_TEST_WRITE_DELAY_MS, core/atomic_file.h).
+# A second SIGINT abandons the write (held by the test hook RT_TEST_WRITE_DELAY_MS, os/atomic_file.h).
 cp "$WORK/before.exr" "$WORK/out/picture.exr"
 RT_TEST_WRITE_DELAY_MS=60000 env --default-signal=INT "$RT_RENDER" "$scene" "${path[@]}" -S 1000000 --on-interrupt write \
     -f "$WORK/out/picture.exr" 2>"$WORK/stderr" &

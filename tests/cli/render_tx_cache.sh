@@ -46,7 +46,7 @@ grep -q "warning: texture 'checker': no tiled copy (.*): textures are read as th
 expect_exit 2 "$RT_RENDER" "$WORK/square.obj" --tx-cache-size 0 -f "$WORK/never.png"
 expect_one_error rt-render "tx-cache-size"
 
-# kill_maker SIGNAL: starts a render whose copy the test hook RT_TEST_WRITE_DELAY_MS (core/atomic_file.h)
+# kill_maker SIGNAL: starts a render whose copy the test hook RT_TEST_WRITE_DELAY_MS (os/atomic_file.h)
 # holds in its temporary folder in $WORK/killed, sends SIGNAL there and checks the exit status.
 kill_maker() {
     RT_TEST_WRITE_DELAY_MS=60000 env --default-signal=INT "$RT_RENDER" "$WORK/square.obj" -x 40 -y 30 \

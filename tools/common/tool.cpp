@@ -8,9 +8,9 @@
 #include <new>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/real.h"
+#include "os/atomic_file.h"
 #include "version.h"
 
 namespace rt::tool {

@@ -16,7 +16,7 @@ constexpr int kExitBadInput = 2;
 std::string versionLine(const std::string& toolName);
 
 // Runs the body of a tool, with the temporaries of its outputs removed on SIGINT and SIGTERM
-// (core/atomic_file.h). An rt::InputError prints "tool ERROR: message" and returns 2;
+// (os/atomic_file.h). An rt::InputError prints "tool ERROR: message" and returns 2;
 // any other exception prints the same shape and returns 1, and so does standard output that
 // could not be written (a full device, a closed stream): everything the body printed there
 // is flushed and checked before run returns.

@@ -6,10 +6,10 @@
 #include <iostream>
 
 #include "command_line.h"
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/text.h"
 #include "import/import.h"
+#include "os/atomic_file.h"
 #include "scene/thesis_scenes.h"
 #include "scene/xml_writer.h"
 #include "summary.h"
@@ -51,7 +51,7 @@ int convert(Options& o) {
     if (!o.output.empty()) rt::prepareOutputFile(o.output);
     rt::ImportResult result = o.generate.empty() ? rt::importScene(o.input, o.import) : generateThesisScene(o.generate);
     for (std::string& note : rt::unreadableTextureNotes(result.scene)) result.report.notes.push_back(std::move(note));
-    if (!o.output.empty()) rt::saveSceneXml(result.scene, o.output);  // all or nothing (core/atomic_file.h)
+    if (!o.output.empty()) rt::saveSceneXml(result.scene, o.output);  // all or nothing (os/atomic_file.h)
     const rt::tool::convert::Summary summary{o.generate.empty() ? o.input : o.generate, o.output, &result};
     if (!o.quiet) rt::tool::convert::printSummary(std::cerr, summary);
     if (o.json) rt::tool::convert::printSummaryJson(std::cout, summary);

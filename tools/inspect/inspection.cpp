@@ -6,7 +6,6 @@
 #include <memory>
 
 #include "accel/build.h"
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "image/heatmap_png.h"
 #include "image/image_output.h"
@@ -15,6 +14,7 @@
 #include "inspect/leaf_boxes_obj.h"
 #include "inspect/tree_dump.h"
 #include "inspect/tree_report.h"
+#include "os/atomic_file.h"
 #include "render/memory_estimate.h"
 #include "tool.h"
 #include "version.h"

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "accel/build.h"
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "core/text.h"
@@ -19,6 +18,7 @@
 #include "image/tiled_textures.h"
 #include "import/load_scene.h"
 #include "light_option.h"
+#include "os/atomic_file.h"
 #include "progress.h"
 #include "render/environment_light.h"
 #include "render/material_filter.h"

@@ -7,7 +7,7 @@
 #include <cstdlib>
 
 #include "core/json_writer.h"
-#include "core/peak_memory.h"
+#include "os/peak_memory.h"
 #include "version.h"
 
 namespace rt::tool::render {

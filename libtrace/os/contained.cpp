@@ -1,4 +1,4 @@
-#include "core/contained.h"
+#include "os/contained.h"
 
 #include <fcntl.h>
 #include <poll.h>

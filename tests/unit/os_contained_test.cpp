@@ -1,4 +1,4 @@
-// A parser run in a child process (core/contained.h): what it returns comes back; whatever it
+// A parser run in a child process (os/contained.h): what it returns comes back; whatever it
 // does wrong (an abort, a loop, a wait, a huge allocation, a flood of output) becomes one
 // rt::InputError naming the file and the parser, in bounded time.
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "core/contained.h"
 #include "core/error.h"
+#include "os/contained.h"
 
 namespace rt {
 namespace {
