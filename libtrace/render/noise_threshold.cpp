@@ -14,8 +14,7 @@ NoiseThreshold::NoiseThreshold(const RenderSettings& settings)
 
 bool NoiseThreshold::stopped(const PixelEstimate& pixel) const {
     if (!enabled() || pixel.samples < minSamples_) return false;
-    const bool checked = (pixel.samples - minSamples_) % kNoiseCheckInterval == 0;
-    return checked && relativeError(pixel) < threshold_;
+    return pixel.samples % kNoiseCheckInterval == 0 && relativeError(pixel) < threshold_;
 }
 
 float NoiseThreshold::relativeError(const PixelEstimate& pixel) {

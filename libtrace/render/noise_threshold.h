@@ -5,10 +5,11 @@
 // own samples (render/pixel_estimate.h); kDarkLuminance keeps nearly black pixels, whose
 // relative error is undefined, from taking every sample for noise no one sees.
 //
-// A pixel is judged only at fixed sample counts (after adaptiveMinSamples, then every
-// kNoiseCheckInterval samples: Cycles' rounds), and only from its own samples, which are the same
-// whatever thread, block or region traces it. So a pixel stops after the same sample whatever the
-// thread count or region split, and the picture keeps its bits. A pixel it stopped still holds
+// A pixel is judged only at fixed sample counts, the multiples of kNoiseCheckInterval from
+// adaptiveMinSamples on (Cycles' rounds; the pixel's Sobol samples, render/sobol_sampler.h, are
+// stratified in aligned blocks of 16, which a pixel that stops at a block's end keeps whole), and
+// only from its own samples, which are the same whatever thread, block or region traces it. So a pixel stops after the
+// same sample whatever the thread count or region split, and the picture keeps its bits. A pixel it stopped still holds
 // every sample it took, so its mean stays unbiased; the stop adds the small bias of any
 // sequential test (a pixel whose early samples happen to agree stops early), which the minimum
 // keeps small.
@@ -19,8 +20,8 @@
 
 namespace rt {
 
-// Samples between two checks of a pixel after the first, at adaptiveMinSamples.
-inline constexpr int kNoiseCheckInterval = 8;
+// A pixel is judged at the multiples of this count of samples (once it has adaptiveMinSamples).
+inline constexpr int kNoiseCheckInterval = 16;
 
 // Added to a pixel's mean luminance in the relative error (see the file comment).
 inline constexpr float kDarkLuminance = 0.01f;

@@ -56,19 +56,19 @@ TEST(RenderNoiseThreshold, MinimumSamplesFollowCyclesRule) {
 
 TEST(RenderNoiseThreshold, APixelIsJudgedAtTheMinimumAndThenEveryRound) {
     RenderSettings settings = adaptivePicture(4, 64, 0.05f);
-    settings.adaptiveMinSamples = 4;
+    settings.adaptiveMinSamples = 20;
     const NoiseThreshold noise(settings);
     PixelEstimate constant;
-    for (int i = 0; i < 3; ++i) constant.add({0.5f, 0.5f, 0.5f}, true);
+    for (int i = 0; i < 16; ++i) constant.add({0.5f, 0.5f, 0.5f}, true);
     EXPECT_FALSE(noise.stopped(constant)) << "below the minimum";
-    constant.add({0.5f, 0.5f, 0.5f}, true);
-    EXPECT_TRUE(noise.stopped(constant)) << "no noise at the minimum";
-    constant.add({0.5f, 0.5f, 0.5f}, true);
-    EXPECT_FALSE(noise.stopped(constant)) << "5 samples: not a round";
+    for (int i = 16; i < 20; ++i) constant.add({0.5f, 0.5f, 0.5f}, true);
+    EXPECT_FALSE(noise.stopped(constant)) << "20 samples: not a round";
+    for (int i = 20; i < 32; ++i) constant.add({0.5f, 0.5f, 0.5f}, true);
+    EXPECT_TRUE(noise.stopped(constant)) << "no noise at the first round";
 
     PixelEstimate noisy;  // 0 and 1 alternating: luminance mean 0.5, standard error 0.5 / sqrt(n - 1)
-    for (int i = 0; i < 4 + kNoiseCheckInterval; ++i) noisy.add({float(i % 2), float(i % 2), float(i % 2)}, true);
-    EXPECT_NEAR(NoiseThreshold::relativeError(noisy), std::sqrt(0.25 * 12 / 11 / 12) / 0.51, 1e-5);
+    for (int i = 0; i < 32; ++i) noisy.add({float(i % 2), float(i % 2), float(i % 2)}, true);
+    EXPECT_NEAR(NoiseThreshold::relativeError(noisy), std::sqrt(0.25 * 32 / 31 / 32) / 0.51, 1e-5);
     EXPECT_FALSE(noise.stopped(noisy));
 }
 
@@ -85,7 +85,7 @@ TEST(RenderNoiseThreshold, TheWhittedIntegratorRefusesIt) {
 }
 
 // Every pixel stops after the same sample whatever the threads or the region: the same bits, and
-// the samples AOV shows the counts: the minimum, a round after it, or -S.
+// the samples AOV shows the counts: a round (a multiple of 16) from the minimum on, or -S.
 TEST(RenderNoiseThreshold, SameBitsForAnyThreadCountAndRegionSplit) {
     const Scene s = boxInTheDark();
     RenderSettings one = adaptivePicture(24, 64, 0.05f);
@@ -106,7 +106,7 @@ TEST(RenderNoiseThreshold, SameBitsForAnyThreadCountAndRegionSplit) {
     for (int y = 0; y < 24; ++y)
         for (int x = 0; x < 24; ++x) {
             const float n = whole.image.aovsAt(x, y)->samples;
-            ASSERT_TRUE(n == 64 || (n >= 8 && int(n - 8) % kNoiseCheckInterval == 0)) << n;
+            ASSERT_TRUE(n == 64 || (n >= 8 && int(n) % kNoiseCheckInterval == 0)) << n;
             stoppedEarly += n < 64, tookAll += n == 64;
             const PixelWindow& r = *part.region;
             if (x < r.x0 || x >= r.x1 || y < r.y0 || y >= r.y1) continue;
