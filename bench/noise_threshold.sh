@@ -9,7 +9,7 @@
 #                            [--threads 2] [--keep DIR]
 #
 # Method: per scene, a reference of --reference paths per pixel (another seed); uniform renders of
-# 16, 32, ... --max / 4 paths; one adaptive render of at most --max paths a pixel. The error of a
+# 16, 32, ... --max / 2 paths; one adaptive render of at most --max paths a pixel. The error of a
 # picture is the mean over pixels and channels of |x - reference| / (reference + 0.01) (as
 # bench/compare_images.py). The uniform count that gives the adaptive render's error is read off
 # the uniform renders' errors, interpolated in log-log (error falls as a power of the samples);
@@ -45,7 +45,7 @@ render=build/release/tools/render/rt-render
 oiiotool --pattern constant:color=0.5,0.5,0.5 64x32 3 -d float -o "$work/grey.exr"
 
 cornell=("$models/obj/CornellBox-Original/CornellBox-Original.obj" --look-from 0,1,3.9 --look-at 0,1,0 --fov 40)
-duck=("$models/gltf/Duck/Duck.gltf" --no-default-light --environment "$work/grey.exr")
+duck=("$models/gltf/Duck/Duck.gltf" --frame --no-default-light --environment "$work/grey.exr")
 
 # The mean relative error of two float EXRs, over pixels and channels.
 error() {
@@ -74,7 +74,7 @@ run() {
     local common=(-x "$size" -y "$size" --integrator path --threads "$threads" --alpha off --exr-pixels float -q "$@")
     "$render" "${common[@]}" -S "$reference" --seed 1 -f "$work/$name-ref.exr"
     local s curve=""
-    for ((s = 16; s <= max / 4; s *= 2)); do
+    for ((s = 16; s <= max / 2; s *= 2)); do
         "$render" "${common[@]}" -S "$s" -f "$work/$name-$s.exr"
         curve+="$s $(error "$work/$name-$s.exr" "$work/$name-ref.exr")"$'\n'
     done
