@@ -88,7 +88,7 @@ rtSeconds() {
     local json="$1"
     shift
     "$@" --threads "$threads" --stats-json "$json" 2>"$work/last.log" || { cat "$work/last.log" >&2; return 1; }
-    "$python" -c 'import json, sys; print(f"{json.load(open(sys.argv[1]))[\"renderSeconds\"]:.2f}")' "$json"
+    "$python" -c 'import json, sys; print("%.2f" % json.load(open(sys.argv[1]))["renderSeconds"])' "$json"
 }
 
 # Cycles' sampling seconds: cyclesSeconds LOG BLENDER-ARGS... (Blender's standard output goes to LOG)
