@@ -107,7 +107,8 @@ TEST(RenderNoiseThreshold, SameBitsForAnyThreadCountAndRegionSplit) {
         for (int x = 0; x < 24; ++x) {
             const float n = whole.image.aovsAt(x, y)->samples;
             ASSERT_TRUE(n == 64 || (n >= 8 && int(n) % kNoiseCheckInterval == 0)) << n;
-            stoppedEarly += n < 64, tookAll += n == 64;
+            stoppedEarly += n < 64;
+            tookAll += n == 64;
             const PixelWindow& r = *part.region;
             if (x < r.x0 || x >= r.x1 || y < r.y0 || y >= r.y1) continue;
             ASSERT_EQ(region.image.at(x, y), whole.image.at(x, y)) << x << "," << y;
