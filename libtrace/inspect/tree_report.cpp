@@ -188,6 +188,8 @@ void writePictureJson(JsonWriter& json, const RenderSettings& picture) {
     json.member("distributedSamples", picture.distributedSamples);
     json.member("adaptiveGrid", picture.adaptiveGrid);  // 0: every pixel traced
     json.member("adaptiveThreshold", picture.adaptiveThreshold);
+    json.member("noiseThreshold", picture.noiseThreshold);  // 0: every pixel -S samples
+    json.member("adaptiveMinSamples", picture.adaptiveMinSamples);
     json.endObject();
 }
 

@@ -20,6 +20,7 @@ const std::vector<AovLayer>& aovLayers() {
         {Aov::Id, "id", {"id.material", "id.primitive"}, true},
         {Aov::Cost, "cost", {"cost.steps", "cost.tests", "cost.allSteps", "cost.allTests"}, false},
         {Aov::Variance, "variance", {"variance.R", "variance.G", "variance.B"}, false},
+        {Aov::Samples, "samples", {"samples.count"}, false},
     };
     return layers;
 }
@@ -36,7 +37,8 @@ std::vector<Aov> parseAovList(const std::string& list) {
         const auto& layers = aovLayers();
         const auto it = std::find_if(layers.begin(), layers.end(), [&](const AovLayer& l) { return name == l.name; });
         if (it == layers.end())
-            throw InputError("--aov: unknown AOV '" + name + "' (Z, N, Ng, P, albedo, id, cost, variance or all)");
+            throw InputError("--aov: unknown AOV '" + name +
+                             "' (Z, N, Ng, P, albedo, id, cost, variance, samples or all)");
         wanted[std::size_t(it - layers.begin())] = true;
     }
     std::vector<Aov> aovs;
@@ -86,6 +88,7 @@ PixelAovs AovSums::mean(const Color& varianceOfMean) const {
     a.allSteps = float(allSteps_) * perSample;
     a.allTests = float(allTests_) * perSample;
     a.variance = varianceOfMean;
+    a.samples = float(samples_);
     return a;
 }
 
@@ -105,6 +108,8 @@ std::vector<float> aovValues(const PixelAovs& a, Aov aov) {
             return {a.steps, a.tests, a.allSteps, a.allTests};
         case Aov::Variance:
             return {a.variance.r, a.variance.g, a.variance.b};
+        case Aov::Samples:
+            return {a.samples};
         case Aov::Id:
             break;
     }

@@ -6,7 +6,9 @@
 // intersection tests of the pixel's camera rays, and of every ray they spawned (a whole path
 // with the path tracer). Both integrators sum them in AovSums, sample by sample. The variance
 // layer is a noise figure: the variance of the pixel's mean colour, per channel, estimated from
-// its samples (render/pixel_estimate.h); it falls as 1/N with N samples, and is 0 with one.
+// its samples (render/pixel_estimate.h); it falls as 1/N with N samples, and is 0 with one. The
+// samples layer is the pixel's count of camera samples: -S everywhere, except where the path
+// tracer's --noise-threshold stopped a pixel early (render/noise_threshold.h).
 #pragma once
 
 #include <cstdint>
@@ -22,7 +24,7 @@ struct RenderCounters;
 struct Scene;
 struct SurfacePoint;
 
-enum class Aov { Z, N, Ng, P, Albedo, Id, Cost, Variance };
+enum class Aov { Z, N, Ng, P, Albedo, Id, Cost, Variance, Samples };
 
 struct AovLayer {
     Aov aov;
@@ -53,6 +55,7 @@ struct PixelAovs {
     float steps = 0, tests = 0;        // per camera ray: its own traversal steps and tests
     float allSteps = 0, allTests = 0;  // per camera ray: with every shadow and reflection ray it spawned
     Color variance;                    // of the mean colour, per channel
+    float samples = 0;                 // camera samples taken
 };
 
 // A pixel's AOVs summed over its camera samples, taken one at a time in sample order: by the

@@ -21,7 +21,7 @@ constexpr std::uint64_t kAovBytesPerPixel = 160;
 // With the path tracer, which renders in passes (render/renderer.h): each pixel's running
 // estimate (render/pixel_estimate.h) twice, as the finished passes left it and with the pass
 // under way; with --aov also its AovSums (render/aov.h) twice.
-constexpr std::uint64_t kPathPassBytesPerPixel = 96;
+constexpr std::uint64_t kPathPassBytesPerPixel = 104;
 constexpr std::uint64_t kPathAovPassBytesPerPixel = 272;
 // A primitive: the scene's geometry and the KD tree's build at its peak (boxes, events of three
 // axes, the references of both children); the Stanford bunny's 69,451 triangles took 260.

@@ -3,7 +3,9 @@
 // The mean is the plain sum times 1/n, the same float additions in the same order whether
 // the samples come in one loop (Tracer::pixel) or one per pass (the progressive path tracer
 // in render/renderer.cpp): K passes give the bits of -S K. The variance follows Welford's
-// running update (Welford 1962; Knuth TAOCP 2, 4.2.2), stable where sum-of-squares is not.
+// running update (Welford 1962; Knuth TAOCP 2, 4.2.2), stable where sum-of-squares is not; the
+// luminance's own variance (not the channels' weighted sum, which leaves out their covariance) is
+// what --noise-threshold stops a pixel on (render/noise_threshold.h).
 #pragma once
 
 #include "core/color.h"
@@ -14,6 +16,8 @@ struct PixelEstimate {
     Color sum;
     Color runningMean;        // Welford's mean: exact for constant samples, where sum / n may round
     Color squaredDeviations;  // Welford's M2: the sum of squared deviations from the running mean
+    float luminanceMean = 0;  // the same two of the samples' Rec.709 luminance
+    float luminanceSquaredDeviations = 0;
     int samples = 0;
     int hits = 0;  // samples whose camera ray hit something
 
@@ -30,6 +34,9 @@ struct PixelEstimate {
         const Color delta = x + before * -1.0f;
         runningMean += delta * (1.0f / float(samples));
         squaredDeviations += delta * (x + runningMean * -1.0f);
+        const float y = luminance(x), deltaY = y - luminanceMean;
+        luminanceMean += deltaY / float(samples);
+        luminanceSquaredDeviations += deltaY * (y - luminanceMean);
         return finite;
     }
 
@@ -41,6 +48,10 @@ struct PixelEstimate {
     Color varianceOfMean() const {
         if (samples < 2) return {};
         return squaredDeviations * (1.0f / (float(samples - 1) * float(samples)));
+    }
+    // The same for the luminance.
+    float luminanceVarianceOfMean() const {
+        return samples < 2 ? 0.0f : luminanceSquaredDeviations / (float(samples - 1) * float(samples));
     }
 };
 

@@ -51,6 +51,15 @@ void validate(const RenderSettings& s) {
         throw InputError("--adaptive interpolates colour only: AOVs (--aov) need every pixel traced");
     if (s.adaptiveGrid && s.integrator == Integrator::Path)
         throw InputError("--adaptive needs the whitted integrator: it compares the objects the camera rays hit");
+    if (!(s.noiseThreshold >= 0) || !std::isfinite(s.noiseThreshold))
+        throw InputError("--noise-threshold must be a finite number >= 0 (0 is off)");
+    if (s.adaptiveMinSamples != 0 && (s.adaptiveMinSamples < 2 || s.adaptiveMinSamples > kMaxSamples))
+        throw InputError("--adaptive-min-samples must be 0 (chosen from the threshold) or 2-" +
+                         std::to_string(kMaxSamples) + ": a pixel's noise is estimated from two samples or more");
+    if (s.noiseThreshold > 0 && s.integrator != Integrator::Path)
+        throw InputError(
+            "--noise-threshold needs the path integrator (--integrator path): the whitted integrator takes all -S "
+            "samples of a pixel at once");
     if (!(s.timeLimitSeconds >= 0) || s.timeLimitSeconds > kMaxTimeLimit)
         throw InputError("--time-limit must be 0 (none) to " + std::to_string(int(kMaxTimeLimit)) + " seconds");
     if (s.threads < 0) throw InputError("the thread count must not be negative");

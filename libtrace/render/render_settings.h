@@ -49,6 +49,11 @@ struct RenderSettings {
     // adaptiveThreshold (linear colour and alpha) and see the same object is interpolated.
     int adaptiveGrid = 0;
     float adaptiveThreshold = 0.02f;  // --adaptive-threshold
+    // --noise-threshold (render/noise_threshold.h): the path tracer stops sampling a pixel once
+    // the relative standard error of its mean luminance is below this, judged first after
+    // adaptiveMinSamples samples (0: Cycles' rule from the threshold); 0 is off, every pixel -S.
+    float noiseThreshold = 0;
+    int adaptiveMinSamples = 0;  // --adaptive-min-samples: 0 or 2-kMaxSamples
     // --time-limit: seconds after which the render stops; 0 is none. The path tracer keeps its
     // last whole pass (render/renderer.h); a render with no whole pass yet keeps nothing.
     double timeLimitSeconds = 0;

@@ -64,8 +64,12 @@ struct RenderStats {
     int threads = 0;
     RenderCounters counters;
     // The samples every pixel of the picture received: -S, or with --time-limit the whole passes
-    // the path tracer finished (0: not one, or a Whitted render cut short; the picture is not whole).
+    // the path tracer finished (with --noise-threshold: the most any pixel received) (0: not one, or a Whitted render
+    // cut short; the picture is not whole).
     int samplesPerPixel = 0;
+    // The camera samples the picture holds, over all its pixels: the window's pixels times
+    // samplesPerPixel, or fewer where --noise-threshold stopped pixels early.
+    std::uint64_t samplesTaken = 0;
     bool timeLimitReached = false;  // --time-limit stopped the render before all -S samples
 
     double testsPerRay() const {

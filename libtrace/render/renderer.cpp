@@ -12,6 +12,7 @@
 
 #include "core/stopwatch.h"
 #include "render/adaptive.h"
+#include "render/noise_threshold.h"
 #include "render/path_tracer.h"
 #include "render/pixel_estimate.h"
 #include "render/tracer.h"
@@ -184,6 +185,7 @@ Framebuffer renderWhitted(const Tracer& tracer, const Scene& scene, const Render
         },
         settings.pixelSamples, &image);
     loop.finish(scene, whole ? settings.pixelSamples : 0, stats);
+    stats.samplesTaken = whole ? stats.counters.camera.rays : 0;
     return image;
 }
 
@@ -210,30 +212,37 @@ void writePixel(const PassState& state, std::size_t i, int x, int y, Framebuffer
 // traced, in the parallel loop, to a copy of the pixel's state (`next`), so that a pass cut
 // short by --time-limit or the watcher's stop can be dropped whole: the picture goes back to
 // `done`, the passes that finished. The watcher sees the picture after every pass, and may end
-// the render there (endAfterPass).
+// the render there (endAfterPass). With --noise-threshold a pixel whose own samples say it has
+// converged is skipped (render/noise_threshold.h), and the passes end once every pixel has.
 Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
                        const RenderProgress& progress, const RenderWatch& watch) {
     const PixelWindow w = settings.window();
     const bool withAovs = !settings.aovs.empty();
+    const NoiseThreshold noise(settings);
     Framebuffer image(settings.width, settings.height, w, scene.background, withAovs);
     BlockLoop loop(settings, blocksOf(w, kBlockSize), progress, watch);
     PassState done(image.pixels().size(), withAovs), next = done;
     // the pass's non-finite samples, per thread, kept only if the pass is
     std::vector<NonFiniteSamples> passNonFinite(std::size_t(loop.threads()));
+    std::vector<std::uint64_t> stillSampling(std::size_t(loop.threads()));  // pixels not stopped after the pass
     NonFiniteSamples nonFinite;
     int passes = 0;
     bool whole = true;
     for (; passes < settings.pixelSamples; ++passes) {
         std::fill(passNonFinite.begin(), passNonFinite.end(), NonFiniteSamples{});
+        std::fill(stillSampling.begin(), stillSampling.end(), 0);
         whole = loop.run(
             [&](const PixelWindow& b, RenderCounters& counters) {
                 return loop.eachPixel(b, [&](int x, int y) {
                     const std::size_t i = std::size_t(y - w.y0) * std::size_t(w.width()) + std::size_t(x - w.x0);
                     next.estimates[i] = done.estimates[i];
                     AovSums* aovs = withAovs ? &(next.aovs[i] = done.aovs[i]) : nullptr;
+                    if (noise.stopped(done.estimates[i])) return;
+                    const std::size_t thread = std::size_t(omp_get_thread_num());
                     bool seen = false;
                     const Color c = tracer.sample(x, y, passes, counters, seen, aovs);  // before add() reads `seen`
-                    if (!next.estimates[i].add(c, seen)) passNonFinite[std::size_t(omp_get_thread_num())].add(x, y);
+                    if (!next.estimates[i].add(c, seen)) passNonFinite[thread].add(x, y);
+                    stillSampling[thread] += !noise.stopped(next.estimates[i]);
                     writePixel(next, i, x, y, image);
                 });
             },
@@ -242,7 +251,8 @@ Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const Rende
         std::swap(done, next);
         for (const NonFiniteSamples& n : passNonFinite) nonFinite += n;
         if (watch.blockDone) watch.blockDone(image, w);
-        if (watch.endAfterPass && passes + 1 < settings.pixelSamples && watch.endAfterPass()) {
+        const bool converged = std::accumulate(stillSampling.begin(), stillSampling.end(), std::uint64_t(0)) == 0;
+        if (converged || (watch.endAfterPass && passes + 1 < settings.pixelSamples && watch.endAfterPass())) {
             ++passes;  // this one is whole, and the picture holds it
             break;
         }
@@ -254,6 +264,8 @@ Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const Rende
     }
     loop.finish(scene, passes, stats);
     stats.counters.nonFinite += nonFinite;
+    stats.samplesTaken = 0;
+    for (const PixelEstimate& e : done.estimates) stats.samplesTaken += std::uint64_t(e.samples);
     return image;
 }
 

@@ -56,8 +56,8 @@ Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSet
 // sample each on one thread (after one untimed pixel that pays the one-time costs), until all
 // are done or `maxProbeSeconds` has passed (after at least one pixel), and extrapolated to every
 // pixel and sample. The counts depend only on the pixels
-// probed; the seconds assume the render's threads share the work evenly. --adaptive is not
-// taken into account (it traces fewer pixels than predicted).
+// probed; the seconds assume the render's threads share the work evenly. --adaptive and
+// --noise-threshold are not taken into account (they trace fewer samples than predicted).
 struct RenderEstimate {
     std::uint64_t probePixels = 0;  // traced by the probe
     double probeSeconds = 0;

@@ -149,39 +149,11 @@ TEST(SobolSampler, EachPairIsStratifiedForPowerOfTwoCounts) {
     }
 }
 
-namespace {
-
-// A closed box of five diffuse walls (red left, green right) with a light panel under its
-// ceiling, facing down, seen through its open front: the Cornell box's light transport.
-Scene boxWithLightPanel() {
-    Scene s;
-    s.camera.origin = {0, 1, 3.5};
-    s.camera.destination = {0, 1, 0};
-    s.camera.fovDegrees = 45;
-    const auto white = test::addMaterial(s, test::pbr({0.7f, 0.7f, 0.7f}, 0, 1, 0));
-    const auto red = test::addMaterial(s, test::pbr({0.7f, 0.1f, 0.1f}, 0, 1, 0));
-    const auto green = test::addMaterial(s, test::pbr({0.1f, 0.7f, 0.1f}, 0, 1, 0));
-    Material lamp = test::pbr({0, 0, 0}, 0, 1, 0);
-    lamp.emission = {15, 15, 15};
-    const auto light = test::addMaterial(s, lamp);
-    test::addQuad(s, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, white);    // floor
-    test::addQuad(s, {-1, 2, -1}, {-1, 2, 1}, {1, 2, 1}, {1, 2, -1}, white);    // ceiling
-    test::addQuad(s, {-1, 0, -1}, {-1, 2, -1}, {1, 2, -1}, {1, 0, -1}, white);  // back
-    test::addQuad(s, {-1, 0, -1}, {-1, 0, 1}, {-1, 2, 1}, {-1, 2, -1}, red);
-    test::addQuad(s, {1, 0, -1}, {1, 2, -1}, {1, 2, 1}, {1, 0, 1}, green);
-    // wound so that its front faces down, into the box
-    test::addQuad(s, {-0.3, 1.99, -0.3}, {0.3, 1.99, -0.3}, {0.3, 1.99, 0.3}, {-0.3, 1.99, 0.3}, light);
-    s.flatten();
-    return s;
-}
-
-}  // namespace
-
 // Monte Carlo error falls as 1/sqrt(samples): four times the paths, half the error against a
 // reference of 1024 paths (measured 0.58: the reference's own error, a quarter of the 64-path
 // render's, adds to it; the bound 0.7 leaves room for the float build's other bits).
 TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfTheSamples) {
-    const Scene s = boxWithLightPanel();
+    const Scene s = test::boxWithLightPanel();
     const auto renderWith = [&s](int samples) {
         RenderSettings r = test::pathPicture(16, samples);
         r.seed = 3;  // noise independent of the reference's
@@ -196,7 +168,7 @@ TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfTheSamples) {
 }
 
 TEST(PathTracer, TheLightPanelLightsTheBoxFromItsFrontOnly) {
-    Scene s = boxWithLightPanel();
+    Scene s = test::boxWithLightPanel();
     const Framebuffer lit = test::renderPath(s, test::pathPicture(16, 16));
     double floor = 0;
     for (int x = 4; x < 12; ++x) floor += lit.at(x, 14).g;

@@ -1,5 +1,5 @@
 // What the path tracer's tests share: materials by their metallic-roughness factors, a small
-// path-traced picture, and the mean of what the camera rays that hit something saw.
+// path-traced picture, the mean of what the camera rays that hit something saw, and a Cornell-like box.
 #pragma once
 
 #include <algorithm>
@@ -47,6 +47,30 @@ inline Framebuffer renderPath(const Scene& s, const RenderSettings& settings, co
     const NaiveAccelerator accel(s.primitives);
     RenderStats stats;
     return render(s, accel, settings, stats, {}, images);
+}
+
+// A closed box of five diffuse walls (red left, green right) with a light panel under its
+// ceiling, facing down, seen through its open front: the Cornell box's light transport.
+inline Scene boxWithLightPanel() {
+    Scene s;
+    s.camera.origin = {0, 1, 3.5};
+    s.camera.destination = {0, 1, 0};
+    s.camera.fovDegrees = 45;
+    const auto white = addMaterial(s, pbr({0.7f, 0.7f, 0.7f}, 0, 1, 0));
+    const auto red = addMaterial(s, pbr({0.7f, 0.1f, 0.1f}, 0, 1, 0));
+    const auto green = addMaterial(s, pbr({0.1f, 0.7f, 0.1f}, 0, 1, 0));
+    Material lamp = pbr({0, 0, 0}, 0, 1, 0);
+    lamp.emission = {15, 15, 15};
+    const auto light = addMaterial(s, lamp);
+    addQuad(s, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, white);    // floor
+    addQuad(s, {-1, 2, -1}, {-1, 2, 1}, {1, 2, 1}, {1, 2, -1}, white);    // ceiling
+    addQuad(s, {-1, 0, -1}, {-1, 2, -1}, {1, 2, -1}, {1, 0, -1}, white);  // back
+    addQuad(s, {-1, 0, -1}, {-1, 0, 1}, {-1, 2, 1}, {-1, 2, -1}, red);
+    addQuad(s, {1, 0, -1}, {1, 2, -1}, {1, 2, 1}, {1, 0, 1}, green);
+    // wound so that its front faces down, into the box
+    addQuad(s, {-0.3, 1.99, -0.3}, {0.3, 1.99, -0.3}, {0.3, 1.99, 0.3}, {-0.3, 1.99, 0.3}, light);
+    s.flatten();
+    return s;
 }
 
 }  // namespace rt::test

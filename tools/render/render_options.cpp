@@ -137,6 +137,16 @@ void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
                    "Cap indirect samples at this value, trading bias for fewer fireflies (default 0: off)")
         ->check(CLI::NonNegativeNumber)
         ->group(group);
+    app.add_option("--noise-threshold", o.render.noiseThreshold,
+                   "Stop sampling a pixel once the relative standard error of its mean luminance is below this, "
+                   "e.g. 0.02; -S is then the most a pixel takes (default 0: off)")
+        ->check(rt::tool::numberIn(0.0, 1e30))
+        ->group(group);
+    app.add_option("--adaptive-min-samples", o.render.adaptiveMinSamples,
+                   "Samples every pixel takes before --noise-threshold may stop it (default 0: from the threshold, "
+                   "as Cycles chooses: max(4, 16 / threshold^0.3))")
+        ->check(numberIn(0, rt::kMaxSamples))
+        ->group(group);
 }
 
 // Adaptive subsampling (thesis 2.3): only rt-render, whose pictures are all the colour it interpolates.
@@ -196,7 +206,7 @@ void addImageOptions(CLI::App& app, RenderOptions& o) {
         ->group(group);
     app.add_option("--aov", o.aovs,
                    "AOV layers written into the EXR after the colour: a list of Z, N, Ng, P, albedo, id, cost, "
-                   "variance, or all")
+                   "variance, samples, or all")
         ->group(group);
     app.add_option("--png-bits", o.pngBits, "PNG bits per channel: 8 or 16")
         ->check(CLI::IsMember(rt::kPngBits))
@@ -248,13 +258,14 @@ struct IntegratorOption {
     const char* name;
     Integrator readBy;
 };
-constexpr std::array<IntegratorOption, 7> kIntegratorOptions{{{"--depth", Integrator::Whitted},
+constexpr std::array<IntegratorOption, 8> kIntegratorOptions{{{"--depth", Integrator::Whitted},
                                                               {"--shadows", Integrator::Whitted},
                                                               {"--distributed", Integrator::Whitted},
                                                               {"--distributed-samples", Integrator::Whitted},
                                                               {"--packets", Integrator::Whitted},
                                                               {"--max-bounces", Integrator::Path},
-                                                              {"--clamp", Integrator::Path}}};
+                                                              {"--clamp", Integrator::Path},
+                                                              {"--adaptive-min-samples", Integrator::Path}}};
 
 }  // namespace
 

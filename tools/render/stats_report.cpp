@@ -8,6 +8,7 @@
 
 #include "core/json_writer.h"
 #include "os/peak_memory.h"
+#include "render/noise_threshold.h"
 #include "version.h"
 
 namespace rt::tool::render {
@@ -91,6 +92,15 @@ std::string adaptiveSummary(const RenderSettings& settings, const RenderCounters
     return format("adaptive %d: %llu pixels interpolated, %.1f %% of a full render's %.0f camera rays saved\n",
                   settings.adaptiveGrid, static_cast<unsigned long long>(c.interpolatedPixels),
                   100.0 * (full - double(c.camera.rays)) / full, full);
+}
+
+// What --noise-threshold saved: camera samples against every pixel's -S.
+std::string noiseThresholdSummary(const RenderSettings& settings, const RenderStats& s) {
+    const double full = double(fullRenderCameraRays(settings));
+    return format("noise threshold %g (at least %d samples): %llu of %.0f samples taken, %.1f %% saved\n",
+                  settings.noiseThreshold, NoiseThreshold(settings).minSamples(),
+                  static_cast<unsigned long long>(s.samplesTaken), full,
+                  100.0 * (full - double(s.samplesTaken)) / full);
 }
 
 void writeEstimateJson(JsonWriter& json, const std::optional<RenderEstimate>& e) {
@@ -188,6 +198,7 @@ void writeStatsJson(std::ostream& out, const RunRecord& run, const SceneSummary&
     json.member("interpolatedPixels", s.counters.interpolatedPixels);  // --adaptive
     json.member("fullRenderCameraRays", fullRenderCameraRays(settings));
     json.member("samplesPerPixel", s.samplesPerPixel);    // taken: fewer than -S if --time-limit ran out
+    json.member("samplesTaken", s.samplesTaken);          // over all pixels: fewer with --noise-threshold
     json.member("timeLimitReached", s.timeLimitReached);  // --time-limit
     json.key("estimate");                                 // -p's prediction, else null
     writeEstimateJson(json, estimate);
@@ -216,6 +227,7 @@ std::string statsSummary(const RenderSettings& settings, const AccelStats& accel
                    static_cast<unsigned long long>(c.reflection.rays));
     text += format("%.2f M rays/s, %.2f intersection tests per ray\n", s.raysPerSecond() / 1e6, s.testsPerRay());
     if (settings.adaptiveGrid) text += adaptiveSummary(settings, s.counters);
+    if (settings.noiseThreshold > 0) text += noiseThresholdSummary(settings, s);
     return text;
 }
 
