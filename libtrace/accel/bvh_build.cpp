@@ -80,22 +80,19 @@ struct Bins {
 };
 
 // body(first, last, result) over [begin, end) in the chunks of build_chunks.h (several, on all
-// threads, for kTaskPrimitives references or more; else one), the chunks' results merged in chunk
-// order. Bounds and counts merge exactly in any order, so the result is the same for any thread count.
+// threads, for kTaskPrimitives references or more; else one), the chunks' results merged into `all`
+// (empty to begin with) in chunk order. Bounds and counts merge exactly in any order, so the result
+// is the same for any thread count. `all` is the caller's, not returned: the bins of a small node
+// cost more to copy than to fill.
 template <class Result, class Body>
-Result reduceInChunks(std::uint32_t begin, std::uint32_t end, const Body& body) {
+void reduceInChunks(std::uint32_t begin, std::uint32_t end, Result& all, const Body& body) {
     const Chunks chunks = nodeChunks(end - begin);
-    if (chunks.count() == 1) {
-        Result all;
-        body(begin, end, all);
-        return all;
-    }
+    if (chunks.count() == 1) return body(begin, end, all);
     std::vector<Result> parts(chunks.count());
     forEachChunk(chunks, [&](std::size_t c, std::size_t first, std::size_t last) {
         body(begin + std::uint32_t(first), begin + std::uint32_t(last), parts[c]);
     });
-    for (std::size_t c = 1; c < parts.size(); ++c) parts[0].merge(parts[c]);
-    return parts[0];
+    for (const Result& part : parts) all.merge(part);
 }
 
 // How a range is split in two: at a bin boundary of an axis, at the median of an axis (deep
@@ -157,10 +154,10 @@ private:
     }
 
     Range rangeOf(std::uint32_t begin, std::uint32_t end) const {
-        const Extent e =
-            reduceInChunks<Extent>(begin, end, [this](std::uint32_t first, std::uint32_t last, Extent& out) {
-                for (std::uint32_t i = first; i < last; ++i) out.add(refs_[i]);
-            });
+        Extent e;
+        reduceInChunks(begin, end, e, [this](std::uint32_t first, std::uint32_t last, Extent& out) {
+            for (std::uint32_t i = first; i < last; ++i) out.add(refs_[i]);
+        });
         return {begin, end, e.bounds, e.centres};
     }
 
@@ -193,7 +190,8 @@ private:
         if (depth >= kMedianDepth) return Split{Split::Median, axis, 0};
         double bestCost = std::numeric_limits<double>::infinity();
         Split best;
-        const Bins bins = binsOf(r);
+        Bins bins;
+        binsOf(r, bins);
         for (int a = 0; a < 3; ++a) {
             if (!(r.centres.hi[a] > r.centres.lo[a])) continue;
             const auto [cost, bin] = bestBinOf(bins, a, n);
@@ -210,10 +208,10 @@ private:
         return best;
     }
 
-    // The bins of `r` along each axis its centres spread over, in one pass over its references.
-    Bins binsOf(const Range& r) const {
+    // Fills the (empty) bins of `r` along each axis its centres spread over, in one pass over its references.
+    void binsOf(const Range& r, Bins& bins) const {
         const Binning binning(r);
-        return reduceInChunks<Bins>(r.begin, r.end, [&](std::uint32_t first, std::uint32_t last, Bins& out) {
+        reduceInChunks(r.begin, r.end, bins, [&](std::uint32_t first, std::uint32_t last, Bins& out) {
             for (std::uint32_t i = first; i < last; ++i)
                 for (int a = 0; a < 3; ++a) {
                     if (binning.scale[a] == 0) continue;
