@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the measured side of docs/thesis-results.md: thesis Tables 4.1-4.5 with rt's
-# figures beside the thesis's (issue 15). What it costs: docs/thesis-results.md, Table 4.5.
+# figures beside the thesis's (issue 15), and in Tables 4.2-4.4 the wide BVH beside the thesis's two
+# trees (issue 37), measured the same way. What it costs: docs/thesis-results.md, Table 4.5.
 #
 #   bench/thesis_tables.sh                      print the tables (Markdown) on stdout
 #   bench/thesis_tables.sh --update docs/thesis-results.md
@@ -79,14 +80,16 @@ measure() {
 
 declare -A m  # m[renderer/scene/tree/threads] = the measure line
 (( tables )) && for s in "${scenes[@]}"; do
-    for tree in bsp kd; do
+    for tree in bsp kd bvh; do
         for threads in 1 2; do
             log "$s $tree, $threads thread(s)"
             m[d/$s/$tree/$threads]="$(measure "$render_d" "$s" --accel "$tree" --threads "$threads")"
         done
     done
-    log "$s kd, float"
-    m[f/$s/kd/1]="$(measure "$render_f" "$s" --accel kd --threads 1)"
+    for tree in kd bvh; do
+        log "$s $tree, float"
+        m[f/$s/$tree/1]="$(measure "$render_f" "$s" --accel "$tree" --threads 1)"
+    done
 done
 field() { awk -v i="$2" '{print $i}' <<<"${m[$1]}"; }
 
@@ -121,15 +124,16 @@ tables() {
         echo "| $s | $(word "${thesis41[$s]}" 1) | $(field "d/$s/kd/1" 4) | $(word "${thesis41[$s]}" 2) | $(field "d/$s/kd/1" 5) |"
     done
     echo
-    echo "#### Table 4.2: BSP and KD, seconds (build / render / total) and KD's speed-up of the total"
+    echo "#### Table 4.2: BSP and KD (and rt's BVH), seconds (build / render / total) and the speed-ups of the total"
     echo
     echo "| scene | tree | thesis S1 | rt, 1 thread | rt, 2 threads | runs |"
     echo "|---|---|---:|---:|---:|---:|"
     for s in "${scenes[@]}"; do
         local t="${thesis42[$s]}"
-        for tree in bsp kd; do
-            local o=0; [[ $tree == kd ]] && o=3
-            echo "| $s | ${tree^^} | $(word "$t" $((o + 1))) / $(word "$t" $((o + 2))) / $(word "$t" $((o + 3))) |" \
+        for tree in bsp kd bvh; do
+            local o=0 thesis="-"; [[ $tree == kd ]] && o=3
+            [[ $tree == bvh ]] || thesis="$(word "$t" $((o + 1))) / $(word "$t" $((o + 2))) / $(word "$t" $((o + 3)))"
+            echo "| $s | ${tree^^} | $thesis |" \
                 "$(field "d/$s/$tree/1" 1) / $(field "d/$s/$tree/1" 2) / $(field "d/$s/$tree/1" 3) |" \
                 "$(field "d/$s/$tree/2" 1) / $(field "d/$s/$tree/2" 2) / $(field "d/$s/$tree/2" 3) |" \
                 "$(field "d/$s/$tree/1" 8), $(field "d/$s/$tree/2" 8) |"
@@ -137,28 +141,32 @@ tables() {
         echo "| $s | BSP / KD | $(ratio "$(word "$t" 3)" "$(word "$t" 6)") |" \
             "$(ratio "$(field "d/$s/bsp/1" 3)" "$(field "d/$s/kd/1" 3)") |" \
             "$(ratio "$(field "d/$s/bsp/2" 3)" "$(field "d/$s/kd/2" 3)") | |"
+        echo "| $s | KD / BVH | - | $(ratio "$(field "d/$s/kd/1" 3)" "$(field "d/$s/bvh/1" 3)") |" \
+            "$(ratio "$(field "d/$s/kd/2" 3)" "$(field "d/$s/bvh/2" 3)") | |"
     done
     echo
     echo "#### Table 4.3: tree quality: nodes, and intersection tests per ray"
     echo
-    echo "| scene | BSP nodes, thesis | BSP nodes, rt | KD nodes, thesis | KD nodes, rt | BSP tests/ray, thesis | BSP tests/ray, rt | KD tests/ray, thesis | KD tests/ray, rt |"
-    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+    echo "| scene | BSP nodes, thesis | BSP nodes, rt | KD nodes, thesis | KD nodes, rt | BVH nodes, rt | BSP tests/ray, thesis | BSP tests/ray, rt | KD tests/ray, thesis | KD tests/ray, rt | BVH tests/ray, rt |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
     for s in "${scenes[@]}"; do
         local t="${thesis43[$s]}"
-        echo "| $s | $(word "$t" 1) | $(field "d/$s/bsp/1" 6) | $(word "$t" 2) | $(field "d/$s/kd/1" 6) |" \
-            "$(word "$t" 3) | $(field "d/$s/bsp/1" 7) | $(word "$t" 4) | $(field "d/$s/kd/1" 7) |"
+        echo "| $s | $(word "$t" 1) | $(field "d/$s/bsp/1" 6) | $(word "$t" 2) | $(field "d/$s/kd/1" 6) | $(field "d/$s/bvh/1" 6) |" \
+            "$(word "$t" 3) | $(field "d/$s/bsp/1" 7) | $(word "$t" 4) | $(field "d/$s/kd/1" 7) | $(field "d/$s/bvh/1" 7) |"
     done
     echo
-    echo "#### Table 4.4: double (D) against float (F), KD, one thread, seconds (build / render) and F / D of the total"
+    echo "#### Table 4.4: double (D) against float (F), KD (and rt's BVH), one thread, seconds (build / render) and F / D of the total"
     echo
-    echo "| scene | D, thesis S1 | F, thesis S1 | F / D, thesis | D, rt | F, rt | F / D, rt |"
-    echo "|---|---:|---:|---:|---:|---:|---:|"
+    echo "| scene | D, thesis S1 | F, thesis S1 | F / D, thesis | D, rt | F, rt | F / D, rt | D, rt BVH | F, rt BVH | F / D, rt BVH |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
     for s in "${scenes[@]}"; do
         local t="${thesis44[$s]}"
         echo "| $s | $(word "$t" 1) / $(word "$t" 2) | $(word "$t" 3) / $(word "$t" 4) |" \
             "$(awk '{ printf "%.2f", ($3 + $4) / ($1 + $2) }' <<<"$t") |" \
             "$(field "d/$s/kd/1" 1) / $(field "d/$s/kd/1" 2) | $(field "f/$s/kd/1" 1) / $(field "f/$s/kd/1" 2) |" \
-            "$(ratio "$(field "f/$s/kd/1" 3)" "$(field "d/$s/kd/1" 3)") |"
+            "$(ratio "$(field "f/$s/kd/1" 3)" "$(field "d/$s/kd/1" 3)") |" \
+            "$(field "d/$s/bvh/1" 1) / $(field "d/$s/bvh/1" 2) | $(field "f/$s/bvh/1" 1) / $(field "f/$s/bvh/1" 2) |" \
+            "$(ratio "$(field "f/$s/bvh/1" 3)" "$(field "d/$s/bvh/1" 3)") |"
     done
     if (( embree )); then embree_table; fi
 }

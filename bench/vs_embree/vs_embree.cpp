@@ -4,21 +4,25 @@
 //   build/release/bench/vs_embree --quick    two small scenes, one pass: a smoke test
 //   build/release/bench/vs_embree --kd-intersection-cost 1.5    another KD tree (rt-render's --kd-* options)
 //   build/release/bench/vs_embree --accel bvh    rt's wide BVH instead of its KD tree (or bsp, naive)
+//   build/release/bench/vs_embree --scene model.glb --look-from 0,2,5 --look-at 0,1,0 --fov 60
+//                                         any scene rt-render reads, from its camera or another
 //
 // Scenes: the five thesis scenes (rt::thesisScene), 10k/100k/1M uniform random triangles
-// and the "teapot in a stadium" (bench_scenes.h). Rays, all made once with rt's KD tree:
-// the 480,000 camera rays of an 800x600 view, one per pixel through its centre; a shadow
-// ray from each visible point to each light it faces, and a mirror reflection ray from
-// each visible point, both made as rt-render's Tracer makes them (offset off the surface
-// by Tracer::epsilon). Every surface is treated as a mirror, so that every scene has a
-// set of incoherent reflection rays.
+// and the "teapot in a stadium" (bench_scenes.h); with --scene, files read as rt-render reads
+// them (import/load_scene.h: thesis XML, glTF, OBJ, 3DS, ...), with the file's camera and lights
+// (a headlight at the camera where the file has none) and rt-render's camera options. Rays, all made once with rt's KD
+// tree: the 480,000 camera rays of an 800x600 view, one per pixel through its centre; a shadow ray from each visible
+// point to each light it faces, and a mirror reflection ray from each visible point, both made as rt-render's Tracer
+// makes them (offset off the surface by Tracer::epsilon). Every surface is treated as a mirror, so that every scene has
+// a set of incoherent reflection rays.
 //
 // Both sides trace single rays on this one thread (rt: Accelerator::intersect/occluded;
 // Embree: rtcIntersect1/rtcOccluded1), and both also trace the camera rays as packets of 8
 // neighbouring pixels (4x2; rt: Accelerator::intersectPacket, Embree: rtcIntersect8) and the
 // shadow rays as rt-render groups them: for each run of 8 pixels of a row and each light, the
 // rays of the run's visible points that face it (rt: Accelerator::occludedPacket, Embree:
-// rtcOccluded8, both with each ray's own tMax). Rays per second are per thread
+// rtcOccluded8, both with each ray's own tMax). rt's single rays also count the primitive tests
+// per ray (RayCounters), the figure thesis Table 4.3 reports. Rays per second are per thread
 // CPU second, the best of several passes taken in turn, so that other processes on a busy machine disturb the ratio
 // little. Builds run on 2 threads (rt: OpenMP; Embree: RTC_BUILD_QUALITY_HIGH with threads=2) and are timed on the wall
 // clock and in process CPU time. --builds measures the builds only.
@@ -53,10 +57,13 @@
 #include "core/simd.h"
 #include "core/stopwatch.h"
 #include "embree_scene.h"
+#include "import/load_scene.h"
 #include "render/camera_rays.h"
 #include "render/phong.h"
 #include "render/tracer.h"
+#include "render_command.h"
 #include "scene/thesis_scenes.h"
+#include "tool.h"
 
 using namespace rt;
 using rt::bench::EmbreeScene;
@@ -74,9 +81,40 @@ constexpr double kMaxDisagreement = 1e-4;
 
 // ---- Scenes and rays
 
-Scene loadScene(const std::string& name) {
+// Where the scene comes from: a built-in name (a thesis scene or a generated one), or a file.
+struct SceneSource {
+    std::string name;  // as the tables name it: the built-in name, or the file's name
+    std::string path;  // empty for a built-in scene
+};
+
+// rt-render's camera options, applied to a file's camera in the order rt-render applies them.
+struct CameraOptions {
+    std::optional<std::string> camera, lookFrom, lookAt, up;
+    std::optional<double> fov;
+};
+
+// A file read as rt-render reads it (tools/render/render_command.cpp, loadWithCamera): the
+// camera picked and overridden, the headlight moved to it.
+Scene sceneFromFile(const std::string& path, const CameraOptions& o) {
+    ImportOptions import;
+    import.camera = o.camera.value_or("");
+    import.cameraFromCommandLine = o.lookFrom || o.lookAt || o.fov;
+    import.aspect = double(kWidth) / double(kHeight);
+    Scene scene = rt::loadScene(path, import);
+    CameraOverrides overrides;
+    if (o.lookFrom) overrides.lookFrom = tool::render::parseVector("--look-from", *o.lookFrom);
+    if (o.lookAt) overrides.lookAt = tool::render::parseVector("--look-at", *o.lookAt);
+    if (o.up) overrides.up = tool::render::parseVector("--up", *o.up);
+    if (o.fov) overrides.fovDegrees = Real(*o.fov);
+    applyOverrides(scene.camera, overrides, scene.primitives.bounds(), Real(import.aspect));
+    scene.placeHeadlights();
+    return scene;
+}
+
+Scene loadScene(const SceneSource& source, const CameraOptions& camera) {
+    if (!source.path.empty()) return sceneFromFile(source.path, camera);
     const auto& generated = bench::generatedRecipes();
-    return generated.count(name) ? bench::generatedScene(name) : thesisScene(name);
+    return generated.count(source.name) ? bench::generatedScene(source.name) : thesisScene(source.name);
 }
 
 struct RaySet {
@@ -173,6 +211,7 @@ RaySet reflectionRays(const Scene& scene, const Accelerator& kd, const RaySet& c
 struct Answers {
     std::vector<Hit> hits;
     std::vector<char> found;  // hit (or, for shadow rays, occluded)
+    RayCounters counters;     // rt's, of the last pass; Embree counts nothing
 };
 
 using TraceAll = std::function<void(const RaySet&, Answers&)>;
@@ -189,6 +228,7 @@ TraceAll traceRt(const Accelerator& kd) {
                 out.hits[i] = hit;
             }
         }
+        out.counters = counters;
     };
 }
 
@@ -249,7 +289,7 @@ double threadCpuSeconds() {
 std::vector<double> bestSeconds(const std::vector<TraceAll>& tracers, const RaySet& set, int passes,
                                 std::vector<Answers>& answers) {
     std::vector<double> best(tracers.size(), std::numeric_limits<double>::infinity());
-    answers.assign(tracers.size(), {std::vector<Hit>(set.rays.size()), std::vector<char>(set.rays.size())});
+    answers.assign(tracers.size(), {std::vector<Hit>(set.rays.size()), std::vector<char>(set.rays.size()), {}});
     for (int pass = 0; pass < passes; ++pass) {
         for (std::size_t k = 0; k < tracers.size(); ++k) {
             const double start = threadCpuSeconds();
@@ -368,7 +408,8 @@ std::string measureSet(const std::string& scene, std::size_t prims, const RaySet
         row += "- | - | - | - | ";
     }
     agreed = agreed && double(differ) <= kMaxDisagreement * n;
-    return row + disagreement(differ, set.rays.size()) + " |";
+    const double testsPerRay = double(answers[0].counters.intersectionTests) / std::max(n, 1.0);
+    return row + disagreement(differ, set.rays.size()) + " | " + fixed(testsPerRay, 2) + " |";
 }
 
 double processCpuSeconds() {
@@ -408,9 +449,11 @@ std::string buildRow(const std::string& name, const Primitives& prims, const Acc
            fixed(double(embree.memoryBytes()) / n, 1) + " |";
 }
 
-SceneReport measureScene(const std::string& name, const AccelSettings& settings, int passes, bool buildsOnly) {
-    std::cerr << "vs_embree: " << name << ": generating\n";
-    const Scene scene = loadScene(name);
+SceneReport measureScene(const SceneSource& source, const CameraOptions& view, const AccelSettings& settings,
+                         int passes, bool buildsOnly) {
+    const std::string& name = source.name;
+    std::cerr << "vs_embree: " << name << ": " << (source.path.empty() ? "generating" : "reading") << "\n";
+    const Scene scene = loadScene(source, view);
     const Primitives& prims = scene.primitives;
     std::cerr << "vs_embree: " << name << ": building (" << prims.size() << " primitives)\n";
     std::unique_ptr<Accelerator> kd;
@@ -438,6 +481,26 @@ SceneReport measureScene(const std::string& name, const AccelSettings& settings,
     return report;
 }
 
+// The built-in scenes named by --scenes, then the files of --scene, named by their file names.
+std::vector<SceneSource> sceneSources(const std::vector<std::string>& names, const std::vector<std::string>& files) {
+    std::vector<SceneSource> sources;
+    for (const std::string& name : names) sources.push_back({name, ""});
+    for (const std::string& file : files) {
+        const std::size_t slash = file.find_last_of('/');
+        sources.push_back({slash == std::string::npos ? file : file.substr(slash + 1), file});
+    }
+    return sources;
+}
+
+void addCameraOptions(CLI::App& app, CameraOptions& o) {
+    const char* group = "Camera of --scene files (rt-render's options)";
+    app.add_option("--camera", o.camera, "The file's camera: its name or number (0 is the first)")->group(group);
+    app.add_option("--look-from", o.lookFrom, "Camera origin X,Y,Z")->group(group);
+    app.add_option("--look-at", o.lookAt, "Camera destination X,Y,Z")->group(group);
+    app.add_option("--up", o.up, "Camera up vector X,Y,Z")->group(group);
+    app.add_option("--fov", o.fov, "Horizontal field of view in degrees")->check(CLI::Range(0.0, 180.0))->group(group);
+}
+
 // The structure measured as the tables name it: "KD", "BVH".
 std::string structureName(AccelKind kind) {
     std::string name = accelKindName(kind);
@@ -449,8 +512,8 @@ void printRayTable(const std::vector<SceneReport>& reports, AccelKind kind) {
     std::cout << "\n### Rays per second, one thread (rt / Embree > 1: rt is faster)\n\n"
               << "| Scene | Primitives | Rays | Count | rt " << structureName(kind)
               << " | Embree 1 | rt / Embree 1 | rt packets | rt packets / "
-                 "Embree 1 | Embree 8 | rt packets / Embree 8 | Differ |\n|---|---|---|---|---|---|---|---|---|---|---|"
-                 "---|\n";
+                 "Embree 1 | Embree 8 | rt packets / Embree 8 | Differ | rt tests / ray |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SceneReport& r : reports)
         for (const std::string& row : r.rayRows) std::cout << row << "\n";
 }
@@ -480,27 +543,36 @@ int main(int argc, char** argv) {
     CLI::App app{"rt's KD tree against Intel Embree 3: the same scenes and rays, rays per second and build times"};
     std::vector<std::string> scenes = {"balls",  "balls2",  "ships", "tree",       "pyramid5",
                                        "tri10k", "tri100k", "tri1M", "stadium100k"};
+    std::vector<std::string> files;
+    CameraOptions camera;
     int passes = 3;
     bool quick = false, buildsOnly = false;
     AccelSettings accel;  // rt-render's defaults unless --accel and the --kd-* options say otherwise
-    app.add_option("--scenes", scenes, "Scenes to measure (thesis scenes and tri10k, tri100k, tri1M, stadium100k)");
+    auto* builtIn =
+        app.add_option("--scenes", scenes, "Scenes to measure (thesis scenes and tri10k, tri100k, tri1M, stadium100k)");
+    app.add_option("--scene", files,
+                   "A scene file to measure, read as rt-render reads it (thesis XML, glTF, OBJ, ...); any number; "
+                   "without --scenes, only these");
     app.add_option("--passes", passes, "Timed passes over each ray set; the best counts")->check(CLI::Range(1, 100));
     app.add_flag("--quick", quick, "Smoke test: ships and tri10k, one pass");
     app.add_flag("--builds", buildsOnly, "Builds only: no rays, only the build table");
     tool::addNamedOption(app, "--accel", accel.kind, kAccelKindNames, "rt's structure: kd, bvh, bsp or naive")
         ->capture_default_str();
     tool::addKdOptions(app, accel.kd);
+    addCameraOptions(app, camera);
     CLI11_PARSE(app, argc, argv);
     if (quick) scenes = {"ships", "tri10k"}, passes = 1;
+    if (!files.empty() && builtIn->count() == 0 && !quick) scenes.clear();
 
     omp_set_num_threads(kBuildThreads);
     std::vector<SceneReport> reports;
-    try {
-        for (const std::string& name : scenes) reports.push_back(measureScene(name, accel, passes, buildsOnly));
-    } catch (const std::exception& e) {
-        std::cerr << "vs_embree ERROR: " << e.what() << "\n";
-        return 1;
-    }
+    // A bad scene file or camera option is exit 2, as in rt-render; any other failure exit 1.
+    const int loaded = tool::run("vs_embree", [&] {
+        for (const SceneSource& source : sceneSources(scenes, files))
+            reports.push_back(measureScene(source, camera, accel, passes, buildsOnly));
+        return tool::kExitOk;
+    });
+    if (loaded != tool::kExitOk) return loaded;
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
               << kHeight << ", best of " << passes << " passes, rt on " << simdLevelName(simdLevel())
               << " lanes, single rays and packets (RT_SIMD=sse2|avx2|avx512 for another); rt's "

@@ -2,8 +2,10 @@
 // binned surface area heuristic (Wald 2007: kBins bins of the primitives' centres per axis) and
 // then splitting the child of the largest surface area again, as Embree's wide builders do, until
 // the node has eight children or none is worth splitting. Subtrees of kTaskPrimitives or more are
-// built as OpenMP tasks; every choice depends on the primitives alone, never on the threads, so
-// the BVH is the same for any number of them.
+// built as OpenMP tasks, and the passes over a node of that many (its bounds, its bins, its
+// partition) run in chunks on all threads (build_chunks.h), so that the top levels, where one node
+// holds most of the scene, do not leave the other threads waiting. Every choice depends on the
+// primitives alone, never on the threads, so the BVH is the same for any number of them.
 #include <omp.h>
 
 #include <algorithm>
@@ -42,12 +44,56 @@ struct PrimRef {
 // average, 20,000 scattered triangles): 40 % more nodes than leaves, and half-empty blocks.
 double blocks(std::uint32_t n) { return double((n + 2 * kSimdWidth - 1) / (2 * kSimdWidth)); }
 
+// The bounds of some references and the bounds of their centres.
+struct Extent {
+    Aabb bounds, centres;
+
+    void add(const PrimRef& ref) {
+        bounds.extend(ref.box);
+        centres.extend(Vec3{ref.centre(0), ref.centre(1), ref.centre(2)});
+    }
+    void merge(const Extent& o) {
+        bounds.extend(o.bounds);
+        centres.extend(o.centres);
+    }
+};
+
 // The references [begin, end) of the build's array, their bounds and the bounds of their centres.
 struct Range {
     std::uint32_t begin = 0, end = 0;
     Aabb bounds, centres;
     std::uint32_t size() const { return end - begin; }
 };
+
+// The references of a range counted and bounded per bin of each axis, as the SAH sweep needs them.
+struct Bins {
+    std::uint32_t counts[3][kBins] = {};
+    Aabb boxes[3][kBins];
+
+    void merge(const Bins& o) {
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < kBins; ++b) {
+                counts[a][b] += o.counts[a][b];
+                boxes[a][b].extend(o.boxes[a][b]);
+            }
+    }
+};
+
+// body(first, last, result) over [begin, end) in the chunks of build_chunks.h (several, on all
+// threads, for kTaskPrimitives references or more; else one), the chunks' results merged into `all`
+// (empty to begin with) in chunk order. Bounds and counts merge exactly in any order, so the result
+// is the same for any thread count. `all` is the caller's, not returned: the bins of a small node
+// cost more to copy than to fill.
+template <class Result, class Body>
+void reduceInChunks(std::uint32_t begin, std::uint32_t end, Result& all, const Body& body) {
+    const Chunks chunks = nodeChunks(end - begin);
+    if (chunks.count() == 1) return body(begin, end, all);
+    std::vector<Result> parts(chunks.count());
+    forEachChunk(chunks, [&](std::size_t c, std::size_t first, std::size_t last) {
+        body(begin + std::uint32_t(first), begin + std::uint32_t(last), parts[c]);
+    });
+    for (const Result& part : parts) all.merge(part);
+}
 
 // How a range is split in two: at a bin boundary of an axis, at the median of an axis (deep
 // nodes), or, when all its centres coincide, into its first and second half as they lie.
@@ -108,20 +154,29 @@ private:
     }
 
     Range rangeOf(std::uint32_t begin, std::uint32_t end) const {
-        Range r{begin, end, {}, {}};
-        for (std::uint32_t i = begin; i < end; ++i) {
-            r.bounds.extend(refs_[i].box);
-            r.centres.extend(Vec3{refs_[i].centre(0), refs_[i].centre(1), refs_[i].centre(2)});
-        }
-        return r;
+        Extent e;
+        reduceInChunks(begin, end, e, [this](std::uint32_t first, std::uint32_t last, Extent& out) {
+            for (std::uint32_t i = first; i < last; ++i) out.add(refs_[i]);
+        });
+        return {begin, end, e.bounds, e.centres};
     }
 
-    // The bin of a centre along `axis` of `r` (kBins over the centres' extent).
-    static int binOf(const Range& r, int axis, Real centre) {
-        const Real extent = r.centres.hi[axis] - r.centres.lo[axis];
-        const int bin = int(Real(kBins) * ((centre - r.centres.lo[axis]) / extent));
-        return std::clamp(bin, 0, kBins - 1);
-    }
+    // The bins of a range: kBins over its centres' extent along each axis. The binning and the
+    // partition both place references through binOf, so that they agree on every one.
+    struct Binning {
+        Vec3 lo;
+        Real scale[3];  // bins per unit; 0 along an axis the centres do not spread over
+
+        explicit Binning(const Range& r) : lo(r.centres.lo) {
+            for (int a = 0; a < 3; ++a) {
+                const Real extent = r.centres.hi[a] - r.centres.lo[a];
+                scale[a] = extent > 0 ? Real(kBins) / extent : 0;
+            }
+        }
+        int binOf(int axis, const PrimRef& ref) const {
+            return std::clamp(int((ref.centre(axis) - lo[axis]) * scale[axis]), 0, kBins - 1);
+        }
+    };
 
     // The split of `r`, or nullopt where a leaf costs less by the SAH (or it holds one primitive).
     std::optional<Split> split(const Range& r, int depth) const {
@@ -135,9 +190,11 @@ private:
         if (depth >= kMedianDepth) return Split{Split::Median, axis, 0};
         double bestCost = std::numeric_limits<double>::infinity();
         Split best;
+        Bins bins;
+        binsOf(r, bins);
         for (int a = 0; a < 3; ++a) {
             if (!(r.centres.hi[a] > r.centres.lo[a])) continue;
-            const auto [cost, bin] = bestBinOf(r, a);
+            const auto [cost, bin] = bestBinOf(bins, a, n);
             if (cost < bestCost) {
                 bestCost = cost;
                 best = {Split::Binned, a, bin};
@@ -151,15 +208,25 @@ private:
         return best;
     }
 
-    // The bin boundary of `axis` with the least area-weighted blocks (the SAH's sum, unscaled).
-    std::pair<double, int> bestBinOf(const Range& r, int axis) const {
-        std::uint32_t counts[kBins] = {};
-        Aabb boxes[kBins];
-        for (std::uint32_t i = r.begin; i < r.end; ++i) {
-            const int bin = binOf(r, axis, refs_[i].centre(axis));
-            ++counts[bin];
-            boxes[bin].extend(refs_[i].box);
-        }
+    // Fills the (empty) bins of `r` along each axis its centres spread over, in one pass over its references.
+    void binsOf(const Range& r, Bins& bins) const {
+        const Binning binning(r);
+        reduceInChunks(r.begin, r.end, bins, [&](std::uint32_t first, std::uint32_t last, Bins& out) {
+            for (std::uint32_t i = first; i < last; ++i)
+                for (int a = 0; a < 3; ++a) {
+                    if (binning.scale[a] == 0) continue;
+                    const int bin = binning.binOf(a, refs_[i]);
+                    ++out.counts[a][bin];
+                    out.boxes[a][bin].extend(refs_[i].box);
+                }
+        });
+    }
+
+    // The bin boundary of `axis` with the least area-weighted blocks (the SAH's sum, unscaled), for a
+    // range of n references.
+    static std::pair<double, int> bestBinOf(const Bins& bins, int axis, std::uint32_t n) {
+        const std::uint32_t* counts = bins.counts[axis];
+        const Aabb* boxes = bins.boxes[axis];
         double aboveCost[kBins] = {};  // aboveCost[b]: bins b.. together
         Aabb above;
         std::uint32_t aboveCount = 0;
@@ -174,7 +241,7 @@ private:
         for (int b = 1; b < kBins; ++b) {
             below.extend(boxes[b - 1]);
             belowCount += counts[b - 1];
-            if (belowCount == 0 || belowCount == r.size()) continue;
+            if (belowCount == 0 || belowCount == n) continue;
             const double cost = double(below.surfaceArea()) * blocks(belowCount) + aboveCost[b];
             if (cost < best.first) best = {cost, b};
         }
@@ -186,8 +253,11 @@ private:
         const auto first = refs_.begin() + r.begin, last = refs_.begin() + r.end;
         std::uint32_t middle = r.begin + r.size() / 2;
         if (s.kind == Split::Binned) {
-            const auto below = [&](const PrimRef& ref) { return binOf(r, s.axis, ref.centre(s.axis)) < s.bin; };
-            middle = std::uint32_t(std::partition(first, last, below) - refs_.begin());
+            const Binning binning(r);
+            const auto below = [&](const PrimRef& ref) { return binning.binOf(s.axis, ref) < s.bin; };
+            middle = nodeChunks(r.size()).count() == 1
+                         ? std::uint32_t(std::partition(first, last, below) - refs_.begin())
+                         : partitionInChunks(r, below);
         } else if (s.kind == Split::Median) {
             const auto before = [&](const PrimRef& a, const PrimRef& b) {
                 const Real ca = a.centre(s.axis), cb = b.centre(s.axis);
@@ -196,6 +266,37 @@ private:
             std::nth_element(first, refs_.begin() + middle, last, before);
         }
         return {rangeOf(r.begin, middle), rangeOf(middle, r.end)};
+    }
+
+    // A stable partition of a large range on all threads: each chunk counts its references below the
+    // split, then copies them, in order, to their places in a second array, which is copied back.
+    // Returns where the second part begins.
+    template <class Below>
+    std::uint32_t partitionInChunks(const Range& r, const Below& below) {
+        const Chunks chunks = nodeChunks(r.size());
+        std::vector<std::uint32_t> belowIn(chunks.count());
+        forEachChunk(chunks, [&](std::size_t c, std::size_t first, std::size_t last) {
+            belowIn[c] =
+                std::uint32_t(std::count_if(refs_.begin() + r.begin + first, refs_.begin() + r.begin + last, below));
+        });
+        std::vector<std::uint32_t> belowBefore(chunks.count());  // in the chunks before each chunk
+        std::uint32_t belowAll = 0;
+        for (std::size_t c = 0; c < chunks.count(); ++c) {
+            belowBefore[c] = belowAll;
+            belowAll += belowIn[c];
+        }
+        std::vector<PrimRef> sorted(r.size());
+        forEachChunk(chunks, [&](std::size_t c, std::size_t first, std::size_t last) {
+            std::size_t nextBelow = belowBefore[c], nextAbove = belowAll + (first - belowBefore[c]);
+            for (std::size_t i = first; i < last; ++i) {
+                const PrimRef& ref = refs_[r.begin + i];
+                sorted[below(ref) ? nextBelow++ : nextAbove++] = ref;
+            }
+        });
+        forEachChunk(chunks, [&](std::size_t, std::size_t first, std::size_t last) {
+            std::copy(sorted.begin() + first, sorted.begin() + last, refs_.begin() + r.begin + first);
+        });
+        return r.begin + belowAll;
     }
 
     // The node of `r` (split by `s`): up to eight children, each a leaf or a node built the same way.
@@ -248,6 +349,12 @@ public:
 
     void flatten(const BuildNode& root) {
         if (root.range.size() == 0) return;
+        // Arrays of the final size: grown by doubling, the nodes (448 bytes each in double) were
+        // copied twice over on average, a third of the flattening of balls2's 150,000 nodes.
+        std::size_t inner = 0, leaves = 0;
+        count(root, inner, leaves);
+        nodes_.reserve(std::max<std::size_t>(inner, 1));
+        leaves_.reserve(leaves);
         if (root.children.empty()) {  // one leaf: a root of one child
             nodes_.emplace_back();
             addChild(0, root);
@@ -257,6 +364,15 @@ public:
     }
 
     std::vector<BvhNode> takeNodes() { return std::move(nodes_); }
+
+    static void count(const BuildNode& b, std::size_t& inner, std::size_t& leaves) {
+        if (b.children.empty()) {
+            ++leaves;
+            return;
+        }
+        ++inner;
+        for (const auto& child : b.children) count(*child, inner, leaves);
+    }
 
     LeafStore writeLeaves() const {
         LeafStore store;

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
     rt::tool::render::RenderOptions options;
     rt::tool::render::addRenderOptions(app, options);
     if (const std::optional<int> exitCode = rt::tool::parseCommandLine(app, "rt-render", argc, argv)) return *exitCode;
+    rt::tool::render::chooseDefaultAccel(app, options);
     options.arguments.assign(argv, argv + argc);
     options.optionValues = rt::tool::optionValues(app);
     options.ignoredOptions = rt::tool::render::optionsTheIntegratorIgnores(app, options.render.integrator);

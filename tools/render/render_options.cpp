@@ -47,7 +47,8 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
                       "-K,--kd", [&kind] { kind = AccelKind::Kd; }, "Use the KD tree")
                    ->group(group);
     bsp->excludes(kd);
-    addNamedOption(app, "--accel", kind, rt::kAccelKindNames, "Ray-scene intersection: the naive list or a tree")
+    addNamedOption(app, "--accel", kind, rt::kAccelKindNames,
+                   "Ray-scene intersection: the naive list or a tree (default: kd, and bvh for --integrator path)")
         ->excludes(bsp)
         ->excludes(kd)
         ->group(group);
@@ -268,6 +269,12 @@ constexpr std::array<IntegratorOption, 8> kIntegratorOptions{{{"--depth", Integr
                                                               {"--adaptive-min-samples", Integrator::Path}}};
 
 }  // namespace
+
+void chooseDefaultAccel(CLI::App& app, RenderOptions& options) {
+    if (app.count("--accel") + app.count("--bsp") + app.count("--kd") != 0) return;
+    options.accel.kind = defaultAccelKind(options.render.integrator);
+    app.get_option("--accel")->default_str(accelKindName(options.accel.kind));  // as --stats-json records it
+}
 
 std::vector<std::string> optionsTheIntegratorIgnores(const CLI::App& app, Integrator integrator) {
     std::vector<std::string> ignored;

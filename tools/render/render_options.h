@@ -17,6 +17,10 @@ std::vector<std::string> outputNames();
 // Declares the scene argument and every option of rt-render on `app`, each storing into `options`.
 void addRenderOptions(CLI::App& app, RenderOptions& options);
 
+// The integrator's structure (render/render_settings.h, defaultAccelKind) unless -B, -K or --accel
+// named one; after parsing, since the integrator may come after them on the command line.
+void chooseDefaultAccel(CLI::App& app, RenderOptions& options);
+
 // The options given on `app`'s command line that `integrator` does not use (--max-bounces with
 // the Whitted tracer, -d with the path tracer, ...): runRender notes each on stderr.
 std::vector<std::string> optionsTheIntegratorIgnores(const CLI::App& app, Integrator integrator);
