@@ -1,5 +1,5 @@
 // One way for every image rt writes through OpenImageIO: the file is encoded in memory, then
-// written by core/atomic_file (checked writes, fsync, size check, rename; or in place for
+// written by os/atomic_file (checked writes, fsync, size check, rename; or in place for
 // standard output and devices). OpenImageIO's own file writing does not report every failure:
 // its PNG writer left a 0-byte or truncated file on a full disk and returned success.
 #pragma once
