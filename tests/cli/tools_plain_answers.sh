@@ -42,7 +42,7 @@ cat >"$WORK/tex.xml" <<'XML'
 </scene>
 XML
 printf '\x89PNG\r\n\x1a\ngarbagegarbagegarbage' >"$WORK/bad.png"
-expect_exit 0 "$RT_RENDER" "$WORK/tex.xml" -x 16 -y 12 --tx-cache off -o null
+expect_exit 0 "$RT_RENDER" "$WORK/tex.xml" -x 16 -y 12 -o null
 grep -q "^rt-render: warning: texture file .*bad.png: cannot read it (.*; PNG read error: .*): white is used$" \
     "$WORK/stderr" || fail "the texture's warning is not one line: $(cat "$WORK/stderr")"
 grep -q '^PNG read error' "$WORK/stderr" && fail "a message of several lines: $(cat "$WORK/stderr")"
