@@ -19,7 +19,7 @@ float decode(float v, const TexelDecoding&) { return v; }
 template <class T>
 T stored(float v) {
     if constexpr (std::is_same_v<T, std::uint8_t>)
-        return std::uint8_t(std::clamp(std::lround(v), 0L, 255L));
+        return std::uint8_t(std::clamp(v, 0.0f, 255.0f) + 0.5f);
     else
         return T(v);
 }
@@ -198,9 +198,11 @@ void anisotropic(const MipLevels<T>& levels, int channels, const TexCoord& at, c
     const Footprint f = footprint(at, levels[0].width, levels[0].height);
     const bool aLonger = f.a2 >= f.b2;
     const float major = std::sqrt(aLonger ? f.a2 : f.b2), minor = std::sqrt(aLonger ? f.b2 : f.a2);
-    const float ratio = major / std::max(minor, 1e-8f);
-    // Rounded, not up: a footprint a shade longer one way than the other (a quad seen nearly head-on)
-    // is one probe, not two half a texel apart.
+    // As many probes as the footprint is longer than wide, and no more than it is texels long (a
+    // magnified texture is one bilinear probe however thin the footprint). Rounded, not up: a
+    // footprint a shade longer one way than the other (a quad seen nearly head-on) is one probe,
+    // not two half a texel apart.
+    const float ratio = std::min(major / std::max(minor, 1e-8f), major);
     const int probes = !(ratio < float(how.maxProbes)) ? how.maxProbes : std::max(1, int(ratio + 0.5f));
     if (probes == 1) return trilinearAt(levels, channels, at.s, at.t, levelOf(major), 1, how, sum);
     const float level = levelOf(major / float(probes));

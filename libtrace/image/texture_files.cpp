@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/parallel_errors.h"
 #include "image/image_header.h"
+#include "image/stderr_capture.h"
 
 namespace rt {
 
@@ -195,12 +196,18 @@ std::uint64_t estimateTextureMemory(const Scene& scene) {
     const Pictures pictures = distinctPictures(scene);
     std::uint64_t maps = 0;
     std::vector<std::uint64_t> decoded;
+    std::vector<std::string> unreadable;  // told again in TextureFiles' warnings
+    StderrCapture libraries;
     for (const Texture* t : pictures.first) {
         const ImageHeaderCheck check = checkedHeader(*t);
-        if (check.unreadable) continue;  // white
+        if (check.unreadable) {  // white
+            unreadable.push_back(*check.unreadable);
+            continue;
+        }
         maps += mipMapBytesOf(check.header);
         decoded.push_back(check.header.decodedBytes);
     }
+    writeToStderr(withoutToldLibpngErrors(libraries.take(), unreadable));
     // A reader may hold its picture whole while it is read (OpenImageIO's PNG reader does), one per thread.
     std::sort(decoded.rbegin(), decoded.rend());
     decoded.resize(std::min(decoded.size(), std::size_t(std::max(1, omp_get_max_threads()))));
@@ -212,6 +219,7 @@ std::uint64_t estimateTextureMemory(const Scene& scene) {
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureSettings& settings)
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
     const Pictures pictures = distinctPictures(scene);
+    StderrCapture libraries;                             // libpng's own error lines, told in the warnings below
     std::vector<std::optional<std::string>> unreadable;  // by the header check
     std::uint64_t bytes = 0;
     for (const Texture* t : pictures.first) {
@@ -230,6 +238,7 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
     // OBJ's map in several materials) is one warning, named as the first texture names it.
     impl_->pictures.resize(pictures.first.size());
     std::set<std::string> named;
+    std::vector<std::string> told;
     for (std::size_t i = 0, next = 0; i < pictures.first.size(); ++i) {
         const Texture& t = *pictures.first[i];
         Picture& p = impl_->pictures[i];
@@ -240,7 +249,9 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
         if (!p.map && named.insert(sourceName(t)).second)
             warnings.push_back("texture file " + sourceName(t) + ": cannot read it (" + p.unreadable +
                                "): white is used");
+        if (!p.map) told.push_back(p.unreadable);
     }
+    writeToStderr(withoutToldLibpngErrors(libraries.take(), told));
     for (std::size_t i = 0; i < scene.textures.size(); ++i) {
         const int picture = pictures.ofTexture[i];
         impl_->entries.push_back(
