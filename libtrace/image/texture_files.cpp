@@ -137,11 +137,12 @@ Picture readPicture(const Texture& t) {
 }
 
 // The pictures `first` names, read several at a time; each is read whole and alone, so the MIP
-// maps are the same for any number of threads.
+// maps are the same for any number of threads. One picture alone builds its levels on every
+// thread instead (image/mip_map.cpp: OpenMP runs a parallel loop inside another on one thread).
 std::vector<Picture> readPictures(const std::vector<const Texture*>& first) {
     std::vector<Picture> pictures(first.size());
     ParallelErrors errors;
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (first.size() > 1)
     for (std::size_t i = 0; i < first.size(); ++i) errors.capture([&] { pictures[i] = readPicture(*first[i]); });
     errors.rethrowIfAny();
     return pictures;

@@ -412,6 +412,28 @@ TEST(TextureFiles, PicturesKeepTheirBitsAndTheLevelsAddAThird) {
     std::filesystem::remove(exr);
 }
 
+namespace {
+
+// `scene`'s textures read with one thread and with four look up the same bits.
+void expectTheSameLookups(const Scene& scene) {
+    const int threads = omp_get_max_threads();
+    std::vector<std::string> warnings;
+    omp_set_num_threads(1);
+    const TextureFiles one(scene, warnings);
+    omp_set_num_threads(4);
+    const TextureFiles four(scene, warnings);
+    omp_set_num_threads(threads);
+    for (std::uint32_t i = 0; i < scene.textures.size(); ++i)
+        for (int k = 0; k < 400; ++k) {
+            const float s = float(k) * 0.0123f - 1, t = float(k % 37) * 0.031f;
+            const TexCoord at{s, t, float(k % 5) * 0.01f, 0.002f, -0.001f, float(k % 7) * 0.004f};
+            ASSERT_EQ(one.lookup(i, at), four.lookup(i, at)) << i << " " << k;
+            ASSERT_EQ(one.alpha(i, s, t, false), four.alpha(i, s, t, false)) << i << " " << k;
+        }
+}
+
+}  // namespace
+
 // Pictures are read several at a time and their levels built by several threads: the same maps,
 // the same bits at every lookup, for one thread or four.
 TEST(TextureFiles, TheSameLookupsForAnyNumberOfThreads) {
@@ -424,19 +446,9 @@ TEST(TextureFiles, TheSameLookupsForAnyNumberOfThreads) {
         ASSERT_TRUE(picture.write(path));
         scene.textures.push_back({.name = name, .path = path});
     }
-    const int threads = omp_get_max_threads();
-    std::vector<std::string> warnings;
-    omp_set_num_threads(1);
-    const TextureFiles one(scene, warnings);
-    omp_set_num_threads(4);
-    const TextureFiles four(scene, warnings);
-    omp_set_num_threads(threads);
-    for (std::uint32_t i = 0; i < 3; ++i)
-        for (int k = 0; k < 400; ++k) {
-            const float s = float(k) * 0.0123f - 1, t = float(k % 37) * 0.031f;
-            const TexCoord at{s, t, float(k % 5) * 0.01f, 0.002f, -0.001f, float(k % 7) * 0.004f};
-            ASSERT_EQ(one.lookup(i, at), four.lookup(i, at)) << i << " " << k;
-            ASSERT_EQ(one.alpha(i, s, t, false), four.alpha(i, s, t, false)) << i << " " << k;
-        }
+    // One picture alone: its levels built by several threads (three: several pictures at a time).
+    Scene single;
+    single.textures.push_back(scene.textures[1]);
+    for (const Scene* s : {&scene, &single}) expectTheSameLookups(*s);
     for (const Texture& t : scene.textures) std::filesystem::remove(t.path);
 }
