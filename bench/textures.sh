@@ -1,64 +1,62 @@
 #!/usr/bin/env bash
-# Image textures: speed against the same scenes untextured, and memory against the texture cache.
+# Image textures: speed against the same scenes untextured, first render against a second, and
+# peak memory (docs/benchmarks.md, "Textures").
 #
-#   bench/textures.sh [build-dir] [speed]   (default: build/release; models from $RT_SHARED_DIR or ../shared;
-#                                            speed: the speed table alone)
+#   bench/textures.sh [rt-render [rt-convert]]   (default: build/release's; models from $RT_SHARED_DIR
+#                                                 or ../shared)
+#
+# Any rt-render may be measured (an older build, to compare); $RT_TX_CACHE points into the
+# script's own folder, so that a build with the old tx cache makes its copies there.
 #
 # Speed: textured models of ../shared rendered straight from the model file, and the same scene
 # converted to XML with every texture attribute taken out (same geometry, lights and materials);
-# 640x480, shadows, reflection depth 3, best of 3 wall-clock render times (--stats-json's renderSeconds),
-# the textures read through their tiled copies (a tx cache of the script's own, emptied first). "copies":
-# the seconds the first run takes longer than a later one as a whole process, making the copies.
+# 640x480, by the Whitted tracer (shadows, reflection depth 2) and the path tracer (4 samples a
+# pixel), best of 3 render times (--stats-json's renderSeconds). "first/second": the wall-clock
+# time of a whole first rt-render process over that of a second one (no cache to warm: near 1).
+# "peak": the Whitted render's maximum resident memory (/usr/bin/time -v).
 #
 # Memory: a generated OBJ of 12 quads in a 4 x 3 grid filling the picture, each with its own
-# 2048 x 2048 noise picture (8-bit RGB PNG: 12 MB each, 16 MB with mip levels, 192 MB in all),
-# rendered with --texture-cache 32 (six times less than the textures), by the Whitted tracer
-# (filtered: coarse mip levels) and the path tracer (the finest level everywhere). Peak resident
-# memory from /usr/bin/time -v, against rt-render's start-up (`rt-render --version`); first the
-# run that makes the copies, then runs that read them, then (--tx-cache off) the pictures as they are.
+# 2048 x 2048 noise picture (8-bit RGB PNG: 12 MB decoded each, 16 MB with MIP levels, 192 MB in
+# all), rendered by the Whitted tracer and the path tracer; peak resident memory against
+# rt-render's start-up (`rt-render --version`).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=${1:-build/release}
-render="$build/tools/render/rt-render"
-convert="$build/tools/convert/rt-convert"
+render=$(realpath "${1:-build/release/tools/render/rt-render}")
+convert=$(realpath "${2:-build/release/tools/convert/rt-convert}")
 shared=${RT_SHARED_DIR:-../shared}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export RT_TX_CACHE="$work/tx"
+whitted=(-x 640 -y 480 -s -d 2)
+path=(-x 640 -y 480 --integrator path --spp 4)
 
-# The render's wall-clock seconds (--stats-json's renderSeconds).
-seconds() { "$render" "$@" -x 640 -y 480 -s -d 3 -o null -q --stats-json - | jq .renderSeconds; }
+# The render's seconds (--stats-json's renderSeconds), best of 3.
+seconds() { "$render" "$@" -o null -q --stats-json - | jq .renderSeconds; }
 best_of_3() { for _ in 1 2 3; do seconds "$@"; done | sort -g | head -1; }
 
-# Wall-clock seconds of a whole rt-render process.
-process_seconds() {
-    local start
-    start=$(date +%s.%N)
-    "$render" "$@" -x 640 -y 480 -s -d 3 -o null -q
-    awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }'
+# The wall-clock seconds and peak resident kB of one whole rt-render process: "SECONDS KB".
+process() {
+    /usr/bin/time -f '%e %M' -o "$work/time" "$render" "$@" -o null -q || { cat "$work/time" >&2; exit 1; }
+    cat "$work/time"
 }
 
-printf '%-48s %10s %10s %8s %8s\n' model textured untextured ratio copies
+printf '%-56s %-8s %9s %9s %6s %13s %7s\n' model tracer textured plain ratio first/second peak
 for model in glb/Duck/Duck.glb gltf/Suzanne/Suzanne.gltf gltf/LightsPunctualLamp/LightsPunctualLamp.gltf \
     obj/scrub-pine/scrubPine.obj glb/NormalTangentMirrorTest/NormalTangentMirrorTest.glb; do
     "$convert" "$shared/models/$model" -o "$work/scene.xml" 2>/dev/null
-    sed -E -i 's/ [a-z_]*texture="[^"]*"//g' \
-        "$work/scene.xml"
+    sed -E -i 's/ [a-z_]*texture="[^"]*"//g' "$work/scene.xml"
     rm -rf "$RT_TX_CACHE"
-    first=$(process_seconds "$shared/models/$model")
-    later=$(process_seconds "$shared/models/$model")
-    textured=$(best_of_3 "$shared/models/$model")
-    plain=$(best_of_3 "$work/scene.xml")
-    awk -v m="$model" -v t="$textured" -v p="$plain" -v c="$(awk -v a="$first" -v b="$later" 'BEGIN { print a - b }')" \
-        'BEGIN { printf "%-48s %9.3fs %9.3fs %7.2fx %7.2fs\n", m, t, p, p / t, c }'
+    read -r first kb < <(process "$shared/models/$model" "${whitted[@]}")
+    read -r second _ < <(process "$shared/models/$model" "${whitted[@]}")
+    for tracer in whitted path; do
+        declare -n options=$tracer
+        textured=$(best_of_3 "$shared/models/$model" "${options[@]}")
+        plain=$(best_of_3 "$work/scene.xml" "${options[@]}")
+        awk -v m="$model" -v r="$tracer" -v t="$textured" -v p="$plain" -v f="$first" -v s="$second" -v k="$kb" \
+            'BEGIN { printf "%-56s %-8s %8.3fs %8.3fs %5.2fx %5.2fs/%5.2fs %6.0fM\n", m, r, t, p, p / t, f, s, k / 1024 }'
+    done
 done
-[[ ${2:-} == speed ]] && exit 0
 
-# rss_kb of one run
-peak_kb() {
-    /usr/bin/time -v "$@" 2>"$work/time" >/dev/null || { cat "$work/time" >&2; exit 1; }
-    awk -F': ' '/Maximum resident/ {print $2}' "$work/time"
-}
 mkdir -p "$work/big"
 : >"$work/big/quads.mtl"
 {
@@ -74,19 +72,14 @@ mkdir -p "$work/big"
             $b $b $((b + 2)) $((b + 2)) $((b + 3)) $((b + 3))
     done
 } >"$work/big/quads.obj"
-total=$(du -cb "$work"/big/t*.png | tail -1 | cut -f1)
-base=$(peak_kb "$render" --version)
-camera=(--look-from 2,1.5,3.2 --look-at 2,1.5,0 --fov 70)
-printf '\n%-48s %10s %10s %10s\n' "12 textures of 2048x2048 (PNG $((total / 1000000)) MB)" peak start-up work
+read -r _ base < <(/usr/bin/time -f '%e %M' "$render" --version 2>&1 >/dev/null)
+camera=(--look-from 2,1.5,3.2 --look-at 2,1.5,0 --fov 70 -x 1200 -y 900)
+printf '\n%-42s %9s %9s %9s %9s\n' "12 textures of 2048x2048, 8-bit RGB" seconds peak start-up work
 rm -rf "$RT_TX_CACHE"
-for run in "whitted, making the copies:" "whitted:" "path:--integrator path -S 1" \
-    "whitted, --tx-cache off:--tx-cache off"; do
+for run in "whitted, first:" "whitted, second:" "path -S 1:--integrator path -S 1"; do
     name=${run%%:*} options=${run#*:}
-    for cache in 32 256; do
-        [[ $name == *making* && $cache == 256 ]] && continue  # made once
-        # shellcheck disable=SC2086
-        kb=$(peak_kb "$render" "$work/big/quads.obj" "${camera[@]}" -x 1200 -y 900 $options --texture-cache $cache -o null -q)
-        awk -v n="$name, --texture-cache $cache" -v k="$kb" -v b="$base" \
-            'BEGIN { printf "%-48s %9.0fM %9.0fM %9.0fM\n", n, k / 1024, b / 1024, (k - b) / 1024 }'
-    done
+    # shellcheck disable=SC2086
+    read -r s kb < <(process "$work/big/quads.obj" "${camera[@]}" $options)
+    awk -v n="$name" -v s="$s" -v k="$kb" -v b="$base" \
+        'BEGIN { printf "%-42s %8.2fs %8.0fM %8.0fM %8.0fM\n", n, s, k / 1024, b / 1024, (k - b) / 1024 }'
 done

@@ -80,11 +80,12 @@ ImageHeaderCheck checkHeader(const std::string& name, OIIO::Filesystem::IOProxy*
     if (!in) return {.unreadable = OIIO::geterror()};
     const OIIO::ImageSpec spec = in->spec(0, 0);
     if (std::optional<std::string> why = sizeRefusal(spec)) return {.refusal = std::move(why)};
-    const bool mipMapped = in->seek_subimage(0, 1);
     return {.header = {.width = spec.width,
                        .height = spec.height,
-                       .decodedBytes = std::uint64_t(decodedBytes(spec)),
-                       .tiledMipMapped = spec.tile_width > 0 && mipMapped}};
+                       .channels = spec.nchannels,
+                       .channelBytes = int(spec.format.size()),
+                       .floatingPoint = spec.format.is_floating_point(),
+                       .decodedBytes = std::uint64_t(decodedBytes(spec))}};
 }
 
 }  // namespace

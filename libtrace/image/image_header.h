@@ -7,10 +7,9 @@
 //     OpenImageIO's format probing reading forever;
 //   - an OpenEXR header's attributes must fit in the file (exr_header.h);
 //   - the header must declare pixels (a TGA of 4 x 0 made OpenImageIO divide by zero) and at most
-//     kMaxDecodedImageBytes of them decoded, whatever the layout: OpenImageIO reads an untiled
-//     image whole, makes the missing MIP levels of a tiled single-level one in memory, and the tx
-//     cache's copy reads the source whole (a 27 KB tiled TIFF declaring 32768 x 32768 took 6.9 GB);
-//     and so may one tile.
+//     kMaxDecodedImageBytes of them decoded, whatever the layout: a texture is read whole into
+//     its MIP map (image/mip_map.h), and OpenImageIO's readers hold an untiled image whole (a
+//     27 KB tiled TIFF declaring 32768 x 32768 took 6.9 GB); and so may one tile.
 #pragma once
 
 #include <cstdint>
@@ -27,9 +26,11 @@ constexpr std::uint64_t kMaxDecodedImageBytes = std::uint64_t(1) << 30;
 
 // What an image's header declares about the memory it takes.
 struct ImageHeader {
-    int width = 0, height = 0;       // its finest level's pixels
+    int width = 0, height = 0;  // its finest level's pixels
+    int channels = 0;
+    int channelBytes = 0;            // the bytes of a channel's value as stored (1 for 8 bits)
+    bool floatingPoint = false;      // half, float or double values
     std::uint64_t decodedBytes = 0;  // its finest level, decoded (see kMaxDecodedImageBytes)
-    bool tiledMipMapped = false;     // read a tile at a time within the texture cache (a .tx file)
 };
 
 // The outcome of the check: one of the three is set.

@@ -1,53 +1,51 @@
-// Image textures read through OpenImageIO's TextureSystem: any format it reads, cached and
-// thread-safe. Pictures not tiled and MIP-mapped already (PNG, JPEG) are read through tiled,
-// MIP-mapped copies made once (image/tiled_textures.h), so that memory stays within the cache
-// size; with the tx cache off they are MIP-mapped on the fly and held a whole level at a time
-// (docs/benchmarks.md, "Textures"). 8- and 16-bit images are taken
-// as sRGB-encoded, as glTF's base colour and emissive textures are, and decoded to linear; float images (EXR, HDR) as
-// linear.
+// Image textures: each picture a scene names is decoded once by OpenImageIO (any format it reads,
+// files and pictures embedded in a model), after rt's header check (image/image_header.h), and
+// held in memory as rt's own MIP map (image/mip_map.h), which every lookup reads. No file is
+// written. 8- and 16-bit pictures are taken as sRGB-encoded, as glTF's base colour and emissive
+// textures are, and decoded to linear by lookup(); float pictures (EXR, HDR) as linear.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "image/tiled_textures.h"
+#include "image/mip_map.h"
 #include "render/texture.h"
 #include "scene/scene.h"
 
-namespace OIIO_NAMESPACE_FORWARD {}
-
 namespace rt {
 
-struct TextureCacheSettings {
-    float megabytes = 256;        // OpenImageIO's texture cache (rt-render --texture-cache)
-    std::string txCache = "off";  // the folder of tiled copies (rt-render --tx-cache); "off": sources as they are
-    double txCacheMegabytes = kDefaultTxCacheMegabytes;  // the bound on its size (rt-render --tx-cache-size)
-    // Told what is being done before each copy is made ("making a tiled copy of ..."), the
-    // seconds a first render of a textured model spends before its tree is built; none: silence.
+struct TextureSettings {
+    TextureFilter filter = TextureFilter::Anisotropic;  // rt-render --texture-filter
+    // Told what is being done before the pictures are read ("reading 5 texture pictures, 24 MB"),
+    // so that a model with large textures does not seem to hang; none: silence.
     std::function<void(const std::string&)> announce{};
 };
 
-// What opening the scene's image textures takes in memory at most, from their headers
-// (image/image_header.h), for rt-render --max-memory: OpenImageIO's cache (`cache.megabytes`) once
-// a scene has an image; with the tx cache, the picture whose copy costs most, read whole while its
-// tiled copy is made; without, every picture that is not tiled and MIP-mapped, held whole with its
-// MIP levels. Throws rt::InputError for a texture TextureFiles refuses.
-std::uint64_t estimateTextureMemory(const Scene& scene, const TextureCacheSettings& cache);
+// What the scene's image textures take in memory at most, from their headers, for rt-render
+// --max-memory: every distinct picture's MIP map (its texels as stored, and a third more for the
+// coarser levels), and the pictures decoded at once while they are read. Throws rt::InputError
+// for a texture TextureFiles refuses.
+std::uint64_t estimateTextureMemory(const Scene& scene);
 
 class TextureFiles : public ImageTextures {
 public:
-    // Opens the scene's image textures, making their tiled copies where needed. One that cannot
-    // be read is white (the material's colour alone) and named in `warnings`: a missing texture
-    // does not stop a render, nor does a tx cache that cannot be written (a warning).
-    TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureCacheSettings& cache = {});
+    // Reads the scene's pictures, each distinct one once, several at a time (the same MIP maps
+    // whatever the number of threads). One that cannot be read is white (the material's colour
+    // alone) and named in `warnings`: a missing texture does not stop a render. Throws
+    // rt::InputError for a picture the header check refuses.
+    TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureSettings& settings = {});
     ~TextureFiles() override;
 
     Color lookup(std::uint32_t index, const TexCoord& at) const override;
     Color data(std::uint32_t index, const TexCoord& at) const override;
     float alpha(std::uint32_t index, float s, float t, bool mask) const override;
     bool hasAlpha(std::uint32_t index, bool mask) const override;
+
+    // The MIP map texture `index` reads; null for one that cannot be read or is not an image.
+    const MipMap* mipMap(std::uint32_t index) const;
 
 private:
     struct Impl;

@@ -28,8 +28,7 @@ std::uint64_t defaultMemoryLimit() {
 
 void checkMemoryLimit(const MemoryEstimate& e, std::uint64_t limit, const std::string& smallerImage) {
     if (e.total() <= limit) return;
-    const std::string remedy =
-        e.textures > e.image ? "make the textures smaller, or tiled and MIP-mapped (maketx)" : smallerImage;
+    const std::string remedy = e.textures > e.image ? "make the textures smaller (fewer pixels)" : smallerImage;
     throw InputError("rendering needs about " + gigabytes(e.total()) + " (image " + gigabytes(e.image) +
                      ", scene and tree " + gigabytes(e.sceneAndTree) + ", textures " + gigabytes(e.textures) +
                      "), more than --max-memory " + gigabytes(limit) + "; " + remedy + " or raise --max-memory");

@@ -5,7 +5,7 @@
 source "$(dirname "$0")/common.bash"
 need_shared_models
 models=("$RT_SHARED_DIR/models/3ds/jeep1/jeep1.3ds" "$RT_SHARED_DIR/models/glb/AlphaBlendModeTest/AlphaBlendModeTest.glb")
-opts=(-q -x 90 -y 70 -s --tx-cache off --progress none)
+opts=(-q -x 90 -y 70 -s --progress none)
 for model in "${models[@]}"; do
     name=$(basename "$model")
     RT_SIMD=sse2 "$RT_RENDER" "$model" "${opts[@]}" --packets off --threads 1 -f "$WORK/off.png" --stats-json "$WORK/off.json"

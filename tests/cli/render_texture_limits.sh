@@ -74,7 +74,7 @@ refused "empty.tga is 4 x 0 pixels of 2 channels: no pixels" "$WORK/square.gltf"
 square tiled.tif
 refused "tiled.tif is 32768 x 32768 pixels of 3 channels, 3.0 GiB decoded" "$WORK/square.gltf"
 refused "tiled.tif is 32768 x 32768 pixels" "$WORK/square.gltf" -p  # rt-farm's pre-check
-refused "tiled.tif is 32768 x 32768 pixels" "$WORK/square.gltf" --tx-cache off
+refused "tiled.tif is 32768 x 32768 pixels" "$WORK/square.gltf"
 square small.png
 refused "environment': $WORK/tiled.tif is 32768 x 32768 pixels" "$WORK/square.gltf" --integrator path --environment "$WORK/tiled.tif"
 square tiled100k.tif

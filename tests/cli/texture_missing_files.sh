@@ -37,7 +37,7 @@ warnings_once() {
     [ "$(grep -c "jpg\|open\|No such" "$WORK/stderr")" = 3 ] || fail "$1: more than three lines on them: $(cat "$WORK/stderr")"
 }
 
-expect_exit 0 "$RT_RENDER" "$WORK/model.obj" -x 16 -y 12 -f "$WORK/out.png" --progress none --tx-cache off
+expect_exit 0 "$RT_RENDER" "$WORK/model.obj" -x 16 -y 12 -f "$WORK/out.png" --progress none
 warnings_once rt-render "rt-render: warning: "
 grep -q "rt-render: warning: texture file $WORK/a.jpg: cannot read it (.*): white is used$" "$WORK/stderr" ||
     fail "rt-render: the warning does not say what is wrong: $(cat "$WORK/stderr")"
@@ -52,7 +52,7 @@ expect_exit 0 "$RT_CONVERT" "$WORK/model.obj" -q --json
 
 # The converted scene renders with the same single warnings; a file that is there is not named.
 oiiotool --pattern checker:width=2:height=2 4x4 3 -d uint8 -o "$WORK/c.jpg"
-expect_exit 0 "$RT_RENDER" "$WORK/model.xml" -x 16 -y 12 -f "$WORK/out2.png" --progress none --tx-cache off
+expect_exit 0 "$RT_RENDER" "$WORK/model.xml" -x 16 -y 12 -f "$WORK/out2.png" --progress none
 [ "$(grep -c "texture file" "$WORK/stderr")" = 2 ] || fail "rendering the XML: not two texture lines: $(cat "$WORK/stderr")"
 grep -q "c.jpg" "$WORK/stderr" && fail "c.jpg is there now, and was named: $(cat "$WORK/stderr")"
 expect_exit 0 "$RT_CONVERT" "$WORK/model.obj"

@@ -30,9 +30,9 @@ expect_one_error rt-render "far.xml:5: <sphere> reaches beyond 1e15 from the ori
 expect_exit 2 "$RT_INSPECT" "$scene" -x 65536 -y 65536
 expect_one_error rt-inspect "render it in regions (rt-render --region)"
 
-# A PNG texture that is not one: OpenImageIO's message of several lines ("Read error ...",
-# "Invalid image file ...") is one warning line. (libpng's own line, which libpng prints itself,
-# stays beside it: docs/robustness.md.)
+# A PNG texture that is not one, and one cut short: OpenImageIO's message of several lines ("Read
+# error ...", "Invalid image file ...") is one warning line, and libpng's own line ("libpng error:
+# ...", which libpng prints itself while OpenImageIO reads) is folded into it (image/stderr_capture.h).
 cat >"$WORK/tex.xml" <<'XML'
 <scene>
   <camera fov="50"><origin x="0" y="0" z="-5" /><destination x="0" y="0" z="0" /></camera>
@@ -42,10 +42,17 @@ cat >"$WORK/tex.xml" <<'XML'
 </scene>
 XML
 printf '\x89PNG\r\n\x1a\ngarbagegarbagegarbage' >"$WORK/bad.png"
-expect_exit 0 "$RT_RENDER" "$WORK/tex.xml" -x 16 -y 12 --tx-cache off -o null
+expect_exit 0 "$RT_RENDER" "$WORK/tex.xml" -x 16 -y 12 -o null
 grep -q "^rt-render: warning: texture file .*bad.png: cannot read it (.*; PNG read error: .*): white is used$" \
     "$WORK/stderr" || fail "the texture's warning is not one line: $(cat "$WORK/stderr")"
 grep -q '^PNG read error' "$WORK/stderr" && fail "a message of several lines: $(cat "$WORK/stderr")"
+grep -q '^libpng' "$WORK/stderr" && fail "libpng's own line: $(cat "$WORK/stderr")"
+oiiotool --pattern noise 64x64 3 -d uint8 -o "$WORK/full.png"
+head -c 2000 "$WORK/full.png" >"$WORK/bad.png"
+expect_exit 0 "$RT_RENDER" "$WORK/tex.xml" -x 16 -y 12 -o null
+grep -q "^rt-render: warning: texture file .*bad.png: cannot read it (.*Read error: hit end of file.*): white is used$" \
+    "$WORK/stderr" || fail "the cut texture's warning: $(cat "$WORK/stderr")"
+grep -q '^libpng' "$WORK/stderr" && fail "libpng's own line: $(cat "$WORK/stderr")"
 # A tree dump of more than 10 MB (25,000 spheres: about 12 MB of JSON) says its size.
 python3 - >"$WORK/many.xml" <<'PY'
 import random

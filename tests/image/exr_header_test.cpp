@@ -81,7 +81,7 @@ TEST(ExrHeader, ATextureWithSuchAHeaderIsAnInputError) {
     scene.textures.push_back({.name = "huge", .path = path});
     std::vector<std::string> warnings;
     try {
-        const TextureFiles images(scene, warnings, {.txCache = "off"});
+        const TextureFiles images(scene, warnings);
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("texture 'huge'"), std::string::npos) << e.what();

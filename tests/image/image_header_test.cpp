@@ -64,7 +64,9 @@ TEST(ImageHeader, APictureWithinTheLimitPassesWithItsDecodedSize) {
     EXPECT_FALSE(check.refusal);
     EXPECT_FALSE(check.unreadable);
     EXPECT_EQ(check.header.decodedBytes, 40u * 30 * 3 * 2);
-    EXPECT_FALSE(check.header.tiledMipMapped);
+    EXPECT_EQ(check.header.channels, 3);
+    EXPECT_EQ(check.header.channelBytes, 2);
+    EXPECT_FALSE(check.header.floatingPoint);
 }
 
 // An embedded PNG whose header says 30000 x 30000 (2.5 GiB decoded) in 60 bytes.

@@ -1,13 +1,14 @@
-// Image textures through OpenImageIO's TextureSystem (libtrace/image/texture_files.*): a
-// textured quad seen head-on reproduces its picture, wrap modes, and a missing file.
+// Image textures read by OpenImageIO into rt's MIP maps (libtrace/image/texture_files.*): a
+// textured quad seen head-on reproduces its picture, footprints filter, wrap modes, a missing file,
+// each picture read once, the same MIP maps for any number of threads.
 #include "image/texture_files.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -295,7 +296,7 @@ TEST(TextureFiles, AMissingPictureUsedThriceIsOneWarningOfOneLine) {
     for (const char* name : {"a", "b", "c"}) scene.textures.push_back({.name = name, .path = path});
     scene.textures.push_back({.name = "d", .path = testing::TempDir() + "/nor-this.jpg"});
     std::vector<std::string> warnings;
-    const TextureFiles images(scene, warnings, {.txCache = "off"});
+    const TextureFiles images(scene, warnings);
     ASSERT_EQ(warnings.size(), 2u);
     for (const std::string& warning : warnings) EXPECT_EQ(warning.find('\n'), std::string::npos) << warning;
     EXPECT_NE(warnings[0].find(path), std::string::npos) << warnings[0];
@@ -325,166 +326,129 @@ TEST(TextureFiles, AnUntiledPictureOfAHugeDisplayWindowIsAnInputError) {
     }
 }
 
-// ---- Tiled copies (image/tiled_textures.h) -------------------------------------------------
-
-namespace {
-
-// An empty folder for a test's tx cache (not made: TextureFiles makes it).
-std::string freshFolder(const std::string& name) {
-    const std::string folder = testing::TempDir() + "/" + name;
-    std::filesystem::remove_all(folder);
-    return folder;
-}
-
-// The copies in the tx cache `folder`, sorted; none if it does not exist.
-std::vector<std::filesystem::path> copiesIn(const std::string& folder) {
-    std::vector<std::filesystem::path> copies;
-    const std::filesystem::path own = std::filesystem::path(folder) / kTxCopiesFolder;
-    if (std::filesystem::is_directory(own))
-        for (const auto& entry : std::filesystem::directory_iterator(own))
-            if (!entry.path().filename().string().starts_with(".")) copies.push_back(entry.path());  // not .lock
-    std::sort(copies.begin(), copies.end());
-    return copies;
-}
-
-}  // namespace
-
-TEST(TextureFiles, AnUntiledPictureIsReadThroughATiledCopyMadeOnceAndReused) {
-    const std::string folder = freshFolder("tx-reused"), path = testing::TempDir() + "/tx-reused.png";
-    const std::vector<Color> texels = writePicture(path);
-    const Scene scene = texturedQuad(path);
-    std::vector<std::string> warnings;
-    {
-        const TextureFiles images(scene, warnings, {.txCache = folder});
-        EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
-    }
-    EXPECT_TRUE(warnings.empty());
-    const std::vector<std::filesystem::path> copies = copiesIn(folder);
-    ASSERT_EQ(copies.size(), 1u);
-    OIIO::ImageBuf copy(copies[0].string());
-    ASSERT_TRUE(copy.init_spec(copies[0].string(), 0, 0));
-    EXPECT_GT(copy.spec().tile_width, 0);
-    EXPECT_EQ(copy.nmiplevels(), 5);  // 16, 8, 4, 2 and 1 texels a side
-    // Uncompressed: a tile read inflates nothing (docs/benchmarks.md, "Textures").
-    EXPECT_EQ(copy.spec().get_string_attribute("compression"), "none");
-    // Dated in the past, so that a rewrite within the clock's resolution would show too.
-    const auto past = std::filesystem::last_write_time(copies[0]) - std::chrono::hours(1);
-    std::filesystem::last_write_time(copies[0], past);
-    {
-        const TextureFiles again(scene, warnings, {.txCache = folder});
-        EXPECT_GE(quadPsnr(scene, again, texels), 40) << "PSNR in dB";
-    }
-    EXPECT_EQ(copiesIn(folder), copies);
-    EXPECT_EQ(std::filesystem::last_write_time(copies[0]), past) << "the copy was made again";
-    std::filesystem::remove(path);
-}
-
-TEST(TextureFiles, AChangedPictureGetsANewCopy) {
-    const std::string folder = freshFolder("tx-changed"), path = testing::TempDir() + "/tx-changed.png";
-    writePicture(path);
-    Scene scene;
-    scene.textures.push_back({.name = "t", .path = path});
-    std::vector<std::string> warnings;
-    { const TextureFiles before(scene, warnings, {.txCache = folder}); }
-    OIIO::ImageBuf grey(OIIO::ImageSpec(kSize, kSize, 3, OIIO::TypeDesc::UINT8));
-    OIIO::ImageBufAlgo::fill(grey, {0.5f, 0.5f, 0.5f});
-    ASSERT_TRUE(grey.write(path));
-    const TextureFiles after(scene, warnings, {.txCache = folder});
-    EXPECT_TRUE(warnings.empty());
-    EXPECT_EQ(copiesIn(folder).size(), 2u);
-    const float linear = std::pow((128 / 255.0f + 0.055f) / 1.055f, 2.4f);  // 8-bit 0.5 decoded
-    EXPECT_NEAR(after.lookup(0, {0.5f, 0.5f}).g, linear, 1e-3f);
-    std::filesystem::remove(path);
-}
-
-TEST(TextureFiles, AnUnwritableTxCacheIsAWarningAndThePictureIsReadAsItIs) {
-    const std::string path = testing::TempDir() + "/tx-unwritable.png";
-    const std::vector<Color> texels = writePicture(path);
-    const Scene scene = texturedQuad(path);
-    std::vector<std::string> warnings;
-    const TextureFiles images(scene, warnings, {.txCache = path + "/tx"});  // under a file: no folder, even for root
-    ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_NE(warnings[0].find("no tiled copy"), std::string::npos) << warnings[0];
-    EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
-    std::filesystem::remove(path);
-}
-
-TEST(TextureFiles, AnEmbeddedPictureGetsACopyAndATiledMipMappedFileNone) {
-    const std::string folder = freshFolder("tx-embedded"), path = testing::TempDir() + "/tx-embedded.png";
-    const std::vector<Color> texels = writePicture(path);
-    std::ifstream file(path, std::ios::binary);
-    Scene scene = texturedQuad("");
-    scene.textures[0].file = "embedded.png";
-    scene.textures[0].embedded = std::make_shared<std::vector<std::uint8_t>>(std::istreambuf_iterator<char>(file),
-                                                                             std::istreambuf_iterator<char>());
-    std::vector<std::string> warnings;
-    {
-        const TextureFiles images(scene, warnings, {.txCache = folder});
-        EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
-    }
-    const std::vector<std::filesystem::path> copies = copiesIn(folder);
-    ASSERT_EQ(copies.size(), 1u);
-    EXPECT_TRUE(copies[0].filename().string().starts_with("embedded-")) << copies[0];
-    // The copy as a scene's own texture is tiled and MIP-mapped already: used as it is.
-    const std::string second = freshFolder("tx-of-a-tx");
-    const Scene ofTheCopy = texturedQuad(copies[0].string());
-    const TextureFiles images(ofTheCopy, warnings, {.txCache = second});
-    EXPECT_TRUE(warnings.empty());
-    EXPECT_GE(quadPsnr(ofTheCopy, images, texels), 40) << "PSNR in dB";
-    EXPECT_TRUE(copiesIn(second).empty());
-    std::filesystem::remove(path);
-}
-
-// The copy's MIP levels filter as OpenImageIO's own on-the-fly ones: a distant checker floor,
-// where the coarse levels show, renders the same within a small difference.
-TEST(TextureFiles, ATiledCopyRendersAsTheSourceReadAsItIs) {
-    const std::string folder = freshFolder("tx-same"), path = testing::TempDir() + "/tx-same.exr";
-    writeChecker(path);
-    const Scene scene = checkerFloor(path);
-    const NaiveAccelerator accel(scene.primitives);
-    RenderStats stats;
-    const auto rendered = [&](const std::string& txCache) {
-        std::vector<std::string> warnings;
-        const TextureFiles images(scene, warnings, {.txCache = txCache});
-        EXPECT_TRUE(warnings.empty());
-        return render(scene, accel, test::picture(96, 64), stats, {}, &images);
-    };
-    const Framebuffer asItIs = rendered("off"), throughTheCopy = rendered(folder);
-    EXPECT_EQ(copiesIn(folder).size(), 1u);
-    const double rms = test::rmsDifference(asItIs, throughTheCopy);
-    EXPECT_LT(rms, 0.01) << "RMS difference";
-    std::filesystem::remove(path);
-}
-
-// A picture of one colour is answered from its copy's one texel (marked by constant_color_detect),
-// without OpenImageIO's filter: the values of the picture read as it is, at any footprint; and
-// opaque, it cuts nothing out.
-TEST(TextureFiles, APictureOfOneColourLooksUpAsBeforeAndOpaqueHasNoAlpha) {
-    const std::string folder = freshFolder("tx-constant"), dir = testing::TempDir();
+// A picture of one colour keeps one texel (image/mip_map.h): every lookup, at any footprint,
+// reads it, as colour, data and alpha; opaque, it cuts nothing out.
+TEST(TextureFiles, APictureOfOneColourIsItsTexelEverywhereAndOpaqueHasNoAlpha) {
+    const std::string dir = testing::TempDir();
     Scene scene;
     for (const float alpha : {1.0f, 0.4f}) {
         OIIO::ImageBuf picture(OIIO::ImageSpec(kSize, kSize, 4, OIIO::TypeDesc::UINT8));
         OIIO::ImageBufAlgo::fill(picture, {0.3f, 0.6f, 0.9f, alpha});
-        const std::string path = dir + "/tx-constant" + std::to_string(scene.textures.size()) + ".png";
+        const std::string path = dir + "/constant" + std::to_string(scene.textures.size()) + ".png";
         ASSERT_TRUE(picture.write(path));
         scene.textures.push_back({.name = path, .path = path});
     }
     std::vector<std::string> warnings;
-    const TextureFiles copied(scene, warnings, {.txCache = folder}), asItIs(scene, warnings, {.txCache = "off"});
+    const TextureFiles images(scene, warnings);
     EXPECT_TRUE(warnings.empty());
-    for (std::uint32_t i : {0u, 1u})
+    const auto byte = [](float v) { return std::round(v * 255) / 255; };  // as 8 bits hold it
+    for (std::uint32_t i : {0u, 1u}) {
+        EXPECT_EQ(images.mipMap(i)->levelSizes().size(), 1u);
         for (const TexCoord& at : {TexCoord{0.1f, 0.7f}, TexCoord{0.5f, 0.5f, 0.2f, 0.01f, -0.03f, 0.1f},
                                    TexCoord{0.9f, 0.2f, 0.01f, 0.0f, 0.0f, 0.01f, true}}) {
-            // OpenImageIO's filter of equal texels adds rounding error in the last bits.
-            const Color a = copied.lookup(i, at), b = asItIs.lookup(i, at), c = copied.data(i, at),
-                        d = asItIs.data(i, at);
-            for (const auto& [got, want] :
-                 {std::pair(a.r, b.r), {a.g, b.g}, {a.b, b.b}, {c.r, d.r}, {c.g, d.g}, {c.b, d.b}})
-                EXPECT_NEAR(got, want, 1e-6f);
-            EXPECT_NEAR(copied.alpha(i, at.s, at.t, false), asItIs.alpha(i, at.s, at.t, false), 1e-6f);
+            // The opaque one's colour (OpenImageIO gives the other's premultiplied by its alpha, as it stored it).
+            const Color colour = images.lookup(0, at), data = images.data(0, at);
+            EXPECT_NEAR(colour.g, std::pow((byte(0.6f) + 0.055f) / 1.055f, 2.4f), 1e-6f);
+            EXPECT_NEAR(data.b, byte(0.9f), 1e-6f);
+            EXPECT_NEAR(images.alpha(i, at.s, at.t, false), i == 0 ? 1 : byte(0.4f), 1e-6f);
         }
-    EXPECT_FALSE(copied.hasAlpha(0, false));
-    EXPECT_TRUE(asItIs.hasAlpha(0, false));  // not known to be opaque: a PNG carries no such mark
-    EXPECT_TRUE(copied.hasAlpha(1, false));
+    }
+    EXPECT_FALSE(images.hasAlpha(0, false));
+    EXPECT_TRUE(images.hasAlpha(1, false));
+    for (const Texture& t : scene.textures) std::filesystem::remove(t.path);
+}
+
+// Textures that name one picture (an OBJ map in several materials, a glTF image under several
+// samplers) share its MIP map: read once. An embedded picture is read from memory.
+TEST(TextureFiles, EachPictureIsReadOnceAndSharedByItsTextures) {
+    const std::string path = testing::TempDir() + "/shared.png";
+    const std::vector<Color> texels = writePicture(path);
+    std::ifstream file(path, std::ios::binary);
+    const auto bytes = std::make_shared<std::vector<std::uint8_t>>(std::istreambuf_iterator<char>(file),
+                                                                   std::istreambuf_iterator<char>());
+    Scene scene = texturedQuad("");
+    scene.textures[0].file = "embedded.png";
+    scene.textures[0].embedded = bytes;
+    scene.textures.push_back(scene.textures[0]);
+    for (Texture::Wrap w : {Texture::Wrap::Repeat, Texture::Wrap::Clamp})
+        scene.textures.push_back({.name = "file", .path = path, .wrapS = w});
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_GE(quadPsnr(scene, images, texels), 40) << "PSNR in dB";
+    ASSERT_NE(images.mipMap(0), nullptr);
+    EXPECT_EQ(images.mipMap(0), images.mipMap(1));
+    EXPECT_EQ(images.mipMap(2), images.mipMap(3));
+    EXPECT_NE(images.mipMap(0), images.mipMap(2));
+    std::filesystem::remove(path);
+}
+
+// 8-bit pictures stay 8 bits a channel, half-float ones half; the coarser levels add at most a third.
+TEST(TextureFiles, PicturesKeepTheirBitsAndTheLevelsAddAThird) {
+    const std::string png = testing::TempDir() + "/bits.png", exr = testing::TempDir() + "/bits.exr";
+    for (const auto& [path, type] : {std::pair(png, OIIO::TypeDesc::UINT8), std::pair(exr, OIIO::TypeDesc::HALF)}) {
+        OIIO::ImageBuf picture(OIIO::ImageSpec(300, 200, 3, type));
+        OIIO::ImageBufAlgo::noise(picture, "uniform", 0, 1);
+        ASSERT_TRUE(picture.write(path));
+    }
+    Scene scene;
+    scene.textures.push_back({.name = "png", .path = png});
+    scene.textures.push_back({.name = "exr", .path = exr});
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings);
+    ASSERT_TRUE(warnings.empty());
+    EXPECT_TRUE(images.mipMap(0)->storesBytes());
+    EXPECT_FALSE(images.mipMap(1)->storesBytes());
+    const double decoded = 300.0 * 200 * 3;
+    EXPECT_LE(double(images.mipMap(0)->bytes()), decoded * 4 / 3);
+    EXPECT_LE(double(images.mipMap(1)->bytes()), 2 * decoded * 4 / 3);
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(2);
+    EXPECT_EQ(estimateTextureMemory(scene),
+              images.mipMap(0)->bytes() + images.mipMap(1)->bytes() + std::uint64_t(decoded) * 3)
+        << "the maps and both pictures read at once";
+    omp_set_num_threads(threads);
+    std::filesystem::remove(png);
+    std::filesystem::remove(exr);
+}
+
+namespace {
+
+// `scene`'s textures read with one thread and with four look up the same bits.
+void expectTheSameLookups(const Scene& scene) {
+    const int threads = omp_get_max_threads();
+    std::vector<std::string> warnings;
+    omp_set_num_threads(1);
+    const TextureFiles one(scene, warnings);
+    omp_set_num_threads(4);
+    const TextureFiles four(scene, warnings);
+    omp_set_num_threads(threads);
+    for (std::uint32_t i = 0; i < scene.textures.size(); ++i)
+        for (int k = 0; k < 400; ++k) {
+            const float s = float(k) * 0.0123f - 1, t = float(k % 37) * 0.031f;
+            const TexCoord at{s, t, float(k % 5) * 0.01f, 0.002f, -0.001f, float(k % 7) * 0.004f};
+            ASSERT_EQ(one.lookup(i, at), four.lookup(i, at)) << i << " " << k;
+            ASSERT_EQ(one.alpha(i, s, t, false), four.alpha(i, s, t, false)) << i << " " << k;
+        }
+}
+
+}  // namespace
+
+// Pictures are read several at a time and their levels built by several threads: the same maps,
+// the same bits at every lookup, for one thread or four.
+TEST(TextureFiles, TheSameLookupsForAnyNumberOfThreads) {
+    Scene scene;
+    for (const char* name : {"threads-a.png", "threads-b.exr", "threads-c.png"}) {
+        OIIO::ImageBuf picture(OIIO::ImageSpec(
+            301, 157, 4, std::string(name).ends_with(".exr") ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8));
+        OIIO::ImageBufAlgo::noise(picture, "uniform", 0, 1);
+        const std::string path = testing::TempDir() + "/" + name;
+        ASSERT_TRUE(picture.write(path));
+        scene.textures.push_back({.name = name, .path = path});
+    }
+    // One picture alone: its levels built by several threads (three: several pictures at a time).
+    Scene single;
+    single.textures.push_back(scene.textures[1]);
+    for (const Scene* s : {&scene, &single}) expectTheSameLookups(*s);
     for (const Texture& t : scene.textures) std::filesystem::remove(t.path);
 }

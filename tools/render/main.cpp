@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
     options.arguments.assign(argv, argv + argc);
     options.optionValues = rt::tool::optionValues(app);
     options.ignoredOptions = rt::tool::render::optionsTheIntegratorIgnores(app, options.render.integrator);
+    options.retiredOptions = rt::tool::render::retiredOptionsGiven(app);
     const int status = rt::tool::run("rt-render", [&] { return rt::tool::render::runRender(options); });
     if (status == rt::tool::kExitOk) rt::tool::render::endAsInterrupted();  // once standard output is flushed
     return status;

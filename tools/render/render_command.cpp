@@ -15,7 +15,6 @@
 #include "core/text.h"
 #include "image/image_check.h"
 #include "image/texture_files.h"
-#include "image/tiled_textures.h"
 #include "import/load_scene.h"
 #include "light_option.h"
 #include "os/atomic_file.h"
@@ -348,6 +347,10 @@ int renderAll(RenderOptions o) {
         if (!o.quiet)
             std::cerr << "rt-render: note: " << option << " is not used by --integrator "
                       << nameOf(kIntegratorNames, o.render.integrator) << ": ignored\n";
+    for (const std::string& option : o.retiredOptions)
+        if (!o.quiet)
+            std::cerr << "rt-render: note: " << option
+                      << " is no longer used: textures are read into memory, no copies are made: ignored\n";
     if (outputsComplete(o, outputs, frames, progress)) return 0;
     prepareOutputs(o, outputs, frames.first);
 
@@ -356,12 +359,11 @@ int renderAll(RenderOptions o) {
 
     Scene scene = loadWithCamera(o);
     scene.dropDescription();
-    const TextureCacheSettings textureCache{o.textureCacheMb, o.txCache.value_or(defaultTxCache()), o.txCacheMb,
-                                            [progress](const std::string& step) { announce(progress, step); }};
     MemoryEstimate memory = estimateRenderMemory(o.render, scene.primitives.size(), !o.preprocessOnly);
-    memory.textures = estimateTextureMemory(scene, textureCache);  // before any is read
+    memory.textures = estimateTextureMemory(scene);  // before any is read
     checkMemoryLimit(memory, memoryLimit);
-    const TextureFiles images(scene, scene.warnings, textureCache);  // before the warnings are shown: it adds its own
+    const TextureSettings textures{o.textureFilter, [progress](const std::string& step) { announce(progress, step); }};
+    const TextureFiles images(scene, scene.warnings, textures);  // before the warnings are shown: it adds its own
     if (!o.quiet)
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << oneLine(w) << '\n';
     RenderStats stats;

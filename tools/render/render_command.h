@@ -11,7 +11,7 @@
 #include "command_line.h"
 #include "core/vec3.h"
 #include "image/image_output.h"
-#include "image/tiled_textures.h"
+#include "image/mip_map.h"
 #include "import/import.h"
 #include "progress.h"
 #include "render/render_settings.h"
@@ -23,6 +23,11 @@ namespace rt::tool::render {
 enum class OnInterrupt { Discard, Write };
 inline constexpr NamedValues<OnInterrupt, 2> kOnInterruptNames{
     {{"discard", OnInterrupt::Discard}, {"write", OnInterrupt::Write}}};
+
+inline constexpr NamedValues<TextureFilter, 4> kTextureFilterNames{{{"nearest", TextureFilter::Nearest},
+                                                                    {"bilinear", TextureFilter::Bilinear},
+                                                                    {"trilinear", TextureFilter::Trilinear},
+                                                                    {"anisotropic", TextureFilter::Anisotropic}}};
 
 struct RenderOptions {
     std::string scenePath;                        // a file, or "-" for standard input
@@ -64,9 +69,10 @@ struct RenderOptions {
     std::vector<std::string> lights;          // --light TYPE:NUMBERS, any number (light_option.h)
     bool noDefaultLight = false;              // --no-default-light: the scene's headlight is removed
     std::vector<std::string> ignoredOptions;  // given, but not read by the integrator: noted on stderr
-    float textureCacheMb = 256;               // --texture-cache MB: OpenImageIO's texture cache
-    std::optional<std::string> txCache;       // --tx-cache DIR|off: tiled texture copies; default rt::defaultTxCache()
-    double txCacheMb = kDefaultTxCacheMegabytes;  // --tx-cache-size MB: the bound on the tx cache's size
+    TextureFilter textureFilter = TextureFilter::Anisotropic;  // --texture-filter
+    // Options of the texture cache rt no longer has (--texture-cache, --tx-cache, --tx-cache-size),
+    // given: accepted, so that scripts keep working, and noted on stderr as ignored.
+    std::vector<std::string> retiredOptions;
     // --on-interrupt discard|write
     OnInterrupt onInterrupt = OnInterrupt::Discard;
 };

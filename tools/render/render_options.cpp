@@ -15,6 +15,9 @@ using rt::AccelKind;
 using rt::tool::addNamedOption;
 using rt::tool::numberIn;
 
+// The texture cache's options (rt-render.md, "Textures"): rt reads textures into memory now.
+constexpr std::array<const char*, 3> kRetiredTextureOptions{"--texture-cache", "--tx-cache", "--tx-cache-size"};
+
 // -o's check: one of outputNames(). A file name there is the usual slip (rt-convert's -o is a file,
 // as in most tools), so it is answered with the option that takes one.
 CLI::Validator outputTypeCheck() {
@@ -68,21 +71,17 @@ void addRenderingOptions(CLI::App& app, RenderOptions& o) {
     rt::tool::addMaxInputOption(app)->group(group);
     rt::tool::addSandboxOption(app)->group(group);
     rt::tool::addMaxMemoryOption(app, o.maxMemoryGb)->group(group);
-    app.add_option("--texture-cache", o.textureCacheMb,
-                   "Memory for image textures, in MB: OpenImageIO keeps the tiles it reads within it")
-        ->check(rt::tool::numberIn(1.0, 1e6))
+    addNamedOption(app, "--texture-filter", o.textureFilter, kTextureFilterNames,
+                   "How image textures are filtered over a pixel's footprint: one texel, four, two MIP levels, or "
+                   "up to 8 trilinear probes along the footprint")
         ->capture_default_str()
         ->group(group);
-    app.add_option("--tx-cache", o.txCache,
-                   "Folder for the tiled, MIP-mapped copies of PNG, JPEG and other untiled textures, made once; off: "
-                   "read them as they are [default: $RT_TX_CACHE, else $XDG_CACHE_HOME/rt/tx or ~/.cache/rt/tx]")
-        ->group(group);
-    app.add_option("--tx-cache-size", o.txCacheMb,
-                   "Bound on the tx cache, in MB: the least recently used copies not in use are removed to keep "
-                   "within it")
-        ->check(rt::tool::numberIn(1.0, 1e9))
-        ->capture_default_str()
-        ->group(group);
+    // The texture cache's options, kept so that scripts that give them still run (noted as ignored).
+    for (const char* retired : kRetiredTextureOptions)
+        app.add_option_function<std::string>(
+               retired, [](const std::string&) {},
+               "No longer used: textures are read into memory, no copies are made (ignored)")
+            ->group(group);
     rt::tool::addThreadsOption(app, o.render.threads)->group(group);
     app.add_option("--time-limit", o.render.timeLimitSeconds,
                    "Stop after this many seconds: the path tracer writes its whole passes, else nothing (exit 3)")
@@ -274,6 +273,13 @@ void chooseDefaultAccel(CLI::App& app, RenderOptions& options) {
     if (app.count("--accel") + app.count("--bsp") + app.count("--kd") != 0) return;
     options.accel.kind = defaultAccelKind(options.render.integrator);
     app.get_option("--accel")->default_str(accelKindName(options.accel.kind));  // as --stats-json records it
+}
+
+std::vector<std::string> retiredOptionsGiven(const CLI::App& app) {
+    std::vector<std::string> given;
+    for (const char* option : kRetiredTextureOptions)
+        if (app.count(option) > 0) given.emplace_back(option);
+    return given;
 }
 
 std::vector<std::string> optionsTheIntegratorIgnores(const CLI::App& app, Integrator integrator) {

@@ -24,5 +24,7 @@ void chooseDefaultAccel(CLI::App& app, RenderOptions& options);
 // The options given on `app`'s command line that `integrator` does not use (--max-bounces with
 // the Whitted tracer, -d with the path tracer, ...): runRender notes each on stderr.
 std::vector<std::string> optionsTheIntegratorIgnores(const CLI::App& app, Integrator integrator);
+// The options of the texture cache rt no longer has, as given on the command line.
+std::vector<std::string> retiredOptionsGiven(const CLI::App& app);
 
 }  // namespace rt::tool::render

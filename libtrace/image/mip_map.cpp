@@ -1,0 +1,335 @@
+#include "image/mip_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+
+namespace rt {
+
+namespace {
+
+// ---- Stored values ---------------------------------------------------------------------------
+
+float decode(std::uint8_t v, const TexelDecoding& d) { return d.table[v]; }
+float decode(half v, const TexelDecoding&) { return float(v); }
+float decode(float v, const TexelDecoding&) { return v; }
+
+// A box-filtered value back in the stored type (8 bits rounded to the nearest).
+template <class T>
+T stored(float v) {
+    if constexpr (std::is_same_v<T, std::uint8_t>)
+        return std::uint8_t(std::clamp(v, 0.0f, 255.0f) + 0.5f);
+    else
+        return T(v);
+}
+
+template <class T>
+bool isOne(T v) {
+    if constexpr (std::is_same_v<T, std::uint8_t>)
+        return v == 255;
+    else
+        return float(v) >= 1;
+}
+
+// ---- The pyramid -----------------------------------------------------------------------------
+
+// The finer texels one coarse texel covers along an axis, and the share of each.
+struct BoxTaps {
+    int first = 0;
+    std::vector<float> weights;
+};
+
+// The box filter from `fine` texels down to `coarse` along an axis: coarse texel i covers
+// [i * r, (i + 1) * r) of the finer ones, r = fine / coarse; each finer texel weighs the part of it
+// inside, over r.
+std::vector<BoxTaps> boxTaps(int fine, int coarse) {
+    std::vector<BoxTaps> taps(static_cast<std::size_t>(coarse));
+    const double r = double(fine) / coarse;
+    for (int i = 0; i < coarse; ++i) {
+        const double begin = i * r, end = (i + 1) * r;
+        BoxTaps& tap = taps[std::size_t(i)];
+        tap.first = int(std::floor(begin));
+        for (int j = tap.first; j < fine && j < end; ++j)
+            tap.weights.push_back(float((std::min<double>(j + 1, end) - std::max<double>(j, begin)) / r));
+    }
+    return taps;
+}
+
+// The next coarser level of `fine`: each side halved, rounded down, at least 1.
+template <class T>
+MipLevel<T> halved(const MipLevel<T>& fine, int channels) {
+    MipLevel<T> coarse{std::max(1, fine.width / 2), std::max(1, fine.height / 2), {}};
+    coarse.texels.resize(std::size_t(coarse.width) * std::size_t(coarse.height) * std::size_t(channels));
+    const std::vector<BoxTaps> across = boxTaps(fine.width, coarse.width), down = boxTaps(fine.height, coarse.height);
+    const std::size_t fineRow = std::size_t(fine.width) * std::size_t(channels);
+    // Rows are independent: the same texels for any number of threads.
+#pragma omp parallel for schedule(static)
+    for (int y = 0; y < coarse.height; ++y) {
+        std::vector<float> row(fineRow, 0.0f);  // the finer rows under this one, filtered down
+        const BoxTaps& rows = down[std::size_t(y)];
+        for (std::size_t k = 0; k < rows.weights.size(); ++k) {
+            const T* src = fine.texels.data() + std::size_t(rows.first + int(k)) * fineRow;
+            for (std::size_t i = 0; i < fineRow; ++i) row[i] += rows.weights[k] * float(src[i]);
+        }
+        T* out = coarse.texels.data() + std::size_t(y) * std::size_t(coarse.width) * std::size_t(channels);
+        for (int x = 0; x < coarse.width; ++x) {
+            const BoxTaps& cols = across[std::size_t(x)];
+            for (int c = 0; c < channels; ++c) {
+                float sum = 0;
+                for (std::size_t k = 0; k < cols.weights.size(); ++k)
+                    sum += cols.weights[k] * row[std::size_t(cols.first + int(k)) * std::size_t(channels) + c];
+                out[std::size_t(x) * std::size_t(channels) + std::size_t(c)] = stored<T>(sum);
+            }
+        }
+    }
+    return coarse;
+}
+
+// ---- Lookups ---------------------------------------------------------------------------------
+
+// A coordinate brought into the range its wrap mode repeats in (a period of 1, or 2 mirrored),
+// so that texel indices stay small; NaN and infinities read the first texel.
+float reduced(float s, Texture::Wrap wrap) {
+    if (!(std::abs(s) < 1e7f)) return 0;
+    switch (wrap) {
+        case Texture::Wrap::Clamp:
+            return std::clamp(s, -1.0f, 2.0f);
+        case Texture::Wrap::Mirror:
+            return s - 2 * std::floor(s * 0.5f);
+        case Texture::Wrap::Repeat:
+            break;
+    }
+    return s - std::floor(s);
+}
+
+// Texel index i of a side of n texels, wrapped; i within a period of `reduced`'s range and one beyond.
+int wrapped(int i, int n, Texture::Wrap wrap) {
+    if (unsigned(i) < unsigned(n)) return i;
+    switch (wrap) {
+        case Texture::Wrap::Clamp:
+            return std::clamp(i, 0, n - 1);
+        case Texture::Wrap::Mirror: {
+            int m = i % (2 * n);
+            if (m < 0) m += 2 * n;
+            return m < n ? m : 2 * n - 1 - m;
+        }
+        case Texture::Wrap::Repeat:
+            break;
+    }
+    const int m = i % n;
+    return m < 0 ? m + n : m;
+}
+
+// The channels `how` asks for, of texel (x, y) of `level`, times `weight`, added to `sum`.
+template <class T>
+void addTexel(const MipLevel<T>& level, int channels, int x, int y, float weight, const MipLookup& how, float* sum) {
+    const T* texel = level.texels.data() +
+                     (std::size_t(y) * std::size_t(level.width) + std::size_t(x)) * std::size_t(channels) +
+                     std::size_t(how.firstChannel);
+    for (int c = 0; c < how.channels; ++c) sum[c] += weight * decode(texel[c], how.decoding);
+}
+
+template <class T>
+void nearest(const MipLevel<T>& level, int channels, float s, float t, const MipLookup& how, float* sum) {
+    const int x = wrapped(int(std::floor(reduced(s, how.wrapS) * float(level.width))), level.width, how.wrapS);
+    const int y = wrapped(int(std::floor(reduced(t, how.wrapT) * float(level.height))), level.height, how.wrapT);
+    addTexel(level, channels, x, y, 1, how, sum);
+}
+
+// The four texels around (s, t) on `level`, weighted by distance, times `weight`, added to `sum`.
+template <class T>
+void bilinearAt(const MipLevel<T>& level, int channels, float s, float t, float weight, const MipLookup& how,
+                float* sum) {
+    const float x = reduced(s, how.wrapS) * float(level.width) - 0.5f;
+    const float y = reduced(t, how.wrapT) * float(level.height) - 0.5f;
+    const float x0 = std::floor(x), y0 = std::floor(y);
+    const float fx = x - x0, fy = y - y0;
+    const int xa = wrapped(int(x0), level.width, how.wrapS), xb = wrapped(int(x0) + 1, level.width, how.wrapS);
+    const int ya = wrapped(int(y0), level.height, how.wrapT), yb = wrapped(int(y0) + 1, level.height, how.wrapT);
+    addTexel(level, channels, xa, ya, weight * (1 - fx) * (1 - fy), how, sum);
+    addTexel(level, channels, xb, ya, weight * fx * (1 - fy), how, sum);
+    addTexel(level, channels, xa, yb, weight * (1 - fx) * fy, how, sum);
+    addTexel(level, channels, xb, yb, weight * fx * fy, how, sum);
+}
+
+// Bilinear on the two levels around `level` (fractional: 0 the finest), blended; at or beyond
+// either end, the one level there.
+template <class T>
+void trilinearAt(const MipLevels<T>& levels, int channels, float s, float t, float level, float weight,
+                 const MipLookup& how, float* sum) {
+    const int last = int(levels.size()) - 1;
+    if (!(level > 0)) return bilinearAt(levels[0], channels, s, t, weight, how, sum);  // NaN too
+    if (level >= float(last)) return bilinearAt(levels[std::size_t(last)], channels, s, t, weight, how, sum);
+    const int fine = int(level);
+    const float f = level - float(fine);
+    bilinearAt(levels[std::size_t(fine)], channels, s, t, weight * (1 - f), how, sum);
+    bilinearAt(levels[std::size_t(fine) + 1], channels, s, t, weight * f, how, sum);
+}
+
+// The footprint of a lookup in level 0's texels: its two axes (one pixel's step right and down).
+struct Footprint {
+    float ax, ay, bx, by;  // the axes, in texels
+    float a2, b2;          // their squared lengths
+};
+
+Footprint footprint(const TexCoord& at, int width, int height) {
+    const float w = float(width), h = float(height);
+    Footprint f{at.dsdx * w, at.dtdx * h, at.dsdy * w, at.dtdy * h, 0, 0};
+    f.a2 = f.ax * f.ax + f.ay * f.ay;
+    f.b2 = f.bx * f.bx + f.by * f.by;
+    return f;
+}
+
+// The level whose texels are `texels` level-0 texels wide (0 the finest).
+float levelOf(float texels) { return std::log2(std::max(texels, 1e-8f)); }
+
+template <class T>
+void trilinear(const MipLevels<T>& levels, int channels, const TexCoord& at, const MipLookup& how, float* sum) {
+    const Footprint f = footprint(at, levels[0].width, levels[0].height);
+    trilinearAt(levels, channels, at.s, at.t, levelOf(std::sqrt(std::max(f.a2, f.b2))), 1, how, sum);
+}
+
+// Up to how.maxProbes trilinear probes spread evenly along the footprint's longer axis, on the
+// level its length over the probes sets (not finer than the shorter axis calls for when the probes
+// do not reach it: the footprint is then widened across, as a GPU's anisotropic filter does).
+template <class T>
+void anisotropic(const MipLevels<T>& levels, int channels, const TexCoord& at, const MipLookup& how, float* sum) {
+    const Footprint f = footprint(at, levels[0].width, levels[0].height);
+    const bool aLonger = f.a2 >= f.b2;
+    const float major = std::sqrt(aLonger ? f.a2 : f.b2), minor = std::sqrt(aLonger ? f.b2 : f.a2);
+    // As many probes as the footprint is longer than wide, and no more than it is texels long (a
+    // magnified texture is one bilinear probe however thin the footprint). Rounded, not up: a
+    // footprint a shade longer one way than the other (a quad seen nearly head-on) is one probe,
+    // not two half a texel apart.
+    const float ratio = std::min(major / std::max(minor, 1e-8f), major);
+    const int probes = !(ratio < float(how.maxProbes)) ? how.maxProbes : std::max(1, int(ratio + 0.5f));
+    if (probes == 1) return trilinearAt(levels, channels, at.s, at.t, levelOf(major), 1, how, sum);
+    const float level = levelOf(major / float(probes));
+    const float ds = aLonger ? at.dsdx : at.dsdy, dt = aLonger ? at.dtdx : at.dtdy;
+    const float weight = 1.0f / float(probes);
+    for (int i = 0; i < probes; ++i) {
+        const float along = (float(i) + 0.5f) / float(probes) - 0.5f;
+        trilinearAt(levels, channels, at.s + along * ds, at.t + along * dt, level, weight, how, sum);
+    }
+}
+
+template <class T>
+void filtered(const MipLevels<T>& levels, int channels, const TexCoord& at, const MipLookup& how, float* sum) {
+    if (levels.size() == 1 && levels[0].width == 1 && levels[0].height == 1)  // one colour
+        return addTexel(levels[0], channels, 0, 0, 1, how, sum);
+    switch (how.filter) {
+        case TextureFilter::Nearest:
+            return nearest(levels[0], channels, at.s, at.t, how, sum);
+        case TextureFilter::Bilinear:
+            return bilinearAt(levels[0], channels, at.s, at.t, 1, how, sum);
+        case TextureFilter::Trilinear:
+            return trilinear(levels, channels, at, how, sum);
+        case TextureFilter::Anisotropic:
+            break;
+    }
+    anisotropic(levels, channels, at, how, sum);
+}
+
+std::array<float, 256> byteTable(float (*f)(float)) {
+    std::array<float, 256> table{};
+    for (int i = 0; i < 256; ++i) table[std::size_t(i)] = f(float(i) / 255);
+    return table;
+}
+
+}  // namespace
+
+MipMap::MipMap(int width, int height, int channels, std::vector<std::uint8_t> texels) : channels_(channels) {
+    build(width, height, std::move(texels));
+}
+
+MipMap::MipMap(int width, int height, int channels, std::vector<half> texels) : channels_(channels) {
+    build(width, height, std::move(texels));
+}
+
+MipMap::MipMap(int width, int height, int channels, std::vector<float> texels) : channels_(channels) {
+    build(width, height, std::move(texels));
+}
+
+template <class T>
+void MipMap::build(int width, int height, std::vector<T> texels) {
+    const std::size_t n = std::size_t(channels_);
+    bool constant = true;
+    for (std::size_t i = n; i < texels.size() && constant; i += n)
+        constant = std::memcmp(&texels[i], &texels[0], n * sizeof(T)) == 0;
+    for (std::size_t c = 0; c < n; ++c) {
+        bool one = true;
+        for (std::size_t i = c; i < texels.size() && one; i += n) one = isOne(texels[i]);
+        allOne_[c] = one;
+    }
+    MipLevels<T> levels;
+    if (constant) {
+        texels.resize(n);
+        levels.push_back({1, 1, std::move(texels)});
+    } else {
+        levels.push_back({width, height, std::move(texels)});
+        while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(halved(levels.back(), channels_));
+    }
+    levels_ = std::move(levels);
+}
+
+void MipMap::lookup(const TexCoord& at, const MipLookup& how, float* out) const {
+    std::fill_n(out, how.channels, 0.0f);
+    std::visit([&](const auto& levels) { filtered(levels, channels_, at, how, out); }, levels_);
+}
+
+float MipMap::bilinear(float s, float t, const MipLookup& how) const {
+    float value = 0;
+    std::visit(
+        [&](const auto& levels) {
+            if (levels.size() == 1 && levels[0].width == 1 && levels[0].height == 1)
+                addTexel(levels[0], channels_, 0, 0, 1, how, &value);
+            else
+                bilinearAt(levels[0], channels_, s, t, 1, how, &value);
+        },
+        levels_);
+    return value;
+}
+
+std::vector<std::array<int, 2>> MipMap::levelSizes() const {
+    std::vector<std::array<int, 2>> sizes;
+    std::visit(
+        [&](const auto& levels) {
+            for (const auto& level : levels) sizes.push_back({level.width, level.height});
+        },
+        levels_);
+    return sizes;
+}
+
+std::uint64_t MipMap::bytes() const {
+    std::uint64_t total = 0;
+    std::visit(
+        [&](const auto& levels) {
+            for (const auto& level : levels) total += level.texels.size() * sizeof(level.texels[0]);
+        },
+        levels_);
+    return total;
+}
+
+std::uint64_t mipMapBytes(int width, int height, std::uint64_t bytesPerTexel) {
+    std::uint64_t total = 0;
+    for (;;) {
+        total += std::uint64_t(width) * std::uint64_t(height) * bytesPerTexel;
+        if (width == 1 && height == 1) return total;
+        width = std::max(1, width / 2);
+        height = std::max(1, height / 2);
+    }
+}
+
+const float* srgbByteTable() {
+    static const std::array<float, 256> table =
+        byteTable([](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); });
+    return table.data();
+}
+
+const float* linearByteTable() {
+    static const std::array<float, 256> table = byteTable([](float v) { return v; });
+    return table.data();
+}
+
+}  // namespace rt
