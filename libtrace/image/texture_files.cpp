@@ -16,7 +16,7 @@
 #include "core/error.h"
 #include "core/parallel_errors.h"
 #include "image/image_header.h"
-#include "image/stderr_capture.h"
+#include "os/stderr_capture.h"
 
 namespace rt {
 

@@ -32,7 +32,7 @@ expect_one_error rt-inspect "render it in regions (rt-render --region)"
 
 # A PNG texture that is not one, and one cut short: OpenImageIO's message of several lines ("Read
 # error ...", "Invalid image file ...") is one warning line, and libpng's own line ("libpng error:
-# ...", which libpng prints itself while OpenImageIO reads) is folded into it (image/stderr_capture.h).
+# ...", which libpng prints itself while OpenImageIO reads) is folded into it (os/stderr_capture.h).
 cat >"$WORK/tex.xml" <<'XML'
 <scene>
   <camera fov="50"><origin x="0" y="0" z="-5" /><destination x="0" y="0" z="0" /></camera>

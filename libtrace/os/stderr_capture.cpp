@@ -1,4 +1,4 @@
-#include "image/stderr_capture.h"
+#include "os/stderr_capture.h"
 
 #include <fcntl.h>
 #include <sys/mman.h>
