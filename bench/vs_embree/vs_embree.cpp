@@ -54,7 +54,7 @@
 #include "core/stopwatch.h"
 #include "embree_scene.h"
 #include "render/camera_rays.h"
-#include "render/phong.h"
+#include "render/materials/phong.h"
 #include "render/tracer.h"
 #include "scene/thesis_scenes.h"
 

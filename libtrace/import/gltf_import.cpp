@@ -17,7 +17,6 @@
 #include "core/text.h"
 #include "import/gltf_accessor.h"
 #include "import/gltf_images.h"
-#include "import/phong_from_pbr.h"
 #include "import/primitive_topology.h"
 #include "import/punctual_light.h"
 #include "import/scene_assembly.h"
@@ -518,17 +517,17 @@ private:
         return numberWithin(numberValue(v, file_, what), -kMaxTextureTransform, kMaxTextureTransform, file_, what);
     }
 
-    MetallicRoughness metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
+    PbrMaterialFactors metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
         const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
-        MetallicRoughness in;
+        PbrMaterialFactors in;
         in.baseColor = color(pbr.baseColorFactor, what + " baseColorFactor");
-        in.metallic = float(colorValue(pbr.metallicFactor, what + " metallicFactor"));
-        in.roughness = float(colorValue(pbr.roughnessFactor, what + " roughnessFactor"));
+        in.factors.metallic = float(colorValue(pbr.metallicFactor, what + " metallicFactor"));
+        in.factors.roughness = float(colorValue(pbr.roughnessFactor, what + " roughnessFactor"));
         // The texture, which a Phong material cannot follow per hit, usually holds the real
         // values and leaves the factors at 1 (rough metal): take a dielectric of middle roughness.
         if (pbr.metallicRoughnessTexture.index >= 0) {
-            in.metallic = 0;
-            in.roughness *= 0.5f;
+            in.factors.metallic = 0;
+            in.factors.roughness *= 0.5f;
         }
         const auto ior = gm.extensions.find("KHR_materials_ior");
         if (ior != gm.extensions.end() && ior->second.Has("ior"))
@@ -538,7 +537,7 @@ private:
         if (specular != gm.extensions.end()) {
             const tinygltf::Value& ext = specular->second;
             if (ext.Has("specularFactor"))
-                in.specularFactor = float(colorValue(
+                in.factors.specular = float(colorValue(
                     numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"), what + " specularFactor"));
             if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray())
                 in.specularColor = color(numbers(ext.Get("specularColorFactor"), what), what + " specularColorFactor");
@@ -551,7 +550,7 @@ private:
     // transmissionTexture, which usually holds the real values (a paper lamp shade's fibres), is
     // taken as mid-grey, half the factor, as the metallicRoughnessTexture is (the renderers then
     // follow it per hit: keepTransmissionTexture()).
-    void readTransmission(const tinygltf::Material& gm, MetallicRoughness& in, const std::string& what) const {
+    void readTransmission(const tinygltf::Material& gm, PbrMaterialFactors& in, const std::string& what) const {
         const auto number = [&](const tinygltf::Value& ext, const char* key, float& to) {
             if (ext.Has(key))
                 to = float(colorValue(numberValue(ext.Get(key), file_, what + " " + key), what + " " + key));

@@ -309,7 +309,7 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
 // others take glTF's defaults (metallic 1, roughness 1, specular_factor 1).
 void SceneBuilder::readMetallicRoughness(const XmlElement& e, Material& m) {
     if (!e.has("metallic") && !e.has("roughness") && !e.has("specular_factor")) return;
-    MetallicRoughnessFactors f{1, 1, 1};
+    MetallicRoughness f{1, 1, 1};
     const auto factor = [&e](const char* name, float& value) {
         value = e.nonNegativeFloat(name, value);
         if (value > 1) e.fail(std::string("<material> ") + name + " must be between 0 and 1");
