@@ -399,6 +399,7 @@ private:
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             keepMetallicRoughnessTexture(gm, what, m);
             keepTransmissionTexture(gm, what, m);
+            readClearcoat(gm, what, m);
             readAlphaMode(gm, what, m);
             m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
             if (m.normalTexture)
@@ -552,8 +553,7 @@ private:
     // follow it per hit: keepTransmissionTexture()).
     void readTransmission(const tinygltf::Material& gm, PbrMaterialFactors& in, const std::string& what) const {
         const auto number = [&](const tinygltf::Value& ext, const char* key, float& to) {
-            if (ext.Has(key))
-                to = float(colorValue(numberValue(ext.Get(key), file_, what + " " + key), what + " " + key));
+            to = extensionNumber(ext, key, to, what);
         };
         const auto transmission = gm.extensions.find("KHR_materials_transmission");
         if (transmission != gm.extensions.end()) {
@@ -567,6 +567,23 @@ private:
         number(ext, "attenuationDistance", in.attenuationDistance);
         if (ext.Has("attenuationColor") && ext.Get("attenuationColor").IsArray())
             in.attenuationColor = color(numbers(ext.Get("attenuationColor"), what), what + " attenuationColor");
+    }
+
+    // KHR_materials_clearcoat's factors, for the path tracer (its textures and normal are not read).
+    void readClearcoat(const tinygltf::Material& gm, const std::string& what, Material& m) const {
+        const auto ext = gm.extensions.find("KHR_materials_clearcoat");
+        if (ext == gm.extensions.end()) return;
+        const auto factor = [&](const char* key) {
+            return std::clamp(extensionNumber(ext->second, key, 0, what), 0.0f, 1.0f);
+        };
+        m.clearcoat = factor("clearcoatFactor");
+        m.clearcoatRoughness = factor("clearcoatRoughnessFactor");
+    }
+
+    // The number `key` of a material extension's object, `fallback` without one.
+    float extensionNumber(const tinygltf::Value& ext, const char* key, float fallback, const std::string& what) const {
+        if (!ext.Has(key)) return fallback;
+        return float(colorValue(numberValue(ext.Get(key), file_, what + " " + key), what + " " + key));
     }
 
     std::vector<double> numbers(const tinygltf::Value& array, const std::string& what) const {

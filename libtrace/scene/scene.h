@@ -74,6 +74,11 @@ struct Material {
     std::optional<MetallicRoughness> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
+    // KHR_materials_clearcoat: a clear layer of ior 1.5 over the material, of weight `clearcoat`
+    // and GGX roughness clearcoatRoughness, both 0-1 (render/materials/clearcoat_bsdf.h; the path
+    // tracer only).
+    float clearcoat = 0;
+    float clearcoatRoughness = 0;
     // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
     std::optional<std::uint32_t> transmissionTexture{};
     // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times

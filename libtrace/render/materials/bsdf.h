@@ -9,8 +9,10 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <variant>
 
+#include "render/materials/clearcoat_bsdf.h"
 #include "render/materials/dielectric_bsdf.h"
 #include "render/materials/lobe.h"
 #include "render/materials/pbr_bsdf.h"
@@ -21,7 +23,7 @@ namespace rt {
 
 class Bsdf {
 public:
-    using Lobes = std::variant<PbrBsdf, DielectricBsdf>;
+    using Lobes = std::variant<PbrBsdf, DielectricBsdf, ClearcoatBsdf>;
 
     explicit Bsdf(Lobes lobes) : lobes_(std::move(lobes)) {}
     Color evaluate(const Vec3& wo, const Vec3& wi) const {
@@ -43,8 +45,9 @@ private:
 
 // The BSDF of material m at surface point s. A material that lets light through (transmission
 // weight w at s: transmissionAt) is glass (dielectric_bsdf.h) for a share w of its paths and the
-// metallic-roughness BRDF (pbr_bsdf.h) for the rest; `lobe`, a uniform number, makes the choice
-// and is stretched back to [0, 1) for sample().
+// metallic-roughness BRDF (pbr_bsdf.h) for the rest, under its clear coat if it has one
+// (clearcoat_bsdf.h); `lobe`, a uniform number, makes the choice and is stretched back to [0, 1)
+// for sample().
 Bsdf bsdfAt(const ShadingContext& context, const Material& m, const SurfacePoint& s, Real& lobe);
 
 }  // namespace rt
