@@ -22,6 +22,12 @@ render     | core geometry accel scene            |
 image      | core os geometry accel scene render  | OpenImageIO/ OpenColorIO/
 inspect    | core geometry accel scene render     |
 '
+# Sub-folders that come below the rest of their layer, and the headers of the layer outside
+# them that they may include (besides their own folder and the layers of their layer's row):
+# the BSDFs and material evaluation of render/materials/ know nothing of the integrators.
+readonly INNER='
+render/materials | render/refraction.h render/sampling.h render/sobol_sampler.h render/surface.h render/texture.h
+'
 # Headers CMake generates into the build folder, which any layer may include.
 readonly GENERATED='version.h builtin_color_config.h'
 
@@ -37,12 +43,35 @@ while IFS='|' read -r folder layers headers; do
     GUARDED+=($headers)
 done <<<"$TABLE"
 
+declare -A INNER_MAY_USE
+INNER_FOLDERS=()
+while IFS='|' read -r inner headers; do
+    inner=$(echo $inner)
+    [ -n "$inner" ] || continue
+    INNER_FOLDERS+=("$inner")
+    INNER_MAY_USE[$inner]=$(echo $headers)
+done <<<"$INNER"
+
 print_table() {
     echo "| folder | may use | third-party headers |"
     echo "|---|---|---|"
+    local folder inner
     for folder in "${FOLDERS[@]}"; do
         echo "| \`$folder/\` | ${MAY_USE[$folder]:--} | ${THIRD_PARTY[$folder]:--} |"
+        for inner in "${INNER_FOLDERS[@]}"; do
+            [ "${inner%%/*}" != "$folder" ] ||
+                echo "| \`$inner/\` | ${MAY_USE[$folder]:--}; of $folder/ only ${INNER_MAY_USE[$inner]//$folder\//} | ${THIRD_PARTY[$folder]:--} |"
+        done
     done
+}
+
+# inner_folder FILE: the sub-folder of INNER that the libtrace path FILE lies in, if any.
+inner_folder() {
+    local inner
+    for inner in "${INNER_FOLDERS[@]}"; do
+        [[ $1 == "$inner"/* ]] && echo "$inner" && return
+    done
+    return 0
 }
 
 # contains WORD LIST...: true when WORD is one of LIST.
@@ -79,9 +108,9 @@ error() {
     ERRORS=$((ERRORS + 1))
 }
 
-# check_include FILE LINE FOLDER INCLUDE-LINE
+# check_include FILE LINE FOLDER INNER INCLUDE-LINE (INNER: the file's sub-folder in INNER, or empty)
 check_include() {
-    local file=$1 line=$2 folder=$3 text=$4
+    local file=$1 line=$2 folder=$3 inner=$4 text=$5
     if [[ $text =~ \#[[:space:]]*include[[:space:]]*\"([^\"]+)\" ]]; then
         local header=${BASH_REMATCH[1]}
         if [[ $header != */* ]]; then
@@ -90,7 +119,11 @@ check_include() {
             return
         fi
         local layer=${header%%/*}
-        [ "$layer" = "$folder" ] && return
+        if [ "$layer" = "$folder" ]; then
+            [ -z "$inner" ] || [[ $header == "$inner"/* ]] || contains "$header" ${INNER_MAY_USE[$inner]} ||
+                error "$file:$line: $inner/ may not include \"$header\" (of $folder/ it may use: ${INNER_MAY_USE[$inner]})"
+            return
+        fi
         contains "$layer" "${FOLDERS[@]}" || { error "$file:$line: \"$header\" is in no layer of libtrace"; return; }
         contains "$layer" ${MAY_USE[$folder]} ||
             error "$file:$line: $folder/ may not include \"$header\" ($folder/ may use: ${MAY_USE[$folder]:-nothing})"
@@ -112,10 +145,11 @@ check_tree() {
             error "$file:1: folder $folder/ is not in the layer table of scripts/check-layers.sh"
             continue
         fi
-        local line=0 text
+        local line=0 text inner
+        inner=$(inner_folder "$relative")
         while IFS= read -r text || [ -n "$text" ]; do
             line=$((line + 1))
-            [[ $text =~ ^[[:space:]]*\#[[:space:]]*include ]] && check_include "$file" "$line" "$folder" "$text"
+            [[ $text =~ ^[[:space:]]*\#[[:space:]]*include ]] && check_include "$file" "$line" "$folder" "$inner" "$text"
         done <"$file"
     done < <(find "$root" -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.h.in' \) | sort)
 }

@@ -59,7 +59,7 @@
 #include "embree_scene.h"
 #include "import/load_scene.h"
 #include "render/camera_rays.h"
-#include "render/phong.h"
+#include "render/materials/phong.h"
 #include "render/tracer.h"
 #include "render_command.h"
 #include "scene/thesis_scenes.h"

@@ -17,7 +17,6 @@
 #include "core/text.h"
 #include "import/gltf_accessor.h"
 #include "import/gltf_images.h"
-#include "import/phong_from_pbr.h"
 #include "import/primitive_topology.h"
 #include "import/punctual_light.h"
 #include "import/scene_assembly.h"
@@ -400,6 +399,7 @@ private:
             if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             keepMetallicRoughnessTexture(gm, what, m);
             keepTransmissionTexture(gm, what, m);
+            readClearcoat(gm, what, m);
             readAlphaMode(gm, what, m);
             m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
             if (m.normalTexture)
@@ -518,17 +518,17 @@ private:
         return numberWithin(numberValue(v, file_, what), -kMaxTextureTransform, kMaxTextureTransform, file_, what);
     }
 
-    MetallicRoughness metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
+    PbrMaterialFactors metallicRoughness(const tinygltf::Material& gm, const std::string& what) const {
         const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
-        MetallicRoughness in;
+        PbrMaterialFactors in;
         in.baseColor = color(pbr.baseColorFactor, what + " baseColorFactor");
-        in.metallic = float(colorValue(pbr.metallicFactor, what + " metallicFactor"));
-        in.roughness = float(colorValue(pbr.roughnessFactor, what + " roughnessFactor"));
+        in.factors.metallic = float(colorValue(pbr.metallicFactor, what + " metallicFactor"));
+        in.factors.roughness = float(colorValue(pbr.roughnessFactor, what + " roughnessFactor"));
         // The texture, which a Phong material cannot follow per hit, usually holds the real
         // values and leaves the factors at 1 (rough metal): take a dielectric of middle roughness.
         if (pbr.metallicRoughnessTexture.index >= 0) {
-            in.metallic = 0;
-            in.roughness *= 0.5f;
+            in.factors.metallic = 0;
+            in.factors.roughness *= 0.5f;
         }
         const auto ior = gm.extensions.find("KHR_materials_ior");
         if (ior != gm.extensions.end() && ior->second.Has("ior"))
@@ -538,7 +538,7 @@ private:
         if (specular != gm.extensions.end()) {
             const tinygltf::Value& ext = specular->second;
             if (ext.Has("specularFactor"))
-                in.specularFactor = float(colorValue(
+                in.factors.specular = float(colorValue(
                     numberValue(ext.Get("specularFactor"), file_, what + " specularFactor"), what + " specularFactor"));
             if (ext.Has("specularColorFactor") && ext.Get("specularColorFactor").IsArray())
                 in.specularColor = color(numbers(ext.Get("specularColorFactor"), what), what + " specularColorFactor");
@@ -551,10 +551,9 @@ private:
     // transmissionTexture, which usually holds the real values (a paper lamp shade's fibres), is
     // taken as mid-grey, half the factor, as the metallicRoughnessTexture is (the renderers then
     // follow it per hit: keepTransmissionTexture()).
-    void readTransmission(const tinygltf::Material& gm, MetallicRoughness& in, const std::string& what) const {
+    void readTransmission(const tinygltf::Material& gm, PbrMaterialFactors& in, const std::string& what) const {
         const auto number = [&](const tinygltf::Value& ext, const char* key, float& to) {
-            if (ext.Has(key))
-                to = float(colorValue(numberValue(ext.Get(key), file_, what + " " + key), what + " " + key));
+            to = extensionNumber(ext, key, to, what);
         };
         const auto transmission = gm.extensions.find("KHR_materials_transmission");
         if (transmission != gm.extensions.end()) {
@@ -568,6 +567,23 @@ private:
         number(ext, "attenuationDistance", in.attenuationDistance);
         if (ext.Has("attenuationColor") && ext.Get("attenuationColor").IsArray())
             in.attenuationColor = color(numbers(ext.Get("attenuationColor"), what), what + " attenuationColor");
+    }
+
+    // KHR_materials_clearcoat's factors, for the path tracer (its textures and normal are not read).
+    void readClearcoat(const tinygltf::Material& gm, const std::string& what, Material& m) const {
+        const auto ext = gm.extensions.find("KHR_materials_clearcoat");
+        if (ext == gm.extensions.end()) return;
+        const auto factor = [&](const char* key) {
+            return std::clamp(extensionNumber(ext->second, key, 0, what), 0.0f, 1.0f);
+        };
+        m.clearcoat = factor("clearcoatFactor");
+        m.clearcoatRoughness = factor("clearcoatRoughnessFactor");
+    }
+
+    // The number `key` of a material extension's object, `fallback` without one.
+    float extensionNumber(const tinygltf::Value& ext, const char* key, float fallback, const std::string& what) const {
+        if (!ext.Has(key)) return fallback;
+        return float(colorValue(numberValue(ext.Get(key), file_, what + " " + key), what + " " + key));
     }
 
     std::vector<double> numbers(const tinygltf::Value& array, const std::string& what) const {

@@ -1,18 +1,21 @@
 #include "render/cutout.h"
 
+#include "render/materials/material.h"
+
 namespace rt {
 
 // Texture coordinates exist on triangles only; other primitives read the material's alpha at
 // (0, 0), as shading does.
-bool opaqueAt(const Scene& scene, const Material& m, const Hit& hit, const ImageTextures* images) {
+bool opaqueAt(const ShadingContext& context, const Material& m, const Hit& hit) {
+    const Primitives& prims = context.scene.primitives;
     Real u = 0, v = 0;
-    if (const std::optional<std::uint32_t> index = scene.primitives.indexIn<Triangle>(hit.prim))
-        if (const CornerUvs* uvs = scene.primitives.triangleShading().uvs.find(*index)) {
+    if (const std::optional<std::uint32_t> index = prims.indexIn<Triangle>(hit.prim))
+        if (const CornerUvs* uvs = prims.triangleShading().uvs.find(*index)) {
             const auto uv = uvs->at(hit.u, hit.v);
             u = uv[0];
             v = uv[1];
         }
-    return materialAlpha(scene, m, u, v, images) >= *m.alphaCutoff;
+    return materialAlpha(context, m, u, v) >= *m.alphaCutoff;
 }
 
 }  // namespace rt

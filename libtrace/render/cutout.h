@@ -12,6 +12,6 @@ namespace rt {
 
 // Whether cut-out material `m` is opaque at `hit` (its opacity at least its cut-off).
 // Thread-safe.
-bool opaqueAt(const Scene& scene, const Material& m, const Hit& hit, const ImageTextures* images);
+bool opaqueAt(const ShadingContext& context, const Material& m, const Hit& hit);
 
 }  // namespace rt

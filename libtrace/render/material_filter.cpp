@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/cutout.h"
+#include "render/materials/material.h"
 
 namespace rt {
 
@@ -27,29 +28,30 @@ bool showsItsBack(const Primitives& primitives, const Ray& ray, const Hit& hit) 
 // The tests a material's hits take.
 enum Test : std::uint8_t { kNone = 0, kCutout = 1, kBackFace = 2 };
 
-std::uint8_t testsOf(const Scene& scene, const Material& m, const ImageTextures* images) {
-    return std::uint8_t((cutsOut(scene, m, images) ? kCutout : kNone) | (cullsBackFaces(m) ? kBackFace : kNone));
+std::uint8_t testsOf(const ShadingContext& context, const Material& m) {
+    return std::uint8_t((cutsOut(context, m) ? kCutout : kNone) | (cullsBackFaces(m) ? kBackFace : kNone));
 }
 
 }  // namespace
 
-MaterialFilter::MaterialFilter(const Scene& scene, const ImageTextures* images) : scene_(scene), images_(images) {
-    for (const Material& m : scene.materials) tests_.push_back(testsOf(scene, m, images));
+MaterialFilter::MaterialFilter(const ShadingContext& context) : context_(context) {
+    for (const Material& m : context.scene.materials) tests_.push_back(testsOf(context, m));
 }
 
 bool MaterialFilter::accepts(const Ray& ray, const Hit& hit) const {
-    const std::uint32_t id = scene_.primitives.material(hit.prim);
+    const Scene& scene = context_.scene;
+    const std::uint32_t id = scene.primitives.material(hit.prim);
     const std::uint8_t tests = id < tests_.size() ? tests_[id] : std::uint8_t(kNone);
     if (tests == kNone) return true;
-    if ((tests & kBackFace) && showsItsBack(scene_.primitives, ray, hit)) return false;
-    return !(tests & kCutout) || opaqueAt(scene_, scene_.materials[id], hit, images_);
+    if ((tests & kBackFace) && showsItsBack(scene.primitives, ray, hit)) return false;
+    return !(tests & kCutout) || opaqueAt(context_, scene.materials[id], hit);
 }
 
-std::unique_ptr<MaterialFilter> materialFilter(const Scene& scene, const ImageTextures* images) {
-    const auto& ms = scene.materials;
-    if (std::none_of(ms.begin(), ms.end(), [&](const Material& m) { return testsOf(scene, m, images) != kNone; }))
+std::unique_ptr<MaterialFilter> materialFilter(const ShadingContext& context) {
+    const auto& ms = context.scene.materials;
+    if (std::none_of(ms.begin(), ms.end(), [&](const Material& m) { return testsOf(context, m) != kNone; }))
         return nullptr;
-    return std::make_unique<MaterialFilter>(scene, images);
+    return std::make_unique<MaterialFilter>(context);
 }
 
 }  // namespace rt

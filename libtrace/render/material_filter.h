@@ -26,18 +26,17 @@ namespace rt {
 
 class MaterialFilter final : public HitFilter {
 public:
-    // The scene (flattened) and `images` must outlive the filter.
-    MaterialFilter(const Scene& scene, const ImageTextures* images);
+    // The context's scene (flattened) and image lookups must outlive the filter.
+    explicit MaterialFilter(const ShadingContext& context);
 
     bool accepts(const Ray& ray, const Hit& hit) const override;
 
 private:
-    const Scene& scene_;
-    const ImageTextures* images_;
+    ShadingContext context_;
     std::vector<std::uint8_t> tests_;  // by material index: the tests its hits take (bits)
 };
 
 // The filter of the scene's materials, or none when no material is a cut-out or single-sided.
-std::unique_ptr<MaterialFilter> materialFilter(const Scene& scene, const ImageTextures* images);
+std::unique_ptr<MaterialFilter> materialFilter(const ShadingContext& context);
 
 }  // namespace rt

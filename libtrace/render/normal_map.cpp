@@ -16,17 +16,17 @@ Vec3 frontNormal(const Primitives& prims, std::uint32_t index, const Hit& hit, c
 }
 
 // The texel as a tangent-space normal, x and y scaled.
-Vec3 tangentSpaceNormal(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures& images) {
-    const Color c = textureData(scene, *m.normalTexture, s, &images);
+Vec3 tangentSpaceNormal(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
+    const Color c = textureData(context, *m.normalTexture, s);
     return {(2 * c.r - 1) * m.normalScale, (2 * c.g - 1) * m.normalScale, 2 * c.b - 1};
 }
 
 }  // namespace
 
-void applyNormalMap(const Scene& scene, const Material& m, const Hit& hit, const ImageTextures* images,
-                    SurfacePoint& s) {
-    if (!m.normalTexture || !images || scene.textures[*m.normalTexture].kind != Texture::Kind::Image) return;
-    const Primitives& prims = scene.primitives;
+void applyNormalMap(const ShadingContext& context, const Material& m, const Hit& hit, SurfacePoint& s) {
+    if (!m.normalTexture || !context.images || context.scene.textures[*m.normalTexture].kind != Texture::Kind::Image)
+        return;
+    const Primitives& prims = context.scene.primitives;
     const std::optional<std::uint32_t> index = prims.indexIn<Triangle>(hit.prim);
     const CornerTangents* tangents = index ? prims.triangleShading().tangents.find(*index) : nullptr;
     if (!tangents) return;
@@ -38,18 +38,19 @@ void applyNormalMap(const Scene& scene, const Material& m, const Hit& hit, const
     if (!(length(tangent) > 0)) return;
     tangent = normalize(tangent);
     const Vec3 bitangent = cross(n, tangent) * (t[3] < 0 ? Real(-1) : Real(1));
-    const Vec3 local = tangentSpaceNormal(scene, m, s, *images);
+    const Vec3 local = tangentSpaceNormal(context, m, s);
     const Vec3 perturbed = tangent * local.x + bitangent * local.y + n * local.z;
     if (!(length(perturbed) > 0)) return;
     s.shadingNormal = back ? -normalize(perturbed) : normalize(perturbed);
 }
 
-SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images,
+SurfacePoint shadedSurfaceAt(const ShadingContext& context, const Ray& ray, const Hit& hit,
                              const RayDifferential& differential) {
+    const Scene& scene = context.scene;
     SurfacePoint s = surfaceAt(scene.primitives, ray, hit);
-    if (images && differential != RayDifferential{})
+    if (context.images && differential != RayDifferential{})
         setUvDerivatives(scene.primitives, ray.direction, hit, differential, s);
-    applyNormalMap(scene, scene.materialOf(hit.prim), hit, images, s);
+    applyNormalMap(context, scene.materialOf(hit.prim), hit, s);
     s.shadingNormal = keepReflectionAbove(s.shadingNormal, s.geometricNormal, -ray.direction);
     return s;
 }

@@ -13,17 +13,16 @@
 
 namespace rt {
 
-// Perturbs s.shadingNormal of `hit` (on scene.primitives) by the material's normal map; no
+// Perturbs s.shadingNormal of `hit` (on the scene's primitives) by the material's normal map; no
 // change without one, without tangents (a triangle without texture coordinates, a sphere) or
 // without image lookups.
-void applyNormalMap(const Scene& scene, const Material& m, const Hit& hit, const ImageTextures* images,
-                    SurfacePoint& s);
+void applyNormalMap(const ShadingContext& context, const Material& m, const Hit& hit, SurfacePoint& s);
 
 // The surface at `hit` as shading sees it: surfaceAt with the texture coordinates' derivatives
 // for the ray's differential (none: zero, textures read unfiltered) and the material's normal map applied,
 // the shading normal then kept from mirroring the ray into the surface (keepReflectionAbove): both
 // integrators shade with it.
-SurfacePoint shadedSurfaceAt(const Scene& scene, const Ray& ray, const Hit& hit, const ImageTextures* images,
+SurfacePoint shadedSurfaceAt(const ShadingContext& context, const Ray& ray, const Hit& hit,
                              const RayDifferential& differential = {});
 
 }  // namespace rt

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "render/light_sample.h"
+#include "render/materials/material.h"
 #include "render/normal_map.h"
 #include "render/pixel_estimate.h"
 #include "render/refraction.h"
@@ -34,42 +35,15 @@ ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
 
 }  // namespace
 
-SurfaceBsdf::SurfaceBsdf(const Material& m, const PbrParameters& p, float transmission, bool frontFace, Real& lobe)
-    : bsdf_(choose(m, p, transmission, frontFace, lobe)) {}
-
-std::variant<PbrBsdf, DielectricBsdf> SurfaceBsdf::choose(const Material& m, const PbrParameters& p, float glass,
-                                                          bool frontFace, Real& lobe) {
-    if (!(glass > 0)) return PbrBsdf(p);
-    if (lobe < glass) {
-        lobe /= glass;
-        return DielectricBsdf(m.transmission, p.roughness, frontFace);
-    }
-    lobe = (lobe - glass) / (1 - glass);
-    // the opaque part's own metallic share: m of the whole is m / (1 - glass) of what is left
-    PbrParameters opaque = p;
-    opaque.metallic = std::min(1.0f, p.metallic / (1 - glass));
-    return PbrBsdf(opaque);
-}
-
-PbrParameters pbrParametersOf(const Material& m, const Color& color) {
-    if (m.metallicRoughness)
-        return {color, m.metallicRoughness->metallic, m.metallicRoughness->roughness, m.metallicRoughness->specular};
-    // The inverse of import/phong_from_pbr.h: the spread is the lobe's alpha, and the Phong
-    // exponent n matches a lobe of alpha = sqrt(2 / (n + 2)) (Walter et al. 2007, 5.2).
-    const float alpha = m.reflection > 0 ? m.spread : std::sqrt(2 / (std::max(m.shininess, 0.0f) + 2));
-    return {color, std::clamp(m.reflection, 0.0f, 1.0f), std::clamp(std::sqrt(alpha), 0.0f, 1.0f),
-            m.specular > 0 ? 1.0f : 0.0f};
-}
-
 PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
                        const ImageTextures* images)
     : scene_(scene),
+      context_{scene, images},
       accel_(accel),
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
       lights_(scene, images),
-      epsilon_(secondaryRayOffset(scene.primitives)),
-      images_(images) {}
+      epsilon_(secondaryRayOffset(scene.primitives)) {}
 
 Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
     PixelEstimate estimate;
@@ -113,9 +87,9 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
             break;
         }
         seen = seen || bounce == 0;
-        const SurfacePoint s = shadedSurfaceAt(scene_, ray, hit, images_);
+        const SurfacePoint s = shadedSurfaceAt(context_, ray, hit);
         const Material& m = scene_.materialOf(hit.prim);
-        if (aovs && bounce == 0) aovs->addHit(scene_, s, hit, surfaceColor(scene_, m, s, images_));
+        if (aovs && bounce == 0) aovs->addHit(scene_, s, hit, surfaceColor(context_, m, s));
         // Beer-Lambert along the stretch just travelled inside (render/refraction.h)
         if (!s.frontFace && m.transmission.absorbs()) throughput = throughput * absorbed(m.transmission, hit.t);
         if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {
@@ -132,8 +106,8 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         const Vec3 toViewer = -ray.direction;
         const ShadingFrame frame = shadingFrame(s, toViewer);
         const Vec3 wo = frame.toLocal(toViewer);
-        const SurfaceBsdf bsdf(m, pbrParametersAt(m, s), transmissionAt(scene_, m, s, images_), s.frontFace, lobe);
-        if (!bsdf.smooth())
+        const Bsdf bsdf = bsdfAt(context_, m, s, lobe);
+        if (isNonSpecular(bsdf.flags()))
             result += clampIndirect(throughput * directLight(s, bsdf, frame, wo, {pick, l1, l2}, counters), bounce + 1);
 
         const std::optional<BsdfSample> next = bsdf.sample(wo, lobe, u1, u2);
@@ -156,7 +130,7 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
     return result;
 }
 
-Color PathTracer::directLight(const SurfacePoint& s, const SurfaceBsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
+Color PathTracer::directLight(const SurfacePoint& s, const Bsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
                               const LightNumbers& u, RenderCounters& counters) const {
     if (lights_.empty()) return {};
     const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
@@ -185,19 +159,9 @@ Color PathTracer::directLight(const SurfacePoint& s, const SurfaceBsdf& bsdf, co
 // Emitters shine from their front (a triangle's winding, a sphere's outside) only: a light
 // panel under a ceiling would otherwise also fill the gap above it, which paths find rarely
 // and then bring back as fireflies. (The Whitted tracer shows emission from both sides.)
-PbrParameters PathTracer::pbrParametersAt(const Material& m, const SurfacePoint& s) const {
-    PbrParameters p = pbrParametersOf(m, surfaceColor(scene_, m, s, images_));
-    if (m.metallicRoughnessTexture) {
-        const Color t = textureData(scene_, *m.metallicRoughnessTexture, s, images_);
-        p.metallic = std::clamp(p.metallic * t.b, 0.0f, 1.0f);
-        p.roughness = std::clamp(p.roughness * t.g, 0.0f, 1.0f);
-    }
-    return p;
-}
-
 Color PathTracer::emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const {
     if (m.emission == Color{} || dot(scene_.primitives.normal(hit.prim, s.point), ray.direction) >= 0) return {};
-    return surfaceEmission(scene_, m, s, images_);
+    return surfaceEmission(context_, m, s);
 }
 
 Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) const {
@@ -207,8 +171,8 @@ Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) cons
         case LightSample::Source::Triangle: {
             const Ray toLight{from, light.direction};
             const Hit there{light.distance, light.index, light.b1, light.b2};
-            return surfaceEmission(scene_, scene_.materialOf(light.index), surfaceAt(scene_.primitives, toLight, there),
-                                   images_);
+            return surfaceEmission(context_, scene_.materialOf(light.index),
+                                   surfaceAt(scene_.primitives, toLight, there));
         }
         case LightSample::Source::Environment:
             return lights_.environment().radiance(light.direction);

@@ -1,8 +1,6 @@
 #include "render/texture.h"
 
-#include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace rt {
 
@@ -50,74 +48,22 @@ namespace {
 // Texture `index` at the surface point: a checker evaluated here, an image through `read`
 // (ImageTextures::lookup or ::data) at the transformed coordinates; white without lookups.
 template <class Read>
-Color textureAt(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images,
-                Read read) {
-    const Texture& t = scene.textures[index];
+Color textureAt(const ShadingContext& context, std::uint32_t index, const SurfacePoint& s, Read read) {
+    const Texture& t = context.scene.textures[index];
     if (t.kind == Texture::Kind::Checker) return checker(t, s);
+    const ImageTextures* images = context.images;
     if (!images) return {1, 1, 1};
     return (images->*read)(index, images->uvTransform(index)(s));
 }
 
 }  // namespace
 
-Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images) {
-    return textureAt(scene, index, s, images, &ImageTextures::lookup);
+Color textureColor(const ShadingContext& context, std::uint32_t index, const SurfacePoint& s) {
+    return textureAt(context, index, s, &ImageTextures::lookup);
 }
 
-Color textureData(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images) {
-    return textureAt(scene, index, s, images, &ImageTextures::data);
-}
-
-Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
-    const Color c = m.color * s.tint;
-    return m.colorTexture ? c * textureColor(scene, *m.colorTexture, s, images) : c;
-}
-
-Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
-    // Under a black factor the texture cannot matter: not read.
-    if (!m.emissionTexture || m.emission == Color{}) return m.emission;
-    return m.emission * textureColor(scene, *m.emissionTexture, s, images);
-}
-
-float transmissionAt(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
-    const float weight = m.transmission.weight;
-    if (!m.transmissionTexture || !(weight > 0)) return weight;
-    return std::clamp(weight * textureData(scene, *m.transmissionTexture, s, images).r, 0.0f, 1.0f);
-}
-
-float glossySpread(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images) {
-    if (!m.metallicRoughnessTexture || !m.metallicRoughness || !images) return m.spread;
-    const float roughness =
-        m.metallicRoughness->roughness * textureData(scene, *m.metallicRoughnessTexture, s, images).g;
-    return roughness * roughness;
-}
-
-namespace {
-
-// The image texture giving the material's alpha, if any; `mask` says how it is read.
-std::optional<std::uint32_t> alphaImage(const Scene& scene, const Material& m, const ImageTextures* images,
-                                        bool& mask) {
-    if (!m.alphaTexture || !images || scene.textures[*m.alphaTexture].kind != Texture::Kind::Image) return {};
-    mask = m.alphaTexture != m.colorTexture;
-    return m.alphaTexture;
-}
-
-}  // namespace
-
-float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const ImageTextures* images) {
-    bool mask = false;
-    const std::optional<std::uint32_t> image = alphaImage(scene, m, images, mask);
-    if (!image) return m.alpha;
-    const TexCoord at = images->uvTransform(*image)(u, v);
-    return m.alpha * images->alpha(*image, at.s, at.t, mask);
-}
-
-bool cutsOut(const Scene& scene, const Material& m, const ImageTextures* images) {
-    if (!m.alphaCutoff || !(*m.alphaCutoff > 0)) return false;
-    if (m.alpha < *m.alphaCutoff) return true;
-    bool mask = false;
-    const std::optional<std::uint32_t> image = alphaImage(scene, m, images, mask);
-    return image && images->hasAlpha(*image, mask);
+Color textureData(const ShadingContext& context, std::uint32_t index, const SurfacePoint& s) {
+    return textureAt(context, index, s, &ImageTextures::data);
 }
 
 }  // namespace rt

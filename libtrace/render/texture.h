@@ -60,27 +60,17 @@ private:
     std::vector<UvTransform> transforms_;
 };
 
-// The colour of texture `index` of the scene at the surface point.
-Color textureColor(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);
-// The same for a texture that holds data, not colour (metallic-roughness): values as stored.
-Color textureData(const Scene& scene, std::uint32_t index, const SurfacePoint& s, const ImageTextures* images);
+// What shading reads besides the material and the surface point: the scene (its textures) and
+// the lookups of its image textures (none: an image texture gives white, the material's own
+// colour). Both outlive the context; it is passed where a scene and its lookups go together.
+struct ShadingContext {
+    const Scene& scene;
+    const ImageTextures* images = nullptr;
+};
 
-// The material's colour at the surface point (vertex colour and texture applied), and what it
-// emits there (its emission times its emission texture).
-Color surfaceColor(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
-Color surfaceEmission(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
-// The share of the light the material lets through at s: Transmission::weight times the red
-// channel of its transmission texture (read as data), if it has one.
-float transmissionAt(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
-// The sigma of the material's glossy lobe at the surface point, for its reflection and, on glass,
-// its transmission: Material::spread; with a metallic-roughness texture, (roughness times the
-// texture's green)^2, the GGX alpha that spread is made from (import/phong_from_pbr.h).
-float glossySpread(const Scene& scene, const Material& m, const SurfacePoint& s, const ImageTextures* images);
-// The opacity of the material at texture coordinates (u, v) (Material::alpha, alphaTexture);
-// a checker or no image lookups: alpha alone.
-float materialAlpha(const Scene& scene, const Material& m, Real u, Real v, const ImageTextures* images);
-// Whether materialAlpha can be below the material's cut-off anywhere: a cut-out whose texture
-// has no alpha and whose factor is above the cut-off is opaque.
-bool cutsOut(const Scene& scene, const Material& m, const ImageTextures* images);
+// The colour of texture `index` of the scene at the surface point.
+Color textureColor(const ShadingContext& context, std::uint32_t index, const SurfacePoint& s);
+// The same for a texture that holds data, not colour (metallic-roughness): values as stored.
+Color textureData(const ShadingContext& context, std::uint32_t index, const SurfacePoint& s);
 
 }  // namespace rt

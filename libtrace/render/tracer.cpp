@@ -6,8 +6,9 @@
 #include <optional>
 
 #include "render/light_sample.h"
+#include "render/materials/material.h"
+#include "render/materials/phong.h"
 #include "render/normal_map.h"
-#include "render/phong.h"
 #include "render/pixel_estimate.h"
 
 namespace rt {
@@ -39,14 +40,14 @@ Color passed(bool blocked) { return blocked ? Color{} : Color{1, 1, 1}; }
 Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
                const ImageTextures* images)
     : scene_(scene),
+      context_{scene, images},
       accel_(accel),
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
       environment_(scene, images, false),
       epsilon_(secondaryRayOffset(scene.primitives)),
       differentialScale_(std::max(Real(0.125), 1 / std::sqrt(Real(settings.pixelSamples)))),
-      coneSpread_(camera_.pixelAngle() * differentialScale_),
-      images_(images) {
+      coneSpread_(camera_.pixelAngle() * differentialScale_) {
     // Thesis 2.1.3: i_a is the sum of the lights' intensities. The colour of a light with the
     // inverse-square falloff is what it gives at distance 1, no irradiance: it adds nothing.
     for (const Light& light : scene.lights)
@@ -158,7 +159,7 @@ void Tracer::traceShadowPackets(const SurfacePoint* surfaces, const bool* found,
 Tracer::CameraHit Tracer::cameraHit(Real px, Real py, const Ray& ray, const Hit& hit) const {
     const RayDifferential differential =
         filtered_ ? camera_.differentialAt(px, py, ray, differentialScale_) : RayDifferential{};
-    return {shadedSurfaceAt(scene_, ray, hit, images_, differential), differential.radiusAt(hit.t)};
+    return {shadedSurfaceAt(context_, ray, hit, differential), differential.radiusAt(hit.t)};
 }
 
 Color Tracer::cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, SampleRng& rng, RenderCounters& counters,
@@ -167,8 +168,7 @@ Color Tracer::cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, Sam
     // the AOVs take the point, normal and colour the shading uses
     const CameraHit seen = cameraHit(px, py, ray, *hit);
     if (aovSums)
-        aovSums->addHit(scene_, seen.surface, *hit,
-                        surfaceColor(scene_, scene_.materialOf(hit->prim), seen.surface, images_));
+        aovSums->addHit(scene_, seen.surface, *hit, surfaceColor(context_, scene_.materialOf(hit->prim), seen.surface));
     return shade(ray, *hit, seen.surface, 0, false, rng, counters, seen.cone);
 }
 
@@ -182,19 +182,19 @@ Color Tracer::trace(const Ray& ray, int depth, bool inBundle, SampleRng& rng, Re
 
 Color Tracer::shadeHit(const Ray& ray, const Hit& hit, int depth, bool inBundle, SampleRng& rng,
                        RenderCounters& counters, const RayDifferential& differential) const {
-    return shade(ray, hit, shadedSurfaceAt(scene_, ray, hit, images_, differential), depth, inBundle, rng, counters,
+    return shade(ray, hit, shadedSurfaceAt(context_, ray, hit, differential), depth, inBundle, rng, counters,
                  differential.radiusAt(hit.t));
 }
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                     RenderCounters& counters, Real cone, const PacketShadows* known) const {
     const Material& m = scene_.materialOf(hit.prim);
-    const Color color = surfaceColor(scene_, m, s, images_);
+    const Color color = surfaceColor(context_, m, s);
     const Vec3 toViewer = -ray.direction;
 
     // Whitted's model has no light transport from surfaces: an emitter is seen (directly, in
     // mirrors), but lights nothing else.
-    Color c = phongAmbient(color, m, ambientLight_) + surfaceEmission(scene_, m, s, images_);
+    Color c = phongAmbient(color, m, ambientLight_) + surfaceEmission(context_, m, s);
     for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
         const Light& light = scene_.lights[l];
         const LightIncidence in = lightIncidence(light, s.point);
@@ -207,7 +207,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     // transmitted ray too, Fresnel's reflected share of it going to the mirror ray.
     float mirrorWeight = m.reflection;
     if (m.transmission.passesLight() && depth < settings_.reflectionDepth) {
-        const float weight = transmissionAt(scene_, m, s, images_);
+        const float weight = transmissionAt(context_, m, s);
         const RefractionSplit split =
             splitAt(m.transmission, ray.direction, s.shadingNormal, s.geometricNormal, s.frontFace);
         mirrorWeight += weight * split.reflected;
@@ -303,7 +303,7 @@ Color Tracer::reflection(const SurfacePoint& s, const Vec3& dir, const Material&
 
 Color Tracer::lobe(const Ray& axis, const Vec3& side, const Material& m, const SurfacePoint& s, bool rough, int depth,
                    bool inBundle, SampleRng& rng, RenderCounters& counters, Real cone) const {
-    const auto spread = [&] { return rough ? glossySpread(scene_, m, s, images_) : 0.0f; };
+    const auto spread = [&] { return rough ? glossySpread(context_, m, s) : 0.0f; };
     const float sigma = settings_.glossyReflections ? spread() : 0;
     if (!(sigma > 0)) {
         ++counters.reflection.rays;

@@ -136,6 +136,7 @@ private:
     Color background(const Vec3& direction) const { return environment_.radiance(direction); }
 
     const Scene& scene_;
+    ShadingContext context_;  // the scene and its image lookups
     const Accelerator& accel_;
     RenderSettings settings_;
     CameraRays camera_;
@@ -146,7 +147,6 @@ private:
     // widen by this per unit distance: render/ray_differential.h.
     Real differentialScale_;
     Real coneSpread_;
-    const ImageTextures* images_;
     bool anyGlass_ = false;  // a material lets light through: shadow rays must look past hits
     bool filtered_ = false;  // image textures are read: rays carry differentials
 };

@@ -17,6 +17,7 @@
 #include "geometry/primitives.h"
 #include "scene/camera.h"
 #include "scene/light.h"
+#include "scene/metallic_roughness.h"
 #include "scene/transmission.h"
 
 namespace rt {
@@ -54,14 +55,6 @@ inline constexpr double kMaxTextureTransform = 1e6;
 // fits a float.
 inline constexpr double kMaxCoordinate = 1e15;
 
-// The glTF metallic-roughness factors the path tracer renders with (docs/path-tracing.md;
-// rt extension). The base colour is the material's colour.
-struct MetallicRoughnessFactors {
-    float metallic = 0;
-    float roughness = 1;
-    float specular = 1;  // KHR_materials_specular's specularFactor
-};
-
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -78,9 +71,14 @@ struct Material {
     Color emission{0, 0, 0};
     std::optional<std::uint32_t> emissionTexture{};
     // The path tracer's material; without it, it follows a rule from the Phong coefficients.
-    std::optional<MetallicRoughnessFactors> metallicRoughness{};
+    std::optional<MetallicRoughness> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
+    // KHR_materials_clearcoat: a clear layer of ior 1.5 over the material, of weight `clearcoat`
+    // and GGX roughness clearcoatRoughness, both 0-1 (render/materials/clearcoat_bsdf.h; the path
+    // tracer only).
+    float clearcoat = 0;
+    float clearcoatRoughness = 0;
     // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
     std::optional<std::uint32_t> transmissionTexture{};
     // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times

@@ -31,6 +31,13 @@ constexpr const char* kDefaultMaterial = "default";
 // that a saved scene loads back bit for bit.
 Vec3 place(const Transform& toWorld, const Vec3& p) { return toWorld.isIdentity() ? p : toWorld.point(p); }
 
+// A material's factor `name` (rt extension), 0-1.
+float unitFactor(const XmlElement& e, const char* name, float fallback) {
+    const float value = e.nonNegativeFloat(name, fallback);
+    if (value > 1) e.fail(std::string("<material> ") + name + " must be between 0 and 1");
+    return value;
+}
+
 // A material's transmission attributes (rt extension); without them it is opaque.
 Transmission readTransmission(const XmlElement& e) {
     Transmission t;
@@ -178,6 +185,8 @@ void SceneBuilder::readList(const XmlElement& list) {
                                      "roughness",
                                      "specular_factor",
                                      "metallic_roughness_texture",
+                                     "clearcoat",
+                                     "clearcoat_roughness",
                                      "alpha",
                                      "alpha_texture",
                                      "alpha_cutoff",
@@ -287,6 +296,8 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
     m.emission = e.color("emission", m.emission);
     readMetallicRoughness(e, m);
+    m.clearcoat = unitFactor(e, "clearcoat", m.clearcoat);
+    m.clearcoatRoughness = unitFactor(e, "clearcoat_roughness", m.clearcoatRoughness);
     m.transmission = readTransmission(e);
     const auto index = std::uint32_t(scene_.materials.size());
     if (const auto name = e.optionalString("texture"))
@@ -309,15 +320,8 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
 // others take glTF's defaults (metallic 1, roughness 1, specular_factor 1).
 void SceneBuilder::readMetallicRoughness(const XmlElement& e, Material& m) {
     if (!e.has("metallic") && !e.has("roughness") && !e.has("specular_factor")) return;
-    MetallicRoughnessFactors f{1, 1, 1};
-    const auto factor = [&e](const char* name, float& value) {
-        value = e.nonNegativeFloat(name, value);
-        if (value > 1) e.fail(std::string("<material> ") + name + " must be between 0 and 1");
-    };
-    factor("metallic", f.metallic);
-    factor("roughness", f.roughness);
-    factor("specular_factor", f.specular);
-    m.metallicRoughness = f;
+    m.metallicRoughness = MetallicRoughness{unitFactor(e, "metallic", 1), unitFactor(e, "roughness", 1),
+                                            unitFactor(e, "specular_factor", 1)};
 }
 
 // rt extension: a cut-out material has alpha_cutoff; alpha and alpha_texture give its opacity.

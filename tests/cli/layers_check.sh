@@ -29,6 +29,13 @@ line=$(add_line "$WORK/libtrace/render/tracer.cpp" '#include <assimp/scene.h>')
 expect_exit 1 "$check" "$WORK/libtrace"
 expect_one_error check-layers "libtrace/render/tracer.cpp:$line: render/ may not include <assimp/scene.h> (only import/ may)"
 
+# A sub-folder below the rest of its layer including a header of the layer it may not use: the
+# BSDFs (render/materials/) know nothing of the integrators.
+fresh_copy
+line=$(add_line "$WORK/libtrace/render/materials/bsdf.cpp" '#include "render/path_tracer.h"')
+expect_exit 1 "$check" "$WORK/libtrace"
+expect_one_error check-layers "libtrace/render/materials/bsdf.cpp:$line: render/materials/ may not include \"render/path_tracer.h\""
+
 # A folder the table does not know.
 fresh_copy
 mkdir "$WORK/libtrace/extra"

@@ -95,7 +95,7 @@ TEST(Cutout, TheShadowOfACutoutQuadHasTheMasksShape) {
     const Scene scene = floorUnderCutout(path);
     std::vector<std::string> warnings;
     const TextureFiles images(scene, warnings);
-    const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, &images);
+    const std::unique_ptr<MaterialFilter> filter = materialFilter({scene, &images});
     ASSERT_TRUE(filter);
     RenderSettings settings = test::picture(200, 200);
     settings.shadows = true;
@@ -138,7 +138,7 @@ TEST(Cutout, CameraRaysSeeThroughMaskedTexels) {
     Scene scene = floorUnderCutout(path);
     std::vector<std::string> warnings;
     const TextureFiles images(scene, warnings);
-    const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, &images);
+    const std::unique_ptr<MaterialFilter> filter = materialFilter({scene, &images});
     ASSERT_TRUE(filter);
     const std::unique_ptr<Accelerator> accel = buildAccelerator(scene.primitives, AccelSettings{});
     accel->setHitFilter(filter.get());
@@ -169,9 +169,9 @@ TEST(Cutout, AMaterialThatCannotCutOutAddsNoFilter) {
     scene.materials[1].colorTexture = 0;  // the alpha is the colour texture's: glTF's base colour
     std::vector<std::string> warnings;
     const TextureFiles images(scene, warnings);
-    EXPECT_FALSE(materialFilter(scene, &images));
+    EXPECT_FALSE(materialFilter({scene, &images}));
     scene.materials[1].alpha = 0.25f;  // below the cut-off everywhere
-    EXPECT_TRUE(materialFilter(scene, &images));
+    EXPECT_TRUE(materialFilter({scene, &images}));
     std::filesystem::remove(path);
 }
 

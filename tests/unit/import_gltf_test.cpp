@@ -352,6 +352,29 @@ TEST(ImportGltf, DoubleSidedIsKeptAndSingleSidedIsTheDefault) {
 // KHR_materials_transmission, _ior and _volume make glass tinted by the base colour; without a
 // volume (or of thickness 0) it is thin-walled; the transmitted share no longer scatters; a
 // transmission texture is kept.
+// KHR_materials_clearcoat's factors become the material's clear coat (clamped to 0-1); the
+// Phong coefficients stay as without it; a material without the extension has none.
+TEST(ImportGltf, ClearcoatFactorsAreRead) {
+    TempDir dir;
+    GltfFixture f;
+    f.extra =
+        R"(, "materials": [{"name": "paint", "pbrMetallicRoughness": {"metallicFactor": 0},)"
+        R"( "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 1.5}}},)"
+        R"( {"name": "bare", "pbrMetallicRoughness": {"metallicFactor": 0}}])";
+    const std::string one = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
+    const Material paint = importScene(dir.write("paint.gltf", one)).scene.materials.at(0);
+    EXPECT_EQ(paint.clearcoat, 0.8f);
+    EXPECT_EQ(paint.clearcoatRoughness, 1.0f);
+    const std::string two = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 1)");
+    const Material bare = importScene(dir.write("bare.gltf", two)).scene.materials.at(0);
+    EXPECT_EQ(bare.clearcoat, 0.0f);
+    EXPECT_EQ(bare.diffuse, paint.diffuse);
+    EXPECT_EQ(bare.specular, paint.specular);
+    EXPECT_THROW(importScene(dir.write("bad.gltf",
+                                       replaceOnce(one, R"("clearcoatFactor": 0.8)", R"("clearcoatFactor": "shiny")"))),
+                 InputError);
+}
+
 TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
     TempDir dir;
     GltfFixture f;

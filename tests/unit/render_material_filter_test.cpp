@@ -43,7 +43,7 @@ const Vec3 kBehind{0, 0, -5};
 // `scene` rendered through the naive list, the BSP and the KD tree (camera packets included),
 // each with the scene's material filter; fails unless the three pictures agree bit for bit.
 Framebuffer renderEveryTree(const Scene& scene, const RenderSettings& settings) {
-    const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, nullptr);
+    const std::unique_ptr<MaterialFilter> filter = materialFilter({scene, nullptr});
     std::vector<Framebuffer> pictures;
     for (const std::unique_ptr<Accelerator>& accel : test::everyAccelerator(scene.primitives, filter.get())) {
         RenderStats stats;
@@ -123,7 +123,7 @@ TEST(SingleSided, ThePathTracerSeesThroughTheBackToo) {
 // and lets through one that meets its front. Other rays keep passing through the back alone.
 TEST(SingleSided, ShadowRaysAreBlockedWhereTheLightSeesTheFront) {
     const Scene scene = sheetBeforeBackdrop(false, kFront);
-    const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, nullptr);
+    const std::unique_ptr<MaterialFilter> filter = materialFilter({scene, nullptr});
     ASSERT_TRUE(filter);
     const auto ray = [](Real z, bool shadow) {
         return Ray{.origin = {0.2, 0.1, z}, .direction = {0, 0, z < 0 ? Real(1) : Real(-1)}, .shadow = shadow};
@@ -178,7 +178,7 @@ TEST(SingleSided, GlassWithAnInsideKeepsItsBack) {
     for (const bool thin : {false, true}) {
         Scene scene = sheetBeforeBackdrop(false, kFront);
         scene.materials[0].transmission = {.weight = 1, .thin = thin};
-        const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, nullptr);
+        const std::unique_ptr<MaterialFilter> filter = materialFilter({scene, nullptr});
         NaiveAccelerator accel(scene.primitives);
         accel.setHitFilter(filter.get());
         Hit hit;
@@ -189,9 +189,9 @@ TEST(SingleSided, GlassWithAnInsideKeepsItsBack) {
 }
 
 TEST(SingleSided, ScenesWithoutSingleSidedMaterialsHaveNoFilter) {
-    EXPECT_FALSE(materialFilter(test::spheresOnFloor(), nullptr));
-    EXPECT_FALSE(materialFilter(sheetBeforeBackdrop(true, kFront), nullptr));
-    EXPECT_TRUE(materialFilter(sheetBeforeBackdrop(false, kFront), nullptr));
+    EXPECT_FALSE(materialFilter({test::spheresOnFloor(), nullptr}));
+    EXPECT_FALSE(materialFilter({sheetBeforeBackdrop(true, kFront), nullptr}));
+    EXPECT_TRUE(materialFilter({sheetBeforeBackdrop(false, kFront), nullptr}));
 }
 
 // A model instanced under a mirroring transform (x -> -x) in a single-sided material keeps the

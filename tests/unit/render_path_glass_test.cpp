@@ -1,4 +1,4 @@
-// The path tracer's glass (render/dielectric_bsdf.h): energy in a white furnace, Beer-Lambert
+// The path tracer's glass (render/materials/dielectric_bsdf.h): energy in a white furnace, Beer-Lambert
 // absorption through a slab against its closed form, the rough BTDF's sampling against its own
 // evaluation, and the same bits for any thread count.
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "accel/naive.h"
 #include "render/camera_rays.h"
-#include "render/dielectric_bsdf.h"
+#include "render/materials/dielectric_bsdf.h"
 #include "render/refraction.h"
 #include "render/renderer.h"
 #include "render/sobol_sampler.h"

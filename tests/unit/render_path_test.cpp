@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "accel/naive.h"
-#include "render/pbr_bsdf.h"
+#include "render/materials/pbr_bsdf.h"
 #include "render/renderer.h"
 #include "render/sobol_sampler.h"
 #include "render_path_util.h"
@@ -88,7 +88,7 @@ TEST(PathTracer, LambertianSphereUnderAPointLightMatchesItsIrradiance) {
 TEST(PathTracer, GgxAlbedoByImportanceSamplingAgreesWithUniformSampling) {
     for (const float roughness : {0.3f, 0.6f, 1.0f})
         for (const double cosTheta : {0.9, 0.5, 0.2}) {
-            const PbrBsdf bsdf(PbrParameters{{1, 1, 1}, 1, roughness, 1});
+            const PbrBsdf bsdf({1, 1, 1}, {1, roughness, 1});
             const Vec3 wo{Real(std::sqrt(1 - cosTheta * cosTheta)), 0, Real(cosTheta)};
             constexpr int kSamples = 1 << 16;
             double byImportance = 0, byUniform = 0;

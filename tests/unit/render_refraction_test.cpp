@@ -126,7 +126,7 @@ TEST(Refraction, AGlassSphereDisplacesACheckerboardWhereSnellsLawPutsIt) {
         SurfacePoint p;
         p.point = q;
         p.geometricNormal = {0, 0, -1};
-        return textureColor(s, 0, p, nullptr);
+        return textureColor({s}, 0, p);
     };
     const auto onWall = [&](const Vec3& p, const Vec3& d) { return p + d * ((wallZ - p.z) / d.z); };
     int checked = 0, displaced = 0;

@@ -42,16 +42,16 @@ TEST(Texture, CheckerAlternatesCubesAndIsOneColourOnABoundaryPlane) {
     SurfacePoint s;
     s.geometricNormal = {0, 1, 0};  // a floor at y = 0 seen from above: the cubes below it
     s.point = {0.5, 0, 0.5};
-    const Color a = textureColor(scene, 0, s, nullptr);
+    const Color a = textureColor({scene}, 0, s);
     s.point = {1.5, 0, 0.5};
-    const Color b = textureColor(scene, 0, s, nullptr);
+    const Color b = textureColor({scene}, 0, s);
     s.point = {1.5, 0, 1.5};
-    EXPECT_EQ(textureColor(scene, 0, s, nullptr), a);
+    EXPECT_EQ(textureColor({scene}, 0, s), a);
     EXPECT_NE(a, b);
     EXPECT_TRUE((a == Color{1, 0, 0} && b == Color{0, 0, 1}) || (a == Color{0, 0, 1} && b == Color{1, 0, 0}));
     // Image textures without lookups are white: the material's colour alone.
     scene.textures.push_back({.name = "i", .path = "x.png"});
-    EXPECT_EQ(textureColor(scene, 1, s, nullptr), (Color{1, 1, 1}));
+    EXPECT_EQ(textureColor({scene}, 1, s), (Color{1, 1, 1}));
 }
 
 TEST(Tracer, AnEmitterIsSeenInAMirrorWithoutLights) {
@@ -115,7 +115,7 @@ TEST(Tracer, AMirrorRayThatLeavesTheSceneReadsNoRoughnessTexture) {
     s.textures.push_back({.name = "colour", .path = "colour.png"});
     s.textures.push_back({.name = "roughness", .path = "roughness.png"});
     Material m{.name = "metal", .reflection = 0.5f, .colorTexture = 0};
-    m.metallicRoughness = MetallicRoughnessFactors{.metallic = 1, .roughness = 1};
+    m.metallicRoughness = MetallicRoughness{.metallic = 1, .roughness = 1};
     m.metallicRoughnessTexture = 1;
     const auto metal = test::addMaterial(s, m);
     test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, metal);

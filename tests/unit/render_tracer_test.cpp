@@ -4,7 +4,7 @@
 
 #include "accel/naive.h"
 #include "core/error.h"
-#include "render/phong.h"
+#include "render/materials/phong.h"
 #include "render/renderer.h"
 #include "render_test_scenes.h"
 #include "test_util.h"

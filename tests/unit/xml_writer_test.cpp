@@ -349,6 +349,33 @@ TEST(XmlWriter, MetallicRoughnessFactorsRoundTrip) {
     EXPECT_NE(error.find("metallic must be between 0 and 1"), std::string::npos) << error;
 }
 
+// The clear coat (rt extension, KHR_materials_clearcoat) survives a save and a load; a material
+// without one writes none, and a weight beyond 1 is an error naming the attribute.
+TEST(XmlWriter, ClearcoatRoundTrips) {
+    TempDir dir;
+    const std::string xml = R"(<scene><camera><origin z="-5"/><destination/></camera>
+      <materials>
+        <material name="paint" clearcoat="0.75" clearcoat_roughness="0.125"/>
+        <material name="plain"/>
+      </materials></scene>)";
+    const Scene first = loadSceneXml(dir.write("scene.xml", xml), readModelFile);
+    saveSceneXml(first, dir.path("out.xml"));
+    std::ifstream written(dir.path("out.xml"));
+    const std::string text{std::istreambuf_iterator<char>(written), {}};
+    EXPECT_EQ(text.find("clearcoat=\""), text.rfind("clearcoat=\"")) << "the plain material writes none";
+    const Scene second = loadSceneXml(dir.path("out.xml"), readModelFile);
+    ASSERT_EQ(second.materials.size(), 2u);
+    EXPECT_EQ(second.materials[0].clearcoat, 0.75f);
+    EXPECT_EQ(second.materials[0].clearcoatRoughness, 0.125f);
+    EXPECT_EQ(second.materials[1].clearcoat, 0.0f);
+    const std::string error = inputErrorOf([&] {
+        loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
+            <materials><material name="m" clearcoat="2"/></materials></scene>)"),
+                     readModelFile);
+    });
+    EXPECT_NE(error.find("clearcoat must be between 0 and 1"), std::string::npos) << error;
+}
+
 // Glass (rt extension) survives a save and a load; an opaque material writes none of its
 // attributes, so that thesis scenes are written as before.
 TEST(XmlWriter, TransmissionRoundTripsAndOpaqueMaterialsWriteNone) {

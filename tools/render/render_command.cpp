@@ -368,7 +368,7 @@ int renderAll(RenderOptions o) {
         for (const std::string& w : scene.warnings) std::cerr << "rt-render: warning: " << oneLine(w) << '\n';
     RenderStats stats;
     const std::unique_ptr<Accelerator> accel = buildAnnounced(scene, o.accel, progress, stats);  // once for every frame
-    const std::unique_ptr<MaterialFilter> filter = materialFilter(scene, &images);  // cut-outs, single-sided
+    const std::unique_ptr<MaterialFilter> filter = materialFilter({scene, &images});  // cut-outs, single-sided
     accel->setHitFilter(filter.get());
     const TreeReport tree{o.accel, accel->stats(), std::uint32_t(scene.primitives.size()), {}, {}};
     const AccelStats& accelStats = tree.stats;

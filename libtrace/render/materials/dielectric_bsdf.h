@@ -15,9 +15,7 @@
 
 #include <optional>
 
-#include "core/color.h"
-#include "core/vec3.h"
-#include "render/pbr_bsdf.h"
+#include "render/materials/lobe.h"
 #include "scene/transmission.h"
 
 namespace rt {
@@ -32,7 +30,9 @@ public:
     Real pdf(const Vec3& wo, const Vec3& wi) const;
     // u1 chooses reflection or transmission by Fresnel, (u2, u3) the microfacet.
     std::optional<BsdfSample> sample(const Vec3& wo, Real u1, Real u2, Real u3) const;
-    bool smooth() const { return smooth_; }
+    BsdfFlags flags() const {
+        return BsdfFlags::Reflection | BsdfFlags::Transmission | (smooth_ ? BsdfFlags::Specular : BsdfFlags::Glossy);
+    }
 
 private:
     // Schlick's reflectance at a facet seen at cosine c from wo's side (1: total internal reflection).

@@ -1,16 +1,17 @@
-// The metallic-roughness to Phong mapping (import/phong_from_pbr.*, docs/conversion.md).
+// The metallic-roughness to Phong mapping and back (scene/metallic_roughness.*, docs/conversion.md).
 #include <gtest/gtest.h>
 
-#include "import/phong_from_pbr.h"
+#include "scene/metallic_roughness.h"
+#include "scene/scene.h"
 
 namespace rt {
 namespace {
 
-TEST(ImportMaterial, RoughDielectricIsDiffuseWithAFaintHighlight) {
-    MetallicRoughness in;
+TEST(MetallicRoughness, RoughDielectricIsDiffuseWithAFaintHighlight) {
+    PbrMaterialFactors in;
     in.baseColor = {0.8f, 0.2f, 0.1f};
-    in.metallic = 0;
-    in.roughness = 1;
+    in.factors.metallic = 0;
+    in.factors.roughness = 1;
     const Material m = phongFromMetallicRoughness(in);
     EXPECT_EQ(m.color, Color(0.8f, 0.2f, 0.1f));
     EXPECT_FLOAT_EQ(m.diffuse, 0.9f);
@@ -19,11 +20,11 @@ TEST(ImportMaterial, RoughDielectricIsDiffuseWithAFaintHighlight) {
     EXPECT_FLOAT_EQ(m.shininess, 1);       // the broadest lobe
 }
 
-TEST(ImportMaterial, PolishedMetalIsAMirrorOfItsColour) {
-    MetallicRoughness in;
+TEST(MetallicRoughness, PolishedMetalIsAMirrorOfItsColour) {
+    PbrMaterialFactors in;
     in.baseColor = {1, 1, 1};
-    in.metallic = 1;
-    in.roughness = 0;
+    in.factors.metallic = 1;
+    in.factors.roughness = 0;
     const Material m = phongFromMetallicRoughness(in);
     EXPECT_FLOAT_EQ(m.diffuse, 0);
     EXPECT_NEAR(m.reflection, 1, 1e-6);
@@ -34,29 +35,29 @@ TEST(ImportMaterial, PolishedMetalIsAMirrorOfItsColour) {
 
 // glTF's default metal (metallic 1, roughness 1, as files with only a baseColorFactor have it): its
 // lobe is too broad for Phong's highlight, so its colour goes to the diffuse term, which it tints.
-TEST(ImportMaterial, RoughMetalIsDiffuseInItsColour) {
-    MetallicRoughness in;
+TEST(MetallicRoughness, RoughMetalIsDiffuseInItsColour) {
+    PbrMaterialFactors in;
     in.baseColor = {0.0055f, 0.3686f, 0.0041f};  // issue-261's green cube
-    in.metallic = 1;
-    in.roughness = 1;
+    in.factors.metallic = 1;
+    in.factors.roughness = 1;
     const Material m = phongFromMetallicRoughness(in);
     EXPECT_FLOAT_EQ(m.diffuse, 1);
     EXPECT_NEAR(m.specular, 0, 1e-6);
     EXPECT_FLOAT_EQ(m.reflection, 0);
-    in.roughness = 0.5f;  // half way: a quarter of the metal's reflectance is diffuse
+    in.factors.roughness = 0.5f;  // half way: a quarter of the metal's reflectance is diffuse
     const Material satin = phongFromMetallicRoughness(in);
     EXPECT_FLOAT_EQ(satin.diffuse, 0.25f);
     EXPECT_NEAR(satin.specular, 0.75f * luminance(in.baseColor), 1e-6);
-    in.metallic = 0.5f;  // and half a metal: the dielectric's diffuse beside it
+    in.factors.metallic = 0.5f;  // and half a metal: the dielectric's diffuse beside it
     EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).diffuse, 0.9f * 0.5f + 0.5f * 0.25f);
 }
 
 // The path tracer renders the factors themselves (docs/path-tracing.md), clamped as the mapping clamps them.
-TEST(ImportMaterial, TheFactorsAreKeptForThePathTracer) {
-    MetallicRoughness in;
-    in.metallic = 0.25f;
-    in.roughness = 1.5f;
-    in.specularFactor = 0.5f;
+TEST(MetallicRoughness, TheFactorsAreKeptForThePathTracer) {
+    PbrMaterialFactors in;
+    in.factors.metallic = 0.25f;
+    in.factors.roughness = 1.5f;
+    in.factors.specular = 0.5f;
     const Material m = phongFromMetallicRoughness(in);
     ASSERT_TRUE(m.metallicRoughness);
     EXPECT_EQ(m.metallicRoughness->metallic, 0.25f);
@@ -64,12 +65,12 @@ TEST(ImportMaterial, TheFactorsAreKeptForThePathTracer) {
     EXPECT_EQ(m.metallicRoughness->specular, 0.5f);
 }
 
-TEST(ImportMaterial, RougherMeansBroaderAndDimmerReflection) {
-    MetallicRoughness in;
-    in.metallic = 1;
+TEST(MetallicRoughness, RougherMeansBroaderAndDimmerReflection) {
+    PbrMaterialFactors in;
+    in.factors.metallic = 1;
     float lastShininess = 1e9f, lastReflection = 2, lastSpread = -1;
     for (float r : {0.1f, 0.3f, 0.5f, 0.8f}) {
-        in.roughness = r;
+        in.factors.roughness = r;
         const Material m = phongFromMetallicRoughness(in);
         EXPECT_LT(m.shininess, lastShininess);
         EXPECT_LT(m.reflection, lastReflection);
@@ -78,33 +79,34 @@ TEST(ImportMaterial, RougherMeansBroaderAndDimmerReflection) {
     }
 }
 
-TEST(ImportMaterial, IorAndSpecularExtensionsSetTheDielectricReflectance) {
-    MetallicRoughness in;
-    in.metallic = 0;
-    in.roughness = 0.5f;
+TEST(MetallicRoughness, IorAndSpecularExtensionsSetTheDielectricReflectance) {
+    PbrMaterialFactors in;
+    in.factors.metallic = 0;
+    in.factors.roughness = 0.5f;
     in.ior = 1;  // index matched: no reflection at all
     EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).specular, 0);
     in.ior = 2;
     const float f0 = (1.0f / 3) * (1.0f / 3);
     EXPECT_NEAR(phongFromMetallicRoughness(in).specular, f0, 1e-6);
-    in.specularFactor = 0.5f;
+    in.factors.specular = 0.5f;
     EXPECT_NEAR(phongFromMetallicRoughness(in).specular, f0 / 2, 1e-6);
 }
 
 // Transmission is the dielectric's: a metal lets nothing through.
-TEST(ImportMaterial, OnlyDielectricsTransmit) {
-    const Material metal = phongFromMetallicRoughness({.metallic = 1, .roughness = 0, .transmission = 1});
+TEST(MetallicRoughness, OnlyDielectricsTransmit) {
+    const Material metal = phongFromMetallicRoughness({.factors = {.metallic = 1, .roughness = 0}, .transmission = 1});
     EXPECT_FALSE(metal.transmission.passesLight());
-    const Material half = phongFromMetallicRoughness({.metallic = 0.5f, .roughness = 0, .transmission = 1});
+    const Material half =
+        phongFromMetallicRoughness({.factors = {.metallic = 0.5f, .roughness = 0}, .transmission = 1});
     EXPECT_FLOAT_EQ(half.transmission.weight, 0.5f);
     EXPECT_FLOAT_EQ(half.diffuse, 0.9f * 0.5f * 0.5f);
 }
 
-TEST(ImportMaterial, OutOfRangeInputsAreClamped) {
-    MetallicRoughness in;
+TEST(MetallicRoughness, OutOfRangeInputsAreClamped) {
+    PbrMaterialFactors in;
     in.baseColor = {-1, 2, 0.5f};
-    in.metallic = 3;
-    in.roughness = -1;
+    in.factors.metallic = 3;
+    in.factors.roughness = -1;
     const Material m = phongFromMetallicRoughness(in);
     EXPECT_EQ(m.color.r, 0);
     EXPECT_FLOAT_EQ(m.diffuse, 0);

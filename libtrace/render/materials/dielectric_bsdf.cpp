@@ -1,17 +1,14 @@
-#include "render/dielectric_bsdf.h"
+#include "render/materials/dielectric_bsdf.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "render/materials/microfacet.h"
 #include "render/refraction.h"
 
 namespace rt {
 
 namespace {
-
-// The roughness below which the surface is smooth: the alpha (roughness^2) the metallic-roughness
-// BRDF takes as a mirror (render/pbr_bsdf.cpp).
-constexpr Real kSmoothAlpha = Real(1e-3);
 
 Vec3 flipZ(const Vec3& w) { return {w.x, w.y, -w.z}; }
 Vec3 reflect(const Vec3& wo, const Vec3& h) { return h * (2 * dot(wo, h)) - wo; }
@@ -26,8 +23,9 @@ DielectricBsdf::DielectricBsdf(const Transmission& t, float roughness, bool ente
                       : 1 / Real(t.ior)),
       alpha_(Real(roughness) * Real(roughness)),
       thin_(t.thin),
-      // index 1 bends nothing: the surface lets the light straight through, as pbrt does
-      smooth_(alpha_ < kSmoothAlpha || (!t.thin && t.ior == 1)) {}
+      // below the alpha the metallic-roughness BRDF takes as a mirror the surface is smooth; index
+      // 1 bends nothing: the surface lets the light straight through, as pbrt does
+      smooth_(alpha_ < kMinAlpha || (!t.thin && t.ior == 1)) {}
 
 // Schlick's cosine is the one on the side of the lower index (render/refraction.cpp): the
 // incident side when the light goes into the denser medium, the transmitted side otherwise.

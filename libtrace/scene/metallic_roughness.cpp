@@ -1,6 +1,9 @@
-#include "import/phong_from_pbr.h"
+#include "scene/metallic_roughness.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "scene/scene.h"
 
 namespace rt {
 namespace {
@@ -10,14 +13,14 @@ Color clampColor(const Color& c) { return {std::max(c.r, 0.0f), std::max(c.g, 0.
 
 }  // namespace
 
-Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
+Material phongFromMetallicRoughness(const PbrMaterialFactors& pbr) {
     const Color base = clampColor(pbr.baseColor);
-    const float metallic = clamp01(pbr.metallic);
-    const float roughness = clamp01(pbr.roughness);
+    const float metallic = clamp01(pbr.factors.metallic);
+    const float roughness = clamp01(pbr.factors.roughness);
     const float ior = std::max(pbr.ior, 1.0f);
     const float fresnel = (ior - 1) / (ior + 1);
     const float dielectricF0 =
-        clamp01(fresnel * fresnel * std::max(pbr.specularFactor, 0.0f) * luminance(clampColor(pbr.specularColor)));
+        clamp01(fresnel * fresnel * std::max(pbr.factors.specular, 0.0f) * luminance(clampColor(pbr.specularColor)));
     const float metalF0 = luminance(base);
     const float f0 = clamp01((1 - metallic) * dielectricF0 + metallic * metalF0);
     const float alpha = std::max(roughness * roughness, 1e-3f);
@@ -36,7 +39,7 @@ Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
     m.shininess = std::clamp(2 / (alpha * alpha) - 2, 1.0f, 10000.0f);
     m.reflection = f0 * (1 - roughness);
     m.spread = alpha;
-    m.metallicRoughness = MetallicRoughnessFactors{metallic, roughness, clamp01(pbr.specularFactor)};
+    m.metallicRoughness = MetallicRoughness{metallic, roughness, clamp01(pbr.factors.specular)};
     const float transmission = clamp01(pbr.transmission) * (1 - metallic);
     if (transmission > 0) {
         m.ambient *= 1 - transmission;
@@ -51,6 +54,12 @@ Material phongFromMetallicRoughness(const MetallicRoughness& pbr) {
                                                                              : Transmission{}.attenuationDistance};
     }
     return m;
+}
+
+MetallicRoughness metallicRoughnessOf(const Material& m) {
+    if (m.metallicRoughness) return *m.metallicRoughness;
+    const float alpha = m.reflection > 0 ? m.spread : std::sqrt(2 / (std::max(m.shininess, 0.0f) + 2));
+    return {clamp01(m.reflection), clamp01(std::sqrt(alpha)), m.specular > 0 ? 1.0f : 0.0f};
 }
 
 }  // namespace rt

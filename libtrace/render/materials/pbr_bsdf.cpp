@@ -1,24 +1,14 @@
-#include "render/pbr_bsdf.h"
+#include "render/materials/pbr_bsdf.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "render/materials/microfacet.h"
 #include "render/sobol_sampler.h"
 
 namespace rt {
 
 namespace {
-
-// Below this alpha the lobe is a mirror for every practical purpose, and D's peak would
-// overflow float; glTF's roughness 0 renders as alpha 1e-3 (roughness 0.03).
-constexpr Real kMinAlpha = Real(1e-3);
-// The reflectance at normal incidence of a dielectric of ior 1.5: ((1.5 - 1) / (1.5 + 1))^2.
-constexpr float kDielectricF0 = 0.04f;
-
-Real schlickWeight(Real cosine) {
-    const Real m = std::clamp(1 - cosine, Real(0), Real(1));
-    return (m * m) * (m * m) * m;
-}
 
 Vec3 sampleCosine(Real u1, Real u2) {
     const Real r = std::sqrt(u1);
@@ -86,42 +76,10 @@ private:
 
 }  // namespace
 
-Real ggxD(const Vec3& h, Real alpha) {
-    if (h.z <= 0) return 0;
-    const Real a2 = alpha * alpha;
-    const Real d = h.z * h.z * (a2 - 1) + 1;
-    return a2 / (kPi * d * d);
-}
-
-Real smithLambda(const Vec3& w, Real alpha) {
-    const Real cos2 = w.z * w.z;
-    if (cos2 <= 0) return kInfinity;
-    const Real tan2 = std::max(Real(0), 1 - cos2) / cos2;
-    return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
-}
-
-Real smithG1(const Vec3& w, Real alpha) { return 1 / (1 + smithLambda(w, alpha)); }
-
-// Heitz 2018, section 3: stretch the view direction to the hemisphere configuration, sample
-// a point on the projected disc (denser on the visible half), lift it to the hemisphere and
-// unstretch the normal.
-Vec3 sampleVisibleNormal(const Vec3& wo, Real alpha, Real u1, Real u2) {
-    const Vec3 v = normalize(Vec3{alpha * wo.x, alpha * wo.y, wo.z});
-    const Real lengthSq = v.x * v.x + v.y * v.y;
-    const Vec3 t1 = lengthSq > 0 ? Vec3{-v.y, v.x, 0} / std::sqrt(lengthSq) : Vec3{1, 0, 0};
-    const Vec3 t2 = cross(v, t1);
-    const Real r = std::sqrt(u1);
-    const Real phi = 2 * kPi * u2;
-    const Real p1 = r * std::cos(phi);
-    const Real s = Real(0.5) * (1 + v.z);
-    const Real p2 = (1 - s) * std::sqrt(std::max(Real(0), 1 - p1 * p1)) + s * r * std::sin(phi);
-    const Vec3 n = t1 * p1 + t2 * p2 + v * std::sqrt(std::max(Real(0), 1 - p1 * p1 - p2 * p2));
-    return normalize(Vec3{alpha * n.x, alpha * n.y, std::max(Real(0), n.z)});
-}
-
-PbrBsdf::PbrBsdf(const PbrParameters& p) : p_(p), alpha_(std::max(Real(p.roughness) * Real(p.roughness), kMinAlpha)) {
+PbrBsdf::PbrBsdf(const Color& baseColor, const MetallicRoughness& factors)
+    : base_(baseColor), f_(factors), alpha_(std::max(Real(factors.roughness) * Real(factors.roughness), kMinAlpha)) {
     const GgxAlbedoTable& table = GgxAlbedoTable::get();
-    averageAlbedo_ = table.average(Real(p.roughness));
+    averageAlbedo_ = table.average(Real(factors.roughness));
     // Kulla and Conty's Fresnel for light that scatters several times: with F_avg, Schlick's
     // Fresnel averaged over the hemisphere, F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),
     // so that a white metal (F_avg = 1) gives back exactly what single scattering lost.
@@ -129,16 +87,16 @@ PbrBsdf::PbrBsdf(const PbrParameters& p) : p_(p), alpha_(std::max(Real(p.roughne
         const Real average = f0 + (1 - f0) / 21;
         return float(average * average * averageAlbedo_ / (1 - average * (1 - averageAlbedo_)));
     };
-    multipleScatteringFresnel_ = {tint(p.baseColor.r), tint(p.baseColor.g), tint(p.baseColor.b)};
+    multipleScatteringFresnel_ = {tint(baseColor.r), tint(baseColor.g), tint(baseColor.b)};
 }
 
 // The metal's multiple-scattering lobe: F_ms (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)), a
 // diffuse-like lobe whose integral is F_ms (1 - E(mu_o)), the energy the single-scattering lobe
 // lost at wo's angle.
 Color PbrBsdf::multipleScattering(const Vec3& wo, const Vec3& wi) const {
-    if (p_.metallic <= 0 || !(averageAlbedo_ < 1)) return {};
+    if (f_.metallic <= 0 || !(averageAlbedo_ < 1)) return {};
     const GgxAlbedoTable& table = GgxAlbedoTable::get();
-    const Real lost = (1 - table.albedo(wo.z, p_.roughness)) * (1 - table.albedo(wi.z, p_.roughness));
+    const Real lost = (1 - table.albedo(wo.z, f_.roughness)) * (1 - table.albedo(wi.z, f_.roughness));
     return multipleScatteringFresnel_ * float(lost / (kPi * (1 - averageAlbedo_)));
 }
 
@@ -146,12 +104,12 @@ Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
     if (wo.z <= 0 || wi.z <= 0) return {};
     const Vec3 h = normalize(wo + wi);
     const auto s = float(schlickWeight(dot(wo, h)));
-    const float dielectricF = p_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
-    const Color metalF = p_.baseColor + (Color{1, 1, 1} + p_.baseColor * -1.0f) * s;
+    const float dielectricF = f_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
+    const Color metalF = base_ + (Color{1, 1, 1} + base_ * -1.0f) * s;
     const auto dv =
         float(ggxD(h, alpha_) / ((1 + smithLambda(wo, alpha_) + smithLambda(wi, alpha_)) * 4 * wo.z * wi.z));
-    const float m = p_.metallic;
-    const Color diffuse = p_.baseColor * ((1 - m) * (1 - dielectricF) / float(kPi));
+    const float m = f_.metallic;
+    const Color diffuse = base_ * ((1 - m) * (1 - dielectricF) / float(kPi));
     const Color glossy = (Color{1, 1, 1} * ((1 - m) * dielectricF) + metalF * m) * dv;
     return (diffuse + glossy + multipleScattering(wo, wi) * m) * float(wi.z);
 }
@@ -160,14 +118,14 @@ Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
 // the normal: the better the lobe choice follows f, the less noise.
 Real PbrBsdf::glossyProbability(const Vec3& wo) const {
     const Real s = schlickWeight(wo.z);
-    const Real dielectricF = p_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
-    const Real metalF = luminance(p_.baseColor) + (1 - luminance(p_.baseColor)) * s;
-    const Real m = p_.metallic;
-    const Real albedo = m > 0 ? GgxAlbedoTable::get().albedo(wo.z, p_.roughness) : 0;  // metals only
+    const Real dielectricF = f_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
+    const Real metalF = luminance(base_) + (1 - luminance(base_)) * s;
+    const Real m = f_.metallic;
+    const Real albedo = m > 0 ? GgxAlbedoTable::get().albedo(wo.z, f_.roughness) : 0;  // metals only
     const Real glossy = (1 - m) * dielectricF + m * metalF * albedo;
     // the cosine-sampled share: the base, and the metal's multiple scattering
-    const Real diffuse = (1 - m) * (1 - dielectricF) * luminance(p_.baseColor) +
-                         m * luminance(multipleScatteringFresnel_) * (1 - albedo);
+    const Real diffuse =
+        (1 - m) * (1 - dielectricF) * luminance(base_) + m * luminance(multipleScatteringFresnel_) * (1 - albedo);
     return glossy + diffuse > 0 ? glossy / (glossy + diffuse) : Real(0.5);
 }
 
