@@ -214,10 +214,15 @@ void anisotropic(const MipLevels<T>& levels, int channels, const TexCoord& at, c
     }
 }
 
+// A picture of one colour, kept as its one texel (MipMap::build).
+template <class T>
+bool oneColour(const MipLevels<T>& levels) {
+    return levels.size() == 1 && levels[0].width == 1 && levels[0].height == 1;
+}
+
 template <class T>
 void filtered(const MipLevels<T>& levels, int channels, const TexCoord& at, const MipLookup& how, float* sum) {
-    if (levels.size() == 1 && levels[0].width == 1 && levels[0].height == 1)  // one colour
-        return addTexel(levels[0], channels, 0, 0, 1, how, sum);
+    if (oneColour(levels)) return addTexel(levels[0], channels, 0, 0, 1, how, sum);
     switch (how.filter) {
         case TextureFilter::Nearest:
             return nearest(levels[0], channels, at.s, at.t, how, sum);
@@ -282,7 +287,7 @@ float MipMap::bilinear(float s, float t, const MipLookup& how) const {
     float value = 0;
     std::visit(
         [&](const auto& levels) {
-            if (levels.size() == 1 && levels[0].width == 1 && levels[0].height == 1)
+            if (oneColour(levels))
                 addTexel(levels[0], channels_, 0, 0, 1, how, &value);
             else
                 bilinearAt(levels[0], channels_, s, t, 1, how, &value);
@@ -321,9 +326,10 @@ std::uint64_t mipMapBytes(int width, int height, std::uint64_t bytesPerTexel) {
     }
 }
 
+float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
+
 const float* srgbByteTable() {
-    static const std::array<float, 256> table =
-        byteTable([](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); });
+    static const std::array<float, 256> table = byteTable(srgbToLinear);
     return table.data();
 }
 

@@ -98,8 +98,11 @@ private:
 // The bytes a picture of `width` x `height` texels of `bytesPerTexel` takes with its coarser levels.
 std::uint64_t mipMapBytes(int width, int height, std::uint64_t bytesPerTexel);
 
-// The 256-entry tables for 8-bit values: the sRGB transfer function inverted (IEC 61966-2-1), and
-// value / 255.
+// The sRGB transfer function, inverted (IEC 61966-2-1): for 16-bit pictures, whose filtered
+// values are decoded after each lookup.
+float srgbToLinear(float v);
+
+// The 256-entry tables for 8-bit values: srgbToLinear, and value / 255.
 const float* srgbByteTable();
 const float* linearByteTable();
 

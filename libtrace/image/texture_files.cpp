@@ -80,9 +80,6 @@ std::uint64_t mipMapBytesOf(const ImageHeader& h) {
 constexpr int kCameraProbes = 8;
 constexpr int kConeProbes = 3;
 
-// The sRGB transfer function, inverted (IEC 61966-2-1): for 16-bit pictures, decoded after filtering.
-float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
-
 // A picture as read: its MIP map and how its channels are used, or why it cannot be read.
 struct Picture {
     std::optional<MipMap> map;
