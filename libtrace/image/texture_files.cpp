@@ -217,21 +217,31 @@ std::uint64_t estimateTextureMemory(const Scene& scene) {
 TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warnings, const TextureSettings& settings)
     : ImageTextures(scene), impl_(std::make_unique<Impl>()) {
     const Pictures pictures = distinctPictures(scene);
-    StderrCapture libraries;                             // libpng's own error lines, told in the warnings below
+    std::string printed;  // what the libraries print themselves (libpng's error lines), told in the warnings below
     std::vector<std::optional<std::string>> unreadable;  // by the header check
     std::uint64_t bytes = 0;
-    for (const Texture* t : pictures.first) {
-        const ImageHeaderCheck check = checkedHeader(*t);
-        unreadable.push_back(check.unreadable);
-        if (!check.unreadable) bytes += mipMapBytesOf(check.header);
+    {
+        StderrCapture libraries;
+        for (const Texture* t : pictures.first) {
+            const ImageHeaderCheck check = checkedHeader(*t);
+            unreadable.push_back(check.unreadable);
+            if (!check.unreadable) bytes += mipMapBytesOf(check.header);
+        }
+        printed = libraries.take();
     }
+    // On standard error itself, before the reading it announces (not held with the captured text).
     if (settings.announce && !pictures.first.empty())
         settings.announce("reading " + std::to_string(pictures.first.size()) + " texture picture" +
                           (pictures.first.size() == 1 ? "" : "s") + " (" + megabytes(bytes) + " with MIP levels)");
     std::vector<const Texture*> toRead;
     for (std::size_t i = 0; i < pictures.first.size(); ++i)
         if (!unreadable[i]) toRead.push_back(pictures.first[i]);
-    std::vector<Picture> read = readPictures(toRead);
+    std::vector<Picture> read;
+    {
+        StderrCapture libraries;
+        read = readPictures(toRead);
+        printed += libraries.take();
+    }
     // The unreadable ones say why, as their header check did; a picture several textures use (an
     // OBJ's map in several materials) is one warning, named as the first texture names it.
     impl_->pictures.resize(pictures.first.size());
@@ -249,7 +259,7 @@ TextureFiles::TextureFiles(const Scene& scene, std::vector<std::string>& warning
                                "): white is used");
         if (!p.map) told.push_back(p.unreadable);
     }
-    writeToStderr(withoutToldLibpngErrors(libraries.take(), told));
+    writeToStderr(withoutToldLibpngErrors(printed, told));
     for (std::size_t i = 0; i < scene.textures.size(); ++i) {
         const int picture = pictures.ofTexture[i];
         impl_->entries.push_back(
