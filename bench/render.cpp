@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "import/load_scene.h"
+#include "io/load_scene.h"
 #include "render_frames.h"
 
 namespace {

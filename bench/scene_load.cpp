@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/raw_model.h"
-#include "scene/xml_loader.h"
+#include "io/raw_model.h"
+#include "io/xml_loader.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 #include <assimp/scene.h>
 
 #include "fuzz_input.h"
-#include "import/assimp_import.h"
-#include "import/assimp_reply.h"
+#include "io/assimp_import.h"
+#include "io/assimp_reply.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     return rt::fuzz::expectInputErrorOnly([&] {

@@ -2,7 +2,7 @@
 #include <span>
 
 #include "fuzz_input.h"
-#include "import/camera_3ds.h"
+#include "io/camera_3ds.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     return rt::fuzz::expectInputErrorOnly([&] {

@@ -16,9 +16,9 @@ core       |                                      |
 os         | core                                 |
 geometry   | core                                 |
 accel      | core geometry                        |
-scene      | core os geometry                     | pugixml.hpp
-import     | core os geometry scene               | assimp/ tiny_gltf.h tiny_obj_loader.h
-render     | core geometry accel scene            |
+scene      | core os geometry                     |
+io         | core os geometry scene               | pugixml.hpp assimp/ tiny_gltf.h tiny_obj_loader.h
+render     | core os geometry accel scene         |
 image      | core os geometry accel scene render  | OpenImageIO/ OpenColorIO/
 inspect    | core geometry accel scene render     |
 '

@@ -57,7 +57,7 @@
 #include "core/simd.h"
 #include "core/stopwatch.h"
 #include "embree_scene.h"
-#include "import/load_scene.h"
+#include "io/load_scene.h"
 #include "render/camera_rays.h"
 #include "render/materials/phong.h"
 #include "render/tracer.h"

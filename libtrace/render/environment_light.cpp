@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "scene/sandbox.h"
+#include "os/sandbox.h"
 
 namespace rt {
 

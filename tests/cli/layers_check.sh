@@ -23,11 +23,17 @@ line=$(add_line "$WORK/libtrace/geometry/overlap.h" '#include "render/renderer.h
 expect_exit 1 "$check" "$WORK/libtrace"
 expect_one_error check-layers "libtrace/geometry/overlap.h:$line: geometry/ may not include \"render/renderer.h\""
 
+# The in-memory model reading a file format: the formats (io/) lie above the scene (scene/).
+fresh_copy
+line=$(add_line "$WORK/libtrace/scene/scene.cpp" '#include "io/xml_loader.h"')
+expect_exit 1 "$check" "$WORK/libtrace"
+expect_one_error check-layers "libtrace/scene/scene.cpp:$line: scene/ may not include \"io/xml_loader.h\""
+
 # A third-party library outside the layer that links it.
 fresh_copy
 line=$(add_line "$WORK/libtrace/render/tracer.cpp" '#include <assimp/scene.h>')
 expect_exit 1 "$check" "$WORK/libtrace"
-expect_one_error check-layers "libtrace/render/tracer.cpp:$line: render/ may not include <assimp/scene.h> (only import/ may)"
+expect_one_error check-layers "libtrace/render/tracer.cpp:$line: render/ may not include <assimp/scene.h> (only io/ may)"
 
 # A sub-folder below the rest of its layer including a header of the layer it may not use: the
 # BSDFs (render/materials/) know nothing of the integrators.

@@ -16,7 +16,7 @@
 #include "accel/kdtree.h"
 #include "accel/naive.h"
 #include "image/texture_files.h"
-#include "import/load_scene.h"
+#include "io/load_scene.h"
 #include "render/camera_rays.h"
 #include "render/renderer.h"
 

@@ -1,7 +1,7 @@
 // The reply of the contained Assimp read (import/assimp_reply.h): what the child writes reads
 // back as the same scene, and bytes that are not an honest reply (cut short, counts beyond the
 // bytes, indices out of range, a tree too deep, more than the budget) are one rt::InputError.
-#include "import/assimp_reply.h"
+#include "io/assimp_reply.h"
 
 #include <assimp/postprocess.h>
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "scene/input_file.h"
+#include "os/input_file.h"
 #include "test_util.h"
 
 namespace rt {

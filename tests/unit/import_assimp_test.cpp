@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "import/import.h"
-#include "import/scene_defaults.h"
 #include "import_test_util.h"
+#include "io/import.h"
+#include "io/scene_defaults.h"
 #include "test_util.h"
 
 namespace rt {

@@ -9,10 +9,10 @@
 #include <iterator>
 
 #include "core/error.h"
-#include "import/camera_3ds.h"
-#include "import/import.h"
-#include "import/scene_defaults.h"
 #include "import_test_util.h"
+#include "io/camera_3ds.h"
+#include "io/import.h"
+#include "io/scene_defaults.h"
 #include "test_util.h"
 
 namespace rt {

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "core/error.h"
-#include "import/import.h"
 #include "import_test_util.h"
-#include "scene/raw_model.h"
+#include "io/import.h"
+#include "io/raw_model.h"
 #include "test_util.h"
 
 namespace rt {

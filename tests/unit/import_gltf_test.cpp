@@ -8,9 +8,9 @@
 #include <set>
 
 #include "core/error.h"
-#include "import/import.h"
 #include "import_test_util.h"
-#include "scene/base64.h"
+#include "io/base64.h"
+#include "io/import.h"
 #include "test_util.h"
 
 namespace rt {

@@ -3,7 +3,7 @@
 
 #include <limits>
 
-#include "import/mesh_data.h"
+#include "io/mesh_data.h"
 #include "scene_test_files.h"
 
 namespace rt {

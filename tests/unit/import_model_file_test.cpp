@@ -1,4 +1,4 @@
-#include "import/model_file.h"
+#include "io/model_file.h"
 
 #include "core/error.h"
 #include "scene_test_files.h"
@@ -11,6 +11,16 @@ namespace {
 const std::string kModels = RT_SHARED_DIR "/models/";
 
 }  // namespace
+
+TEST(ImportModelFile, FormatNames) {
+    EXPECT_EQ(modelFormatFromName("RAW"), Model::Format::Raw);
+    EXPECT_EQ(modelFormatFromName("3ds"), Model::Format::Max3ds);
+    EXPECT_EQ(modelFormatFromName("obj"), std::nullopt);
+    EXPECT_EQ(modelFormatFromExtension("a/b.3DS"), Model::Format::Max3ds);
+    EXPECT_EQ(modelFormatFromExtension("a/b.raw"), Model::Format::Raw);
+    EXPECT_EQ(modelFormatFromExtension("a/testFormatDetection"), std::nullopt);
+    EXPECT_STREQ(modelFormatName(Model::Format::Max3ds), "3ds");
+}
 
 TEST(ImportModelFile, ThreeDsTriangleCountsMatchTheManifest) {
     SKIP_WITHOUT_SHARED_MODELS();

@@ -10,10 +10,10 @@
 #include <string>
 
 #include "core/error.h"
-#include "import/import.h"
-#include "import/line_tracking_file.h"
-#include "import/polygon.h"
 #include "import_test_util.h"
+#include "io/import.h"
+#include "io/line_tracking_file.h"
+#include "io/polygon.h"
 #include "test_util.h"
 
 namespace rt {

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/error.h"
-#include "import/punctual_light.h"
+#include "io/punctual_light.h"
 
 namespace rt {
 namespace {

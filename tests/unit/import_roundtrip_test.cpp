@@ -5,11 +5,11 @@
 
 #include <filesystem>
 
-#include "import/import.h"
-#include "import/load_scene.h"
 #include "import_test_util.h"
-#include "scene/xml_loader.h"
-#include "scene/xml_writer.h"
+#include "io/import.h"
+#include "io/load_scene.h"
+#include "io/xml_loader.h"
+#include "io/xml_writer.h"
 #include "test_util.h"
 
 namespace rt {

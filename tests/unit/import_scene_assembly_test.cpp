@@ -5,7 +5,7 @@
 
 #include <utility>
 
-#include "import/scene_assembly.h"
+#include "io/scene_assembly.h"
 
 namespace rt {
 namespace {

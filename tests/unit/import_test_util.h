@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "import/import.h"
+#include "io/import.h"
 #include "scene_test_files.h"
 
 namespace rt::test {

@@ -1,7 +1,7 @@
 // Strips and fans unrolled with the winding of the glTF specification (import/primitive_topology.*).
 #include <gtest/gtest.h>
 
-#include "import/primitive_topology.h"
+#include "io/primitive_topology.h"
 
 namespace rt {
 namespace {

@@ -6,11 +6,11 @@
 
 #include "accel/settings.h"
 #include "core/names.h"
-#include "import/import.h"
 #include "inspect/heatmap.h"
 #include "inspect/ray_statistics.h"
 #include "inspect/tree_cut.h"
 #include "inspect/tree_dump.h"
+#include "io/import.h"
 
 using namespace rt;
 

@@ -1,4 +1,4 @@
-#include "scene/raw_model.h"
+#include "io/raw_model.h"
 
 #include <cmath>
 #include <cstring>

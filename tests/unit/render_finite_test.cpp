@@ -6,10 +6,10 @@
 
 #include "accel/build.h"
 #include "accel/naive.h"
+#include "io/xml_loader.h"
 #include "render/renderer.h"
 #include "render/sampling.h"
 #include "render_test_scenes.h"
-#include "scene/xml_loader.h"
 #include "test_util.h"
 
 using namespace rt;

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "accel/build.h"
-#include "import/load_scene.h"
+#include "io/load_scene.h"
 #include "render/renderer.h"
 #include "render_path_util.h"
 #include "test_util.h"

@@ -1,4 +1,4 @@
-#include "scene/base64.h"
+#include "io/base64.h"
 
 #include <gtest/gtest.h>
 

@@ -3,9 +3,9 @@
 
 #include <sstream>
 
-#include "scene/input_file.h"
-#include "scene/raw_model.h"
-#include "scene/xml_loader.h"
+#include "io/raw_model.h"
+#include "io/xml_loader.h"
+#include "os/input_file.h"
 
 using namespace rt;
 

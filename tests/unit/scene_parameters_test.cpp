@@ -1,9 +1,9 @@
-#include "scene/parameters.h"
+#include "io/parameters.h"
 
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "scene/xml_loader.h"
+#include "io/xml_loader.h"
 #include "scene_test_files.h"
 
 using namespace rt;
@@ -59,8 +59,8 @@ TEST(SceneParameters, AssignmentsNeedAName) {
 }
 
 TEST(SceneParameters, FillTheSceneAttributes) {
-    const Scene s = loadSceneXmlFromString(kSweep, "sweep.xml", ".", readRawModelFileOnly,
-                                           {{"red", "0.25"}, {"radius", "2"}, {"unused", "7"}});
+    const Scene s =
+        loadSceneXmlFromString(kSweep, "sweep.xml", ".", {{"red", "0.25"}, {"radius", "2"}, {"unused", "7"}});
     EXPECT_EQ(s.materials[0].color.r, 0.25f);
     EXPECT_EQ(s.camera.fovDegrees, Real(40));
     ASSERT_EQ(s.primitives.size(), 1u);
@@ -69,7 +69,7 @@ TEST(SceneParameters, FillTheSceneAttributes) {
 
 TEST(SceneParameters, AnUnsetNameIsAnErrorAtItsLine) {
     EXPECT_EQ(inputErrorOf([] {
-                  loadSceneXmlFromString(kSweep, "sweep.xml", ".", readRawModelFileOnly, {{"red", "1"}});
+                  loadSceneXmlFromString(kSweep, "sweep.xml", ".", {{"red", "1"}});
               }),
               "sweep.xml:5: attribute 'r': parameter $radius has no value (give --set radius=VALUE, or write "
               "${radius:-default})");
@@ -83,8 +83,6 @@ TEST(SceneParameters, DeepNestingIsFilledWithoutRecursion) {
     for (int i = 0; i < kDepth; ++i) xml += R"(<translate x="$x">)";
     for (int i = 0; i < kDepth; ++i) xml += "</translate>";
     xml += "</objects></scene>";
-    const std::string error = inputErrorOf([&] {
-        loadSceneXmlFromString(xml, "deep.xml", ".", readRawModelFileOnly, {{"x", "1"}});
-    });
+    const std::string error = inputErrorOf([&] { loadSceneXmlFromString(xml, "deep.xml", ".", {{"x", "1"}}); });
     EXPECT_NE(error.find("nested deeper than"), std::string::npos) << error;
 }

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "scene/raw_model.h"
+#include "io/raw_model.h"
 
 class TempDir {
 public:

@@ -1,4 +1,4 @@
-#include "scene/xml_loader.h"
+#include "io/xml_loader.h"
 
 #include <cmath>
 #include <iomanip>
@@ -7,7 +7,6 @@
 #include <sstream>
 #include <type_traits>
 
-#include "import/model_file.h"
 #include "scene_test_files.h"
 #include "test_util.h"
 
@@ -68,11 +67,11 @@ std::string sceneWith(const std::string& body) {
 
 // With the model reader rt::loadScene gives the loader, which reads 3ds models too.
 Scene load(const std::string& body, const std::string& baseDir = ".") {
-    return loadSceneXmlFromString(sceneWith(body), "s.xml", baseDir, readModelFile);
+    return loadSceneXmlFromString(sceneWith(body), "s.xml", baseDir);
 }
 
 std::string errorOf(const std::string& xml) {
-    return inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", ".", readModelFile); });
+    return inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", "."); });
 }
 
 }  // namespace
@@ -81,7 +80,7 @@ TEST(XmlLoader, ThesisExampleLoadsAsWritten) {
     SKIP_WITHOUT_SHARED_MODELS();
     TempDir dir;
     const std::string path = dir.write("ships.xml", replaced(kThesisExample, "SPACESHIP", kFels));
-    const Scene scene = loadSceneXml(path, readModelFile);
+    const Scene scene = loadSceneXml(path);
 
     EXPECT_EQ(scene.background, Color(0.1f, 0.1f, 0.6f));
     ASSERT_TRUE(scene.camera.fovDegrees);
@@ -365,12 +364,15 @@ TEST(XmlLoader, ThreeDsModelsBakeNodeTransforms) {
     EXPECT_EQ(scene.models.at(0).triangleCount(), 2032u);         // MANIFEST.md
 }
 
-// Assimp is the import layer's: the scene layer's own reader names it instead of reading 3ds.
-TEST(XmlLoader, ThreeDsModelsNeedTheImportLayersReader) {
+// The loader reads a 3ds model itself (io/model_file.h): a file that is not 3DS reaches the 3ds
+// reader's own check, with the scene's line in front.
+TEST(XmlLoader, ThreeDsModelsAreReadByTheLoaderItself) {
+    TempDir dir;
+    dir.write("ship.3ds", "not a 3ds file");
     const std::string xml = sceneWith("<models>\n<model name=\"m\" file=\"ship.3ds\"/></models>");
-    EXPECT_EQ(inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", "dir"); }),
-              "s.xml:4: model 'm': dir/ship.3ds: a 3ds model is read through the import layer (rt::loadScene); "
-              "this scene reader takes RAW models only");
+    EXPECT_EQ(inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", dir.path(".")); }),
+              "s.xml:4: model 'm': " + dir.path("./ship.3ds") +
+                  ": cannot read 3ds model: not a 3DS file (no 0x4D4D main chunk at byte 0)");
 }
 
 namespace {

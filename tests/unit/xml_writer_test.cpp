@@ -1,4 +1,4 @@
-#include "scene/xml_writer.h"
+#include "io/xml_writer.h"
 
 #include <cstring>
 #include <fstream>
@@ -6,9 +6,8 @@
 #include <iterator>
 #include <sstream>
 
-#include "import/model_file.h"
-#include "scene/input_file.h"
-#include "scene/xml_loader.h"
+#include "io/xml_loader.h"
+#include "os/input_file.h"
 #include "scene_test_files.h"
 #include "test_util.h"
 
@@ -51,7 +50,7 @@ const std::string kScene = R"(<scene>
 Scene loadTestScene(const TempDir& dir) {
     std::string xml = kScene;
     xml.replace(xml.find("FELS"), 4, RT_SHARED_DIR "/models/3ds/fels/fels.3ds");
-    return loadSceneXml(dir.write("in/scene.xml", xml), readModelFile);  // the 3ds model too
+    return loadSceneXml(dir.write("in/scene.xml", xml));  // the 3ds model too
 }
 
 template <typename T>
@@ -229,7 +228,7 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
         <material name="lamp" texture="floor" emission="2 1 0.5" emission_texture="wood"
                   alpha_cutoff="0.25" alpha="0.75" alpha_texture="wood" normal_texture="wood" normal_scale="0.5"/>
       </materials></scene>)";
-    Scene first = loadSceneXml(dir.write("in/scene.xml", xml), readModelFile);
+    Scene first = loadSceneXml(dir.write("in/scene.xml", xml));
     Model m;
     m.name = "smooth";
     m.triangleVertices = {0, 0, 0, 1, 0, 0, 0, 1, 0};
@@ -238,7 +237,7 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     first.models.push_back(m);
     first.instances.push_back({0, 0, Transform()});
     saveSceneXml(first, dir.path("out/deeper/scene.xml"));
-    const Scene second = loadSceneXml(dir.path("out/deeper/scene.xml"), readModelFile);
+    const Scene second = loadSceneXml(dir.path("out/deeper/scene.xml"));
     ASSERT_EQ(second.textures.size(), 2u);
     const Texture& wood = second.textures[0];
     EXPECT_EQ(wood.file, "../../in/pictures/wood.png");
@@ -284,7 +283,7 @@ TEST(XmlWriter, EmbeddedImagesBecomeFilesOrInlineData) {
         first.textures.push_back(t);
     }
     saveSceneXml(first, dir.path("out/scene.xml"));
-    const Scene second = loadSceneXml(dir.path("out/scene.xml"), readModelFile);
+    const Scene second = loadSceneXml(dir.path("out/scene.xml"));
     ASSERT_EQ(second.textures.size(), 2u);
     EXPECT_EQ(second.textures[0].file, "scene/Duck.png");
     EXPECT_EQ(second.textures[1].file, "scene/duck_2.png");
@@ -293,7 +292,7 @@ TEST(XmlWriter, EmbeddedImagesBecomeFilesOrInlineData) {
         std::ifstream in(t.path, std::ios::binary);
         EXPECT_EQ(std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {}), png) << t.path;
     }
-    const Scene piped = loadSceneXml(dir.write("piped.xml", savedToStdout(first)), readModelFile);
+    const Scene piped = loadSceneXml(dir.write("piped.xml", savedToStdout(first)));
     ASSERT_EQ(piped.textures.size(), 2u);
     ASSERT_TRUE(piped.textures[1].embedded);
     EXPECT_EQ(*piped.textures[1].embedded, png);
@@ -306,8 +305,7 @@ TEST(XmlLoader, UnknownTexturesAndTypesAreErrors) {
     const auto error = [&](const std::string& body) {
         return inputErrorOf([&] {
             loadSceneXml(
-                dir.write("s.xml", "<scene><camera><origin z=\"-5\"/><destination/></camera>" + body + "</scene>"),
-                readModelFile);
+                dir.write("s.xml", "<scene><camera><origin z=\"-5\"/><destination/></camera>" + body + "</scene>"));
         });
     };
     EXPECT_EQ(error("<materials><material name=\"m\" texture=\"none\"/></materials>"),
@@ -329,9 +327,9 @@ TEST(XmlWriter, MetallicRoughnessFactorsRoundTrip) {
         <material name="rough" roughness="0.75"/>
         <material name="thesis"/>
       </materials></scene>)";
-    const Scene first = loadSceneXml(dir.write("scene.xml", xml), readModelFile);
+    const Scene first = loadSceneXml(dir.write("scene.xml", xml));
     saveSceneXml(first, dir.path("out.xml"));
-    const Scene second = loadSceneXml(dir.path("out.xml"), readModelFile);
+    const Scene second = loadSceneXml(dir.path("out.xml"));
     ASSERT_EQ(second.materials.size(), 3u);
     ASSERT_TRUE(second.materials[0].metallicRoughness);
     EXPECT_EQ(second.materials[0].metallicRoughness->metallic, 1.0f);
@@ -343,8 +341,7 @@ TEST(XmlWriter, MetallicRoughnessFactorsRoundTrip) {
     EXPECT_FALSE(second.materials[2].metallicRoughness);
     const std::string error = inputErrorOf([&] {
         loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
-            <materials><material name="m" metallic="1.5"/></materials></scene>)"),
-                     readModelFile);
+            <materials><material name="m" metallic="1.5"/></materials></scene>)"));
     });
     EXPECT_NE(error.find("metallic must be between 0 and 1"), std::string::npos) << error;
 }
@@ -358,20 +355,19 @@ TEST(XmlWriter, ClearcoatRoundTrips) {
         <material name="paint" clearcoat="0.75" clearcoat_roughness="0.125"/>
         <material name="plain"/>
       </materials></scene>)";
-    const Scene first = loadSceneXml(dir.write("scene.xml", xml), readModelFile);
+    const Scene first = loadSceneXml(dir.write("scene.xml", xml));
     saveSceneXml(first, dir.path("out.xml"));
     std::ifstream written(dir.path("out.xml"));
     const std::string text{std::istreambuf_iterator<char>(written), {}};
     EXPECT_EQ(text.find("clearcoat=\""), text.rfind("clearcoat=\"")) << "the plain material writes none";
-    const Scene second = loadSceneXml(dir.path("out.xml"), readModelFile);
+    const Scene second = loadSceneXml(dir.path("out.xml"));
     ASSERT_EQ(second.materials.size(), 2u);
     EXPECT_EQ(second.materials[0].clearcoat, 0.75f);
     EXPECT_EQ(second.materials[0].clearcoatRoughness, 0.125f);
     EXPECT_EQ(second.materials[1].clearcoat, 0.0f);
     const std::string error = inputErrorOf([&] {
         loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
-            <materials><material name="m" clearcoat="2"/></materials></scene>)"),
-                     readModelFile);
+            <materials><material name="m" clearcoat="2"/></materials></scene>)"));
     });
     EXPECT_NE(error.find("clearcoat must be between 0 and 1"), std::string::npos) << error;
 }

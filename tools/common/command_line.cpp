@@ -13,8 +13,8 @@
 
 #include "core/error.h"
 #include "core/text.h"
-#include "scene/input_file.h"
-#include "scene/sandbox.h"
+#include "os/input_file.h"
+#include "os/sandbox.h"
 #include "tool.h"
 
 namespace rt::tool {

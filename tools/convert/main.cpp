@@ -8,10 +8,10 @@
 #include "command_line.h"
 #include "core/error.h"
 #include "core/text.h"
-#include "import/import.h"
+#include "io/import.h"
+#include "io/xml_writer.h"
 #include "os/atomic_file.h"
 #include "scene/thesis_scenes.h"
-#include "scene/xml_writer.h"
 #include "summary.h"
 #include "tool.h"
 

@@ -1,8 +1,8 @@
 #include "summary.h"
 
 #include "core/json_writer.h"
-#include "import/scene_defaults.h"
 #include "inspect/tree_report.h"
+#include "io/scene_defaults.h"
 
 namespace rt::tool::convert {
 namespace {

@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-#include "import/import.h"
+#include "io/import.h"
 
 namespace rt::tool::convert {
 

@@ -15,7 +15,7 @@
 #include "core/text.h"
 #include "image/image_check.h"
 #include "image/texture_files.h"
-#include "import/load_scene.h"
+#include "io/load_scene.h"
 #include "light_option.h"
 #include "os/atomic_file.h"
 #include "progress.h"

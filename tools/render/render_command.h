@@ -12,7 +12,7 @@
 #include "core/vec3.h"
 #include "image/image_output.h"
 #include "image/mip_map.h"
-#include "import/import.h"
+#include "io/import.h"
 #include "progress.h"
 #include "render/render_settings.h"
 
