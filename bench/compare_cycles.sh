@@ -3,7 +3,7 @@
 # colour. docs/path-tracing.md ("Against Blender Cycles") is this script's output; not run in CI.
 #
 #   bench/compare_cycles.sh [--samples 64] [--threads 2] [--only NAME] [--work DIR] [--pictures docs/images]
-#                           [--multiscatter]
+#                           [--multiscatter] [--equal-time SECONDS [--reference-samples 1024]]
 #
 # Needs Blender with its glTF importer and numpy, and OpenImageIO's Python bindings (Debian 12):
 #   apt-get install blender python3-numpy python3-openimageio
@@ -19,10 +19,18 @@
 # renderSeconds: loading and the tree's build left out) against Cycles' sampling seconds (the Time of
 # Blender's "Finished" status line less that of its "Sample 0/N" line: sync, BVH build and kernel
 # loading left out).
+# Error at equal time (--equal-time SECONDS): each renderer samples each model for SECONDS (rt's
+# --time-limit, Cycles' time_limit; loading, sync and builds left out of both), and its image is
+# compared with the same renderer's converged image (--reference-samples paths per pixel, another
+# seed, so that the two renders' samples are not the same sequence's): the mean
+# relative error of what noise is left. Each against its own reference, so that the differences of
+# modelling the table's first columns measure do not count as noise (the reference's own noise adds
+# a little to both). The set holds a textured model (the Duck) and a generated terrain of 1,002,528
+# triangles (an OBJ written into the work folder).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-samples=64 threads=2 only="" work="" pictures="" multiscatter=""
+samples=64 threads=2 only="" work="" pictures="" multiscatter="" equal_time=0 reference_samples=1024
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --samples) samples="$2"; shift 2 ;;
@@ -31,7 +39,9 @@ while [[ $# -gt 0 ]]; do
         --work) work="$2"; shift 2 ;;
         --pictures) pictures="$2"; shift 2 ;;
         --multiscatter) multiscatter=multiscatter; shift ;;
-        -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
+        --equal-time) equal_time="$2"; shift 2 ;;
+        --reference-samples) reference_samples="$2"; shift 2 ;;
+        -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
         *) echo "compare_cycles.sh ERROR: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -104,10 +114,65 @@ cyclesSeconds() {
         END { if (start == "" || end == "") exit 1; printf "%.2f\n", end - start }' "$log"
 }
 
+# A terrain of 2 x 708 x 708 triangles under the sky: makeTerrain OUT.obj
+makeTerrain() {
+    "$python" - "$1" <<'EOF'
+import math, os, sys
+path = sys.argv[1]
+stem = os.path.splitext(path)[0]
+n = 708
+with open(stem + ".mtl", "w") as mtl:
+    mtl.write("newmtl ground\nKd 0.6 0.6 0.6\nKs 0 0 0\nillum 1\n")
+with open(path, "w") as obj:
+    obj.write("mtllib %s.mtl\nusemtl ground\n" % os.path.basename(stem))
+    for i in range(n + 1):
+        for j in range(n + 1):
+            x, z = 2.0 * i / n - 1, 2.0 * j / n - 1
+            y = 0.15 * math.sin(5 * x) * math.cos(4 * z) + 0.01 * math.sin(97 * x + 13 * z)
+            obj.write("v %.6f %.6f %.6f\n" % (x, y, z))
+    for i in range(n):
+        for j in range(n):
+            a = i * (n + 1) + j + 1
+            obj.write("f %d %d %d\nf %d %d %d\n" % (a, a + 1, a + n + 2, a, a + n + 2, a + n + 1))
+EOF
+}
+
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, $samples paths per pixel in both"
+equal_head="" equal_rule=""
+if [[ "$equal_time" != 0 ]]; then
+    equal_head=" rt paths in ${equal_time} s | rt error | Cycles paths in ${equal_time} s | Cycles error |"
+    equal_rule="---|---|---|---|"
+fi
 echo "| model | size | model's share | scale | mean rel. error: image / model | rel. RMS: image / model |" \
-    "noise: mean rel. error | noise: rel. RMS | rt render s | Cycles sampling s | rt / Cycles |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|"
+    "noise: mean rel. error | noise: rel. RMS | rt render s | Cycles sampling s | rt / Cycles |$equal_head"
+echo "|---|---|---|---|---|---|---|---|---|---|---|$equal_rule"
+# Cycles' paths per pixel: cyclesSamples LOG (the largest N of its "Sample N/M" status lines)
+cyclesSamples() {
+    grep -o "Sample [0-9]*/" "$1" | tr -dc '0-9\n' | sort -n | tail -1
+}
+
+# The equal-time columns: equalTime NAME MODEL SCENE WIDTH HEIGHT BACKGROUND RT-ARGS...
+equalTime() {
+    local name="$1" model="$2" scene="$3" width="$4" height="$5" background="$6"
+    shift 6
+    local cycles=(blender -b --factory-startup --python "$here/bench/cycles_render.py" -- "$model" "$scene")
+    local rt_paths rt_error cycles_error
+    "$render" "$scene" "$@" -S "$reference_samples" --seed 1 -f "$work/$name-rt-converged.exr"
+    "$render" "$scene" "$@" -S 1000000 --time-limit "$equal_time" --stats-json "$work/$name-rt-timed.json" \
+        -f "$work/$name-rt-timed.exr" 2>/dev/null
+    rt_paths=$("$python" -c 'import json, sys; print(json.load(open(sys.argv[1]))["samplesPerPixel"])' \
+        "$work/$name-rt-timed.json")
+    "${cycles[@]}" "$work/$name-cycles-converged.exr" "$width" "$height" "$reference_samples" $multiscatter \
+        "threads=$threads" seed=1 >"$work/$name-cycles-converged.log" 2>&1
+    "${cycles[@]}" "$work/$name-cycles-timed.exr" "$width" "$height" 1000000 $multiscatter "threads=$threads" \
+        "time=$equal_time" >"$work/$name-cycles-timed.log" 2>&1
+    rt_error=$("$python" "$here/bench/compare_images.py" "$work/$name-rt-timed.exr" "$work/$name-rt-converged.exr" \
+        --background "$background,$background,$background" --unscaled | cut -d' ' -f1)
+    cycles_error=$("$python" "$here/bench/compare_images.py" "$work/$name-cycles-timed.exr" \
+        "$work/$name-cycles-converged.exr" --background "$background,$background,$background" --unscaled | cut -d' ' -f1)
+    echo " $rt_paths | $rt_error | $(cyclesSamples "$work/$name-cycles-timed.log") | $cycles_error |"
+}
+
 # compare NAME MODEL WIDTH HEIGHT BACKGROUND KEEP_LIGHTS [FROM AT FOV]
 compare() {
     local name="$1" model="$2" width="$3" height="$4"
@@ -115,7 +180,8 @@ compare() {
     [[ -z "$only" || "$only" == "$name" ]] || return 0
     local scene="$work/$name.xml" rt_seconds cycles_seconds result
     prepareScene "$model" "$scene" "$@"
-    local rt=(--integrator path -S "$samples" -x "$width" -y "$height" --alpha off --exr-pixels float -q)
+    local common=(--integrator path -x "$width" -y "$height" --alpha off --exr-pixels float -q)
+    local rt=("${common[@]}" -S "$samples")
     rt_seconds=$(rtSeconds "$work/$name-rt.json" "$render" "$scene" "${rt[@]}" -f "$work/$name-rt.exr")
     "$render" "$scene" "${rt[@]}" --seed 1 -f "$work/$name-rt-seed1.exr"
     cycles_seconds=$(cyclesSeconds "$work/$name-cycles.log" blender -b --factory-startup --python \
@@ -124,9 +190,12 @@ compare() {
     result=$("$python" "$here/bench/compare_images.py" "$work/$name-rt.exr" "$work/$name-cycles.exr" \
         --background "$1,$1,$1" --noise "$work/$name-rt-seed1.exr" ${pictures:+--picture "$pictures/cycles-$name.jpg"})
     read -r scale coverage mre rms model_mre model_rms noise_mre noise_rms noise_model_mre noise_model_rms <<<"$result"
+    local equal=""
+    [[ "$equal_time" == 0 ]] || equal=$(equalTime "$name" "$model" "$scene" "$width" "$height" "$1" "${common[@]}" \
+        --threads "$threads")
     echo "| $name | ${width}x$height | $coverage | $scale | $mre / $model_mre | $rms / $model_rms |" \
         "$noise_mre / $noise_model_mre | $noise_rms / $noise_model_rms | $rt_seconds | $cycles_seconds |" \
-        "$(awk -v r="$rt_seconds" -v c="$cycles_seconds" 'BEGIN { printf "%.2f", r / c }') |"
+        "$(awk -v r="$rt_seconds" -v c="$cycles_seconds" 'BEGIN { printf "%.2f", r / c }') |$equal"
 }
 compare MetalRoughSpheresNoTextures "$models/glb/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb" \
     320 240 0.5 no
@@ -137,3 +206,8 @@ compare NormalTangentMirrorTest "$models/glb/NormalTangentMirrorTest/NormalTange
 compare LightsPunctualLamp "$models/gltf/LightsPunctualLamp/LightsPunctualLamp.gltf" 320 240 0 yes
 compare CornellBox-Original "$models/obj/CornellBox-Original/CornellBox-Original.obj" 256 256 0 no \
     0,1,3.9 0,1,0 40
+compare Duck "$models/glb/Duck/Duck.glb" 320 240 0.5 no
+if [[ -z "$only" || "$only" == Terrain1M ]]; then
+    makeTerrain "$work/terrain1m.obj"
+    compare Terrain1M "$work/terrain1m.obj" 320 240 0.5 no 0,0.9,1.7 0,-0.1,0 50
+fi

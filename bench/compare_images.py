@@ -2,6 +2,7 @@
 """Compares two linear renders of one view (rt's and a reference's), for bench/compare_cycles.sh.
 
     compare_images.py RT.exr REFERENCE.exr --background R,G,B [--noise RT_OTHER_SEED.exr] [--picture OUT.jpg]
+    compare_images.py RENDER.exr CONVERGED.exr --background R,G,B --unscaled
 
 Prints one line: scale coverage mre rms model_mre model_rms [the last four for the noise].
 scale = mean(reference) / mean(rt), the one factor that matches exposure over the whole image;
@@ -14,6 +15,8 @@ figures between RT.exr and a render of rt's with another seed: what noise alone 
 the reference's own noise adds to it). --picture writes rt | reference |
 relative error side by side (the first two through the sRGB curve, the third from black at 0 to white
 at 50 %).
+With --unscaled (a render against a converged render of the same renderer: the equal-time
+comparison), no scale is applied and the line is: mre rms model_mre model_rms.
 """
 
 import argparse
@@ -73,6 +76,7 @@ def main():
     parser.add_argument("--background", required=True, help="the constant background's R,G,B")
     parser.add_argument("--noise", help="rt's render with another seed")
     parser.add_argument("--picture", help="side-by-side picture to write")
+    parser.add_argument("--unscaled", action="store_true", help="the same renderer's converged render: no scale")
     args = parser.parse_args()
     rt, reference = read_rgb(args.rt), read_rgb(args.reference)
     if rt.shape != reference.shape:
@@ -80,6 +84,9 @@ def main():
                  f"{reference.shape[1]}x{reference.shape[0]}")
     background = numpy.array([float(c) for c in args.background.split(",")])
     mask = model_pixels((rt, reference), background)
+    if args.unscaled:
+        print(" ".join(f"{value:.4f}" for value in figures(rt, reference, mask)))
+        return
     scale = reference.mean() / rt.mean()
     line = [scale, mask.mean(), *figures(rt * scale, reference, mask)]
     if args.noise:

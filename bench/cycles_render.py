@@ -1,7 +1,7 @@
 """Renders a glTF (or OBJ) model in Blender Cycles (CPU) as rt sees it, for bench/compare_cycles.sh.
 
     blender -b --factory-startup --python bench/cycles_render.py -- \
-        MODEL.glb SCENE.xml OUT.exr WIDTH HEIGHT SAMPLES [multiscatter] [threads=N]
+        MODEL.glb SCENE.xml OUT.exr WIDTH HEIGHT SAMPLES [multiscatter] [threads=N] [time=SECONDS] [seed=N]
 
 SCENE.xml is the rt scene the same model was converted to (rt-convert, then edited by
 compare_cycles.sh); it gives the camera (origin, destination, up, horizontal fov), the constant
@@ -17,8 +17,10 @@ filter one pixel wide, emitters that shine from their front only, no denoiser, n
 "Standard" view transform is set, which only the PNGs Blender would write use). With
 "multiscatter", the Principled BSDFs use Cycles' multiple-scattering GGX instead of the importer's
 single-scattering GGX, as rt's metals do (Kulla and Conty's lobe). With "threads=N", Cycles renders on
-N threads (else on every core). Blender's status lines on standard output ("... | Time:00:04.32 | ...
-| Sample 0/64", then "... | Finished") give the time its path tracing took, after the scene's sync,
+N threads (else on every core). With "time=SECONDS", Cycles stops sampling after that many seconds
+(its time_limit: synchronisation left out) or at SAMPLES, whichever comes first; "seed=N" seeds its
+sampler (else 0). Blender's status lines on standard output ("... | Time:00:04.32 | ... | Sample 0/64",
+then "... | Finished") give the time its path tracing took, after the scene's sync,
 the BVH build and the kernels' loading: compare_cycles.sh reads them.
 """
 
@@ -183,6 +185,10 @@ def main(argv):
         if option.startswith("threads="):
             scene.render.threads_mode = "FIXED"
             scene.render.threads = int(option.split("=")[1])
+        if option.startswith("time="):
+            scene.cycles.time_limit = float(option.split("=")[1])
+        if option.startswith("seed="):
+            scene.cycles.seed = int(option.split("=")[1])
     scene.render.filepath = output
     bpy.ops.render.render(write_still=True)
 
