@@ -37,12 +37,30 @@ enum class TextureFilter {
     Anisotropic,  // trilinear probes along the footprint's longer side, the level set by its shorter
 };
 
-// Stored texels of one level: width x height texels of `channels` values each, row after row.
+// Stored texels of one level: width x height texels of `channels` values each. A level of at
+// least kTiledSide texels a side is stored in tiles of 4 x 4 texels, tile after tile along a row
+// of tiles, row of tiles after row, its sides rounded up to whole tiles (the padding is never
+// read): the four texels of a bilinear probe then share one or two cache lines and one page,
+// where a row-major 2048-texel level puts them two rows, 6 KB, apart. Smaller levels stay in
+// cache and are stored row after row.
 template <class T>
 struct MipLevel {
+    using Value = T;
     int width = 0, height = 0;
+    int tileShift = 0;    // log2 of the tiles' side: 0 (row after row) or 2 (tiles of 4 x 4)
+    int tilesAcross = 0;  // tiles in a row of tiles (the width, row after row)
     std::vector<T> texels;
+
+    // Where texel (x, y) starts in `texels`, in texels (times the channels for values).
+    std::size_t texel(int x, int y) const {
+        const int inTile = (1 << tileShift) - 1;
+        const std::size_t tile = std::size_t(y >> tileShift) * std::size_t(tilesAcross) + std::size_t(x >> tileShift);
+        return (tile << (2 * tileShift)) + std::size_t(((y & inTile) << tileShift) + (x & inTile));
+    }
 };
+
+// The side from which levels are stored in tiles.
+constexpr int kTiledSide = 256;
 
 // A picture's levels in its stored type.
 template <class T>
