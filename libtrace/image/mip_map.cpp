@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 
 namespace rt {
@@ -12,22 +13,23 @@ namespace {
 // ---- Stored values ---------------------------------------------------------------------------
 
 float decode(std::uint8_t v, const TexelDecoding& d) { return d.table[v]; }
+float decode(std::uint16_t v, const TexelDecoding&) { return float(v) / 65535; }
 float decode(half v, const TexelDecoding&) { return float(v); }
 float decode(float v, const TexelDecoding&) { return v; }
 
-// A box-filtered value back in the stored type (8 bits rounded to the nearest).
+// A box-filtered value back in the stored type (integers rounded to the nearest).
 template <class T>
 T stored(float v) {
-    if constexpr (std::is_same_v<T, std::uint8_t>)
-        return std::uint8_t(std::clamp(v, 0.0f, 255.0f) + 0.5f);
+    if constexpr (std::is_integral_v<T>)
+        return T(std::clamp(v, 0.0f, float(std::numeric_limits<T>::max())) + 0.5f);
     else
         return T(v);
 }
 
 template <class T>
 bool isOne(T v) {
-    if constexpr (std::is_same_v<T, std::uint8_t>)
-        return v == 255;
+    if constexpr (std::is_integral_v<T>)
+        return v == std::numeric_limits<T>::max();
     else
         return float(v) >= 1;
 }
@@ -87,15 +89,16 @@ MipLevel<T> halved(const MipLevel<T>& fine, int channels) {
     return coarse;
 }
 
+// A side of a tiled level rounded up to whole tiles.
+int wholeTiles(int side) { return (side + (1 << kTileShift) - 1) >> kTileShift << kTileShift; }
+
 // `level`, stored row after row, in tiles of 4 x 4 texels (MipLevel): the same texels. Rows are
 // independent: the same texels for any number of threads.
 template <class T>
 MipLevel<T> tiled(const MipLevel<T>& level, int channels) {
-    constexpr int kShift = 2, kSide = 1 << kShift;
-    MipLevel<T> out{level.width, level.height, kShift, (level.width + kSide - 1) / kSide, {}};
+    MipLevel<T> out{level.width, level.height, kTileShift, wholeTiles(level.width) >> kTileShift, {}};
     const std::size_t n = std::size_t(channels);
-    const int rows = (level.height + kSide - 1) / kSide * kSide;
-    out.texels.resize(std::size_t(out.tilesAcross) * std::size_t(kSide) * std::size_t(rows) * n);
+    out.texels.resize(std::size_t(wholeTiles(level.width)) * std::size_t(wholeTiles(level.height)) * n);
 #pragma omp parallel for schedule(static)
     for (int y = 0; y < level.height; ++y)
         for (int x = 0; x < level.width; ++x)
@@ -300,6 +303,10 @@ MipMap::MipMap(int width, int height, int channels, std::vector<std::uint8_t> te
     build(width, height, std::move(texels));
 }
 
+MipMap::MipMap(int width, int height, int channels, std::vector<std::uint16_t> texels) : channels_(channels) {
+    build(width, height, std::move(texels));
+}
+
 MipMap::MipMap(int width, int height, int channels, std::vector<half> texels) : channels_(channels) {
     build(width, height, std::move(texels));
 }
@@ -372,7 +379,9 @@ std::uint64_t MipMap::bytes() const {
 std::uint64_t mipMapBytes(int width, int height, std::uint64_t bytesPerTexel) {
     std::uint64_t total = 0;
     for (;;) {
-        total += std::uint64_t(width) * std::uint64_t(height) * bytesPerTexel;
+        const bool tiled = width >= kTiledSide && height >= kTiledSide;  // sides padded to whole tiles
+        total += std::uint64_t(tiled ? wholeTiles(width) : width) * std::uint64_t(tiled ? wholeTiles(height) : height) *
+                 bytesPerTexel;
         if (width == 1 && height == 1) return total;
         width = std::max(1, width / 2);
         height = std::max(1, height / 2);

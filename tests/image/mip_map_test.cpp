@@ -109,6 +109,7 @@ TEST(MipMap, TiledLevelsReadTheSameTexelsAsThePicture) {
     const int w = kTiledSide + 3, h = kTiledSide + 1;
     const auto value = [](int x, int y) { return float((x * 7 + y * 13) % 101); };
     const MipMap map = grey(w, h, value);
+    EXPECT_EQ(map.bytes(), mipMapBytes(w, h, sizeof(float))) << "the estimate counts the padding";
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const TexCoord centre{(float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h)};
