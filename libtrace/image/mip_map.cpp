@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 
 namespace rt {
@@ -12,22 +13,23 @@ namespace {
 // ---- Stored values ---------------------------------------------------------------------------
 
 float decode(std::uint8_t v, const TexelDecoding& d) { return d.table[v]; }
+float decode(std::uint16_t v, const TexelDecoding&) { return float(v) / 65535; }
 float decode(half v, const TexelDecoding&) { return float(v); }
 float decode(float v, const TexelDecoding&) { return v; }
 
-// A box-filtered value back in the stored type (8 bits rounded to the nearest).
+// A box-filtered value back in the stored type (integers rounded to the nearest).
 template <class T>
 T stored(float v) {
-    if constexpr (std::is_same_v<T, std::uint8_t>)
-        return std::uint8_t(std::clamp(v, 0.0f, 255.0f) + 0.5f);
+    if constexpr (std::is_integral_v<T>)
+        return T(std::clamp(v, 0.0f, float(std::numeric_limits<T>::max())) + 0.5f);
     else
         return T(v);
 }
 
 template <class T>
 bool isOne(T v) {
-    if constexpr (std::is_same_v<T, std::uint8_t>)
-        return v == 255;
+    if constexpr (std::is_integral_v<T>)
+        return v == std::numeric_limits<T>::max();
     else
         return float(v) >= 1;
 }
@@ -59,7 +61,8 @@ std::vector<BoxTaps> boxTaps(int fine, int coarse) {
 // The next coarser level of `fine`: each side halved, rounded down, at least 1.
 template <class T>
 MipLevel<T> halved(const MipLevel<T>& fine, int channels) {
-    MipLevel<T> coarse{std::max(1, fine.width / 2), std::max(1, fine.height / 2), {}};
+    MipLevel<T> coarse{std::max(1, fine.width / 2), std::max(1, fine.height / 2), 0, 0, {}};
+    coarse.tilesAcross = coarse.width;
     coarse.texels.resize(std::size_t(coarse.width) * std::size_t(coarse.height) * std::size_t(channels));
     const std::vector<BoxTaps> across = boxTaps(fine.width, coarse.width), down = boxTaps(fine.height, coarse.height);
     const std::size_t fineRow = std::size_t(fine.width) * std::size_t(channels);
@@ -84,6 +87,23 @@ MipLevel<T> halved(const MipLevel<T>& fine, int channels) {
         }
     }
     return coarse;
+}
+
+// A side of a tiled level rounded up to whole tiles.
+int wholeTiles(int side) { return (side + (1 << kTileShift) - 1) >> kTileShift << kTileShift; }
+
+// `level`, stored row after row, in tiles of 4 x 4 texels (MipLevel): the same texels. Rows are
+// independent: the same texels for any number of threads.
+template <class T>
+MipLevel<T> tiled(const MipLevel<T>& level, int channels) {
+    MipLevel<T> out{level.width, level.height, kTileShift, wholeTiles(level.width) >> kTileShift, {}};
+    const std::size_t n = std::size_t(channels);
+    out.texels.resize(std::size_t(wholeTiles(level.width)) * std::size_t(wholeTiles(level.height)) * n);
+#pragma omp parallel for schedule(static)
+    for (int y = 0; y < level.height; ++y)
+        for (int x = 0; x < level.width; ++x)
+            std::copy_n(&level.texels[level.texel(x, y) * n], n, &out.texels[out.texel(x, y) * n]);
+    return out;
 }
 
 // ---- Lookups ---------------------------------------------------------------------------------
@@ -121,52 +141,6 @@ int wrapped(int i, int n, Texture::Wrap wrap) {
     return m < 0 ? m + n : m;
 }
 
-// The channels `how` asks for, of texel (x, y) of `level`, times `weight`, added to `sum`.
-template <class T>
-void addTexel(const MipLevel<T>& level, int channels, int x, int y, float weight, const MipLookup& how, float* sum) {
-    const T* texel = level.texels.data() +
-                     (std::size_t(y) * std::size_t(level.width) + std::size_t(x)) * std::size_t(channels) +
-                     std::size_t(how.firstChannel);
-    for (int c = 0; c < how.channels; ++c) sum[c] += weight * decode(texel[c], how.decoding);
-}
-
-template <class T>
-void nearest(const MipLevel<T>& level, int channels, float s, float t, const MipLookup& how, float* sum) {
-    const int x = wrapped(int(std::floor(reduced(s, how.wrapS) * float(level.width))), level.width, how.wrapS);
-    const int y = wrapped(int(std::floor(reduced(t, how.wrapT) * float(level.height))), level.height, how.wrapT);
-    addTexel(level, channels, x, y, 1, how, sum);
-}
-
-// The four texels around (s, t) on `level`, weighted by distance, times `weight`, added to `sum`.
-template <class T>
-void bilinearAt(const MipLevel<T>& level, int channels, float s, float t, float weight, const MipLookup& how,
-                float* sum) {
-    const float x = reduced(s, how.wrapS) * float(level.width) - 0.5f;
-    const float y = reduced(t, how.wrapT) * float(level.height) - 0.5f;
-    const float x0 = std::floor(x), y0 = std::floor(y);
-    const float fx = x - x0, fy = y - y0;
-    const int xa = wrapped(int(x0), level.width, how.wrapS), xb = wrapped(int(x0) + 1, level.width, how.wrapS);
-    const int ya = wrapped(int(y0), level.height, how.wrapT), yb = wrapped(int(y0) + 1, level.height, how.wrapT);
-    addTexel(level, channels, xa, ya, weight * (1 - fx) * (1 - fy), how, sum);
-    addTexel(level, channels, xb, ya, weight * fx * (1 - fy), how, sum);
-    addTexel(level, channels, xa, yb, weight * (1 - fx) * fy, how, sum);
-    addTexel(level, channels, xb, yb, weight * fx * fy, how, sum);
-}
-
-// Bilinear on the two levels around `level` (fractional: 0 the finest), blended; at or beyond
-// either end, the one level there.
-template <class T>
-void trilinearAt(const MipLevels<T>& levels, int channels, float s, float t, float level, float weight,
-                 const MipLookup& how, float* sum) {
-    const int last = int(levels.size()) - 1;
-    if (!(level > 0)) return bilinearAt(levels[0], channels, s, t, weight, how, sum);  // NaN too
-    if (level >= float(last)) return bilinearAt(levels[std::size_t(last)], channels, s, t, weight, how, sum);
-    const int fine = int(level);
-    const float f = level - float(fine);
-    bilinearAt(levels[std::size_t(fine)], channels, s, t, weight * (1 - f), how, sum);
-    bilinearAt(levels[std::size_t(fine) + 1], channels, s, t, weight * f, how, sum);
-}
-
 // The footprint of a lookup in level 0's texels: its two axes (one pixel's step right and down).
 struct Footprint {
     float ax, ay, bx, by;  // the axes, in texels
@@ -184,56 +158,137 @@ Footprint footprint(const TexCoord& at, int width, int height) {
 // The level whose texels are `texels` level-0 texels wide (0 the finest).
 float levelOf(float texels) { return std::log2(std::max(texels, 1e-8f)); }
 
-template <class T>
-void trilinear(const MipLevels<T>& levels, int channels, const TexCoord& at, const MipLookup& how, float* sum) {
-    const Footprint f = footprint(at, levels[0].width, levels[0].height);
-    trilinearAt(levels, channels, at.s, at.t, levelOf(std::sqrt(std::max(f.a2, f.b2))), 1, how, sum);
-}
-
-// Up to how.maxProbes trilinear probes spread evenly along the footprint's longer axis, on the
-// level its length over the probes sets (not finer than the shorter axis calls for when the probes
-// do not reach it: the footprint is then widened across, as a GPU's anisotropic filter does).
-template <class T>
-void anisotropic(const MipLevels<T>& levels, int channels, const TexCoord& at, const MipLookup& how, float* sum) {
-    const Footprint f = footprint(at, levels[0].width, levels[0].height);
-    const bool aLonger = f.a2 >= f.b2;
-    const float major = std::sqrt(aLonger ? f.a2 : f.b2), minor = std::sqrt(aLonger ? f.b2 : f.a2);
-    // As many probes as the footprint is longer than wide, and no more than it is texels long (a
-    // magnified texture is one bilinear probe however thin the footprint). Rounded, not up: a
-    // footprint a shade longer one way than the other (a quad seen nearly head-on) is one probe,
-    // not two half a texel apart.
-    const float ratio = std::min(major / std::max(minor, 1e-8f), major);
-    const int probes = !(ratio < float(how.maxProbes)) ? how.maxProbes : std::max(1, int(ratio + 0.5f));
-    if (probes == 1) return trilinearAt(levels, channels, at.s, at.t, levelOf(major), 1, how, sum);
-    const float level = levelOf(major / float(probes));
-    const float ds = aLonger ? at.dsdx : at.dsdy, dt = aLonger ? at.dtdx : at.dtdy;
-    const float weight = 1.0f / float(probes);
-    for (int i = 0; i < probes; ++i) {
-        const float along = (float(i) + 0.5f) / float(probes) - 0.5f;
-        trilinearAt(levels, channels, at.s + along * ds, at.t + along * dt, level, weight, how, sum);
-    }
-}
-
 // A picture of one colour, kept as its one texel (MipMap::build).
 template <class T>
 bool oneColour(const MipLevels<T>& levels) {
     return levels.size() == 1 && levels[0].width == 1 && levels[0].height == 1;
 }
 
-template <class T>
-void filtered(const MipLevels<T>& levels, int channels, const TexCoord& at, const MipLookup& how, float* sum) {
-    if (oneColour(levels)) return addTexel(levels[0], channels, 0, 0, 1, how, sum);
-    switch (how.filter) {
-        case TextureFilter::Nearest:
-            return nearest(levels[0], channels, at.s, at.t, how, sum);
-        case TextureFilter::Bilinear:
-            return bilinearAt(levels[0], channels, at.s, at.t, 1, how, sum);
-        case TextureFilter::Trilinear:
-            return trilinear(levels, channels, at, how, sum);
-        case TextureFilter::Anisotropic:
-            break;
+// The filters of one lookup, over the levels of one picture: N channels (1 to 4) from
+// how.firstChannel of texels `channels` values wide. Filtered values are summed texel after
+// texel in a fixed order (the same bits whatever the layout of the texels), in registers: the
+// sums are not written through a pointer that may alias the texels.
+template <class T, int N>
+class Sampler {
+public:
+    Sampler(const MipLevels<T>& levels, int channels, const MipLookup& how)
+        : levels_(levels), stride_(std::size_t(channels)), how_(how) {}
+
+    void filtered(const TexCoord& at, float* sum) const {
+        if (oneColour(levels_)) return add(levels_[0], 0, 1, sum);
+        switch (how_.filter) {
+            case TextureFilter::Nearest:
+                return nearest(at.s, at.t, sum);
+            case TextureFilter::Bilinear:
+                return bilinear(levels_[0], at.s, at.t, 1, sum);
+            case TextureFilter::Trilinear:
+                return trilinear(at, sum);
+            case TextureFilter::Anisotropic:
+                break;
+        }
+        anisotropic(at, sum);
     }
-    anisotropic(levels, channels, at, how, sum);
+
+    // Level 0 bilinear, or the one texel of a picture of one colour.
+    void finest(float s, float t, float* sum) const {
+        if (oneColour(levels_)) return add(levels_[0], 0, 1, sum);
+        bilinear(levels_[0], s, t, 1, sum);
+    }
+
+private:
+    void nearest(float s, float t, float* sum) const {
+        const MipLevel<T>& level = levels_[0];
+        const int x = wrapped(int(std::floor(reduced(s, how_.wrapS) * float(level.width))), level.width, how_.wrapS);
+        const int y = wrapped(int(std::floor(reduced(t, how_.wrapT) * float(level.height))), level.height, how_.wrapT);
+        add(level, level.texel(x, y), 1, sum);
+    }
+
+    // The four texels around (s, t) on `level`, weighted by distance, times `weight`, added to `sum`.
+    void bilinear(const MipLevel<T>& level, float s, float t, float weight, float* sum) const {
+        const float x = reduced(s, how_.wrapS) * float(level.width) - 0.5f;
+        const float y = reduced(t, how_.wrapT) * float(level.height) - 0.5f;
+        const float x0 = std::floor(x), y0 = std::floor(y);
+        const float fx = x - x0, fy = y - y0;
+        const int xa = wrapped(int(x0), level.width, how_.wrapS), xb = wrapped(int(x0) + 1, level.width, how_.wrapS);
+        const int ya = wrapped(int(y0), level.height, how_.wrapT), yb = wrapped(int(y0) + 1, level.height, how_.wrapT);
+        const std::size_t texels[4] = {level.texel(xa, ya), level.texel(xb, ya), level.texel(xa, yb),
+                                       level.texel(xb, yb)};
+        const float weights[4] = {weight * (1 - fx) * (1 - fy), weight * fx * (1 - fy), weight * (1 - fx) * fy,
+                                  weight * fx * fy};
+        float v[N];
+        for (int c = 0; c < N; ++c) v[c] = sum[c];
+        for (int k = 0; k < 4; ++k) {
+            const T* texel = level.texels.data() + texels[k] * stride_ + std::size_t(how_.firstChannel);
+            for (int c = 0; c < N; ++c) v[c] += weights[k] * decode(texel[c], how_.decoding);
+        }
+        for (int c = 0; c < N; ++c) sum[c] = v[c];
+    }
+
+    // Bilinear on the two levels around `level` (fractional: 0 the finest), blended; at or beyond
+    // either end, the one level there.
+    void trilinear(float s, float t, float level, float weight, float* sum) const {
+        const int last = int(levels_.size()) - 1;
+        if (!(level > 0)) return bilinear(levels_[0], s, t, weight, sum);  // NaN too
+        if (level >= float(last)) return bilinear(levels_[std::size_t(last)], s, t, weight, sum);
+        const int fine = int(level);
+        const float f = level - float(fine);
+        bilinear(levels_[std::size_t(fine)], s, t, weight * (1 - f), sum);
+        bilinear(levels_[std::size_t(fine) + 1], s, t, weight * f, sum);
+    }
+
+    void trilinear(const TexCoord& at, float* sum) const {
+        const Footprint f = footprint(at, levels_[0].width, levels_[0].height);
+        trilinear(at.s, at.t, levelOf(std::sqrt(std::max(f.a2, f.b2))), 1, sum);
+    }
+
+    // Up to how.maxProbes trilinear probes spread evenly along the footprint's longer axis, on the
+    // level its length over the probes sets (not finer than the shorter axis calls for when the
+    // probes do not reach it: the footprint is then widened across, as a GPU's anisotropic filter
+    // does).
+    void anisotropic(const TexCoord& at, float* sum) const {
+        const Footprint f = footprint(at, levels_[0].width, levels_[0].height);
+        const bool aLonger = f.a2 >= f.b2;
+        const float major = std::sqrt(aLonger ? f.a2 : f.b2), minor = std::sqrt(aLonger ? f.b2 : f.a2);
+        // As many probes as the footprint is longer than wide, and no more than it is texels long
+        // (a magnified texture is one bilinear probe however thin the footprint). Rounded, not up:
+        // a footprint a shade longer one way than the other (a quad seen nearly head-on) is one
+        // probe, not two half a texel apart.
+        const float ratio = std::min(major / std::max(minor, 1e-8f), major);
+        const int probes = !(ratio < float(how_.maxProbes)) ? how_.maxProbes : std::max(1, int(ratio + 0.5f));
+        if (probes == 1) return trilinear(at.s, at.t, levelOf(major), 1, sum);
+        const float level = levelOf(major / float(probes));
+        const float ds = aLonger ? at.dsdx : at.dsdy, dt = aLonger ? at.dtdx : at.dtdy;
+        const float weight = 1.0f / float(probes);
+        for (int i = 0; i < probes; ++i) {
+            const float along = (float(i) + 0.5f) / float(probes) - 0.5f;
+            trilinear(at.s + along * ds, at.t + along * dt, level, weight, sum);
+        }
+    }
+
+    // The channels of texel number `texel` of `level`, times `weight`, added to `sum`.
+    void add(const MipLevel<T>& level, std::size_t texel, float weight, float* sum) const {
+        const T* values = level.texels.data() + texel * stride_ + std::size_t(how_.firstChannel);
+        for (int c = 0; c < N; ++c) sum[c] += weight * decode(values[c], how_.decoding);
+    }
+
+    const MipLevels<T>& levels_;
+    std::size_t stride_;
+    const MipLookup& how_;
+};
+
+// Calls f(sampler) with the Sampler of how.channels channels.
+template <class T, class F>
+void withSampler(const MipLevels<T>& levels, int channels, const MipLookup& how, F f) {
+    switch (how.channels) {
+        case 1:
+            return f(Sampler<T, 1>(levels, channels, how));
+        case 2:
+            return f(Sampler<T, 2>(levels, channels, how));
+        case 3:
+            return f(Sampler<T, 3>(levels, channels, how));
+        default:
+            return f(Sampler<T, 4>(levels, channels, how));
+    }
 }
 
 std::array<float, 256> byteTable(float (*f)(float)) {
@@ -245,6 +300,10 @@ std::array<float, 256> byteTable(float (*f)(float)) {
 }  // namespace
 
 MipMap::MipMap(int width, int height, int channels, std::vector<std::uint8_t> texels) : channels_(channels) {
+    build(width, height, std::move(texels));
+}
+
+MipMap::MipMap(int width, int height, int channels, std::vector<std::uint16_t> texels) : channels_(channels) {
     build(width, height, std::move(texels));
 }
 
@@ -270,27 +329,28 @@ void MipMap::build(int width, int height, std::vector<T> texels) {
     MipLevels<T> levels;
     if (constant) {
         texels.resize(n);
-        levels.push_back({1, 1, std::move(texels)});
+        levels.push_back({1, 1, 0, 1, std::move(texels)});
     } else {
-        levels.push_back({width, height, std::move(texels)});
+        levels.push_back({width, height, 0, width, std::move(texels)});
         while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(halved(levels.back(), channels_));
+        for (MipLevel<T>& level : levels)
+            if (level.width >= kTiledSide && level.height >= kTiledSide) level = tiled(level, channels_);
     }
     levels_ = std::move(levels);
 }
 
 void MipMap::lookup(const TexCoord& at, const MipLookup& how, float* out) const {
     std::fill_n(out, how.channels, 0.0f);
-    std::visit([&](const auto& levels) { filtered(levels, channels_, at, how, out); }, levels_);
+    std::visit([&](const auto& levels) { withSampler(levels, channels_, how, [&](auto f) { f.filtered(at, out); }); },
+               levels_);
 }
 
 float MipMap::bilinear(float s, float t, const MipLookup& how) const {
     float value = 0;
     std::visit(
         [&](const auto& levels) {
-            if (oneColour(levels))
-                addTexel(levels[0], channels_, 0, 0, 1, how, &value);
-            else
-                bilinearAt(levels[0], channels_, s, t, 1, how, &value);
+            using T = typename std::decay_t<decltype(levels)>::value_type::Value;
+            Sampler<T, 1>(levels, channels_, how).finest(s, t, &value);
         },
         levels_);
     return value;
@@ -319,7 +379,9 @@ std::uint64_t MipMap::bytes() const {
 std::uint64_t mipMapBytes(int width, int height, std::uint64_t bytesPerTexel) {
     std::uint64_t total = 0;
     for (;;) {
-        total += std::uint64_t(width) * std::uint64_t(height) * bytesPerTexel;
+        const bool tiled = width >= kTiledSide && height >= kTiledSide;  // sides padded to whole tiles
+        total += std::uint64_t(tiled ? wholeTiles(width) : width) * std::uint64_t(tiled ? wholeTiles(height) : height) *
+                 bytesPerTexel;
         if (width == 1 && height == 1) return total;
         width = std::max(1, width / 2);
         height = std::max(1, height / 2);

@@ -4,8 +4,9 @@
 // an OpenImageIO TextureSystem call (docs/benchmarks.md, "Textures").
 //
 // Texels are kept as the source stores them, 8 bits a channel for 8-bit pictures (decoded by a
-// 256-entry table per lookup: sRGB for colour, linear for data), half for half-float pictures,
-// float for the rest (16-bit integer pictures too, as fractions of 65535).
+// 256-entry table per lookup: sRGB for colour, linear for data), 16 bits for 16-bit pictures (as
+// fractions of 65535; colour decoded after filtering), half for half-float pictures, float for
+// the rest.
 //
 // The pyramid: level 0 is the picture; each next level halves each side, rounded down, down to
 // 1 x 1 (a non-power-of-two side halves unevenly: 5, 2, 1). A coarse texel is the box filter of
@@ -37,18 +38,38 @@ enum class TextureFilter {
     Anisotropic,  // trilinear probes along the footprint's longer side, the level set by its shorter
 };
 
-// Stored texels of one level: width x height texels of `channels` values each, row after row.
+// Stored texels of one level: width x height texels of `channels` values each. A level of at
+// least kTiledSide texels a side is stored in tiles of 4 x 4 texels, tile after tile along a row
+// of tiles, row of tiles after row, its sides rounded up to whole tiles (the padding is never
+// read): the four texels of a bilinear probe then share one or two cache lines and one page,
+// where a row-major 2048-texel level puts them two rows, 6 KB, apart. Smaller levels stay in
+// cache and are stored row after row.
 template <class T>
 struct MipLevel {
+    using Value = T;
     int width = 0, height = 0;
+    int tileShift = 0;    // log2 of the tiles' side: 0 (row after row) or 2 (tiles of 4 x 4)
+    int tilesAcross = 0;  // tiles in a row of tiles (the width, row after row)
     std::vector<T> texels;
+
+    // Where texel (x, y) starts in `texels`, in texels (times the channels for values).
+    std::size_t texel(int x, int y) const {
+        const int inTile = (1 << tileShift) - 1;
+        const std::size_t tile = std::size_t(y >> tileShift) * std::size_t(tilesAcross) + std::size_t(x >> tileShift);
+        return (tile << (2 * tileShift)) + std::size_t(((y & inTile) << tileShift) + (x & inTile));
+    }
 };
+
+// The side from which levels are stored in tiles, and the tiles' side, 1 << kTileShift texels.
+constexpr int kTiledSide = 256;
+constexpr int kTileShift = 2;
 
 // A picture's levels in its stored type.
 template <class T>
 using MipLevels = std::vector<MipLevel<T>>;
 
-// Turns a stored value into a float: 8-bit values through `table` (256 entries), others as they are.
+// Turns a stored value into a float: 8-bit values through `table` (256 entries), 16-bit ones
+// over 65535, others as they are.
 struct TexelDecoding {
     const float* table = nullptr;
 };
@@ -67,6 +88,7 @@ public:
     // Takes level 0, `width` x `height` texels of `channels` (1 to 4) values, and builds the
     // coarser levels. A picture of one colour keeps one texel: every lookup is that texel.
     MipMap(int width, int height, int channels, std::vector<std::uint8_t> texels);
+    MipMap(int width, int height, int channels, std::vector<std::uint16_t> texels);
     MipMap(int width, int height, int channels, std::vector<half> texels);
     MipMap(int width, int height, int channels, std::vector<float> texels);
 
@@ -92,7 +114,7 @@ private:
 
     int channels_;
     std::array<bool, 4> allOne_{};
-    std::variant<MipLevels<std::uint8_t>, MipLevels<half>, MipLevels<float>> levels_;
+    std::variant<MipLevels<std::uint8_t>, MipLevels<std::uint16_t>, MipLevels<half>, MipLevels<float>> levels_;
 };
 
 // The bytes a picture of `width` x `height` texels of `bytesPerTexel` takes with its coarser levels.

@@ -61,12 +61,9 @@ Pictures distinctPictures(const Scene& scene) {
     return p;
 }
 
-// The bytes a channel of a picture takes as a MIP map stores it (image/mip_map.h): 8 bits as
-// they are, half floats as half, the rest as float.
-std::uint64_t storedChannelBytes(const ImageHeader& h) {
-    if (h.channelBytes == 1) return 1;
-    return h.floatingPoint && h.channelBytes == 2 ? 2 : 4;
-}
+// The bytes a channel of a picture takes as a MIP map stores it (image/mip_map.h): 8- and 16-bit
+// integers and half floats as they are, the rest as float.
+std::uint64_t storedChannelBytes(const ImageHeader& h) { return h.channelBytes <= 2 ? h.channelBytes : 4; }
 
 // The bytes the MIP map of a picture with header `h` takes (at most 4 channels are kept).
 std::uint64_t mipMapBytesOf(const ImageHeader& h) {
@@ -125,11 +122,13 @@ Picture readPicture(const Texture& t) {
     const OIIO::TypeDesc::BASETYPE type = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
     if (type == OIIO::TypeDesc::UINT8 || type == OIIO::TypeDesc::INT8)
         p.map = readMipMap<std::uint8_t>(*in, channels, OIIO::TypeDesc::UINT8, p.unreadable);
+    else if (type == OIIO::TypeDesc::UINT16 || type == OIIO::TypeDesc::INT16)
+        p.map = readMipMap<std::uint16_t>(*in, channels, OIIO::TypeDesc::UINT16, p.unreadable);
     else if (type == OIIO::TypeDesc::HALF)
         p.map = readMipMap<half>(*in, channels, OIIO::TypeDesc::HALF, p.unreadable);
     else
         p.map = readMipMap<float>(*in, channels, OIIO::TypeDesc::FLOAT, p.unreadable);
-    p.encoded16 = !spec.format.is_floating_point() && !p.map->storesBytes();
+    p.encoded16 = p.map && !spec.format.is_floating_point() && !p.map->storesBytes();
     return p;
 }
 

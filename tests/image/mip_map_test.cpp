@@ -93,6 +93,39 @@ TEST(MipMap, WrapModesRepeatClampAndMirrorTexelIndices) {
     EXPECT_EQ(texel(1e30f, W::Mirror), 0);
 }
 
+// Levels of kTiledSide texels a side or more are stored in tiles of 4 x 4 texels, tile after tile
+// along a row of tiles: texel (5, 1) of an 8 x 8 level is texel (1, 1) of the second tile.
+TEST(MipMap, LargeLevelsAreStoredInTilesOfFourByFour) {
+    const MipLevel<float> tiled{8, 8, 2, 2, {}}, rows{8, 8, 0, 8, {}};
+    EXPECT_EQ(tiled.texel(5, 1), 16u + 4 + 1);
+    EXPECT_EQ(tiled.texel(2, 6), 2u * 16 + 2 * 4 + 2);
+    EXPECT_EQ(rows.texel(5, 1), 13u);
+}
+
+// A picture large enough for tiles, with sides that are not whole tiles, reads back every texel
+// (nearest at its centre, bilinear across the edges of the picture and of the tiles) as the
+// picture holds it, in every wrap mode.
+TEST(MipMap, TiledLevelsReadTheSameTexelsAsThePicture) {
+    const int w = kTiledSide + 3, h = kTiledSide + 1;
+    const auto value = [](int x, int y) { return float((x * 7 + y * 13) % 101); };
+    const MipMap map = grey(w, h, value);
+    EXPECT_EQ(map.bytes(), mipMapBytes(w, h, sizeof(float))) << "the estimate counts the padding";
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const TexCoord centre{(float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h)};
+            ASSERT_EQ(at(map, centre, TextureFilter::Nearest), value(x, y)) << x << " " << y;
+        }
+    for (const Texture::Wrap wrap : {Texture::Wrap::Repeat, Texture::Wrap::Clamp, Texture::Wrap::Mirror})
+        for (const auto& [x, y] : std::vector<std::array<int, 2>>{{3, 3}, {w - 1, 5}, {7, h - 1}, {w - 1, h - 1}}) {
+            // Between texels (x, y) and (x + 1, y + 1), wrapped as each mode wraps them.
+            const int x1 = wrap == Texture::Wrap::Repeat ? (x + 1) % w : std::min(x + 1, w - 1);
+            const int y1 = wrap == Texture::Wrap::Repeat ? (y + 1) % h : std::min(y + 1, h - 1);
+            const float expected = (value(x, y) + value(x1, y) + value(x, y1) + value(x1, y1)) / 4;
+            const TexCoord corner{float(x + 1) / float(w), float(y + 1) / float(h)};
+            EXPECT_FLOAT_EQ(at(map, corner, TextureFilter::Bilinear, wrap), expected) << x << " " << y;
+        }
+}
+
 // A checker of 1-texel squares, 0 and 1, seen with a footprint of 8 texels, or 16 by 2 (anisotropic:
 // 8 probes on level 1): every filter that takes the footprint gives its grey, 0.5, wherever it falls;
 // point sampling gives 0 or 1.

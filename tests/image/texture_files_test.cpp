@@ -412,6 +412,33 @@ TEST(TextureFiles, PicturesKeepTheirBitsAndTheLevelsAddAThird) {
     std::filesystem::remove(exr);
 }
 
+// A 16-bit picture keeps 16 bits a channel: its levels within 1.4 times level 0's decoded texels
+// (float would be twice them), and its values exact to 16 bits: data() the stored fraction,
+// lookup() its sRGB decoding.
+TEST(TextureFiles, SixteenBitPicturesAreStoredAsSixteenBits) {
+    const std::string path = testing::TempDir() + "/sixteen.png";
+    constexpr int kWidth = 300, kHeight = 200;
+    const auto value = [](int x, int y) { return std::uint16_t((x * 211 + y * 65'071) % 65'536); };
+    std::vector<std::uint16_t> texels;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) texels.insert(texels.end(), 3, value(x, y));
+    ASSERT_TRUE(OIIO::ImageBuf(OIIO::ImageSpec(kWidth, kHeight, 3, OIIO::TypeDesc::UINT16), texels.data()).write(path));
+    Scene scene;
+    scene.textures.push_back({.name = "sixteen", .path = path});
+    std::vector<std::string> warnings;
+    const TextureFiles images(scene, warnings, {.filter = TextureFilter::Nearest});
+    ASSERT_TRUE(warnings.empty());
+    const double decoded = double(kWidth) * kHeight * 3 * 2;
+    EXPECT_LE(double(images.mipMap(0)->bytes()), 1.4 * decoded);
+    for (const auto& [x, y] : std::vector<std::array<int, 2>>{{0, 0}, {17, 3}, {150, 101}, {299, 199}}) {
+        const TexCoord centre{(float(x) + 0.5f) / kWidth, (float(y) + 0.5f) / kHeight};
+        const float fraction = float(value(x, y)) / 65535;
+        EXPECT_FLOAT_EQ(images.data(0, centre).g, fraction) << x << " " << y;
+        EXPECT_FLOAT_EQ(images.lookup(0, centre).g, srgbToLinear(fraction)) << x << " " << y;
+    }
+    std::filesystem::remove(path);
+}
+
 namespace {
 
 // `scene`'s textures read with one thread and with four look up the same bits.
