@@ -19,39 +19,14 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 size=128 threshold=0.03 max=1024 reference=2048 threads=2 keep=""
-while [[ $# -gt 0 ]]; do
-    case "$1" in
-        --size) size="$2"; shift 2 ;;
-        --threshold) threshold="$2"; shift 2 ;;
-        --max) max="$2"; shift 2 ;;
-        --reference) reference="$2"; shift 2 ;;
-        --threads) threads="$2"; shift 2 ;;
-        --keep) keep="$(realpath "$2")"; mkdir -p "$keep"; shift 2 ;;
-        -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
-        *) echo "noise_threshold.sh ERROR: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-    esac
-done
-models="$here/../shared/models"
-if [[ ! -d "$models" ]]; then
-    echo "noise_threshold.sh ERROR: $models: no shared models" >&2
-    exit 1
-fi
-work="${keep:-$(mktemp -d)}"
-[[ -n "$keep" ]] || trap 'rm -rf "$work"' EXIT
-cd "$here"
-cmake --preset release >/dev/null
-cmake --build --preset release --target rt-render >/dev/null
-render=build/release/tools/render/rt-render
+# shellcheck source=bench/rt_bench.bash
+source "$here/bench/rt_bench.bash"
+readOptions noise_threshold.sh "size threshold max reference threads" -- "$@"
+benchSetup noise_threshold.sh
 oiiotool --pattern constant:color=0.5,0.5,0.5 64x32 3 -d float -o "$work/grey.exr"
 
 cornell=("$models/obj/CornellBox-Original/CornellBox-Original.obj" --look-from 0,1,3.9 --look-at 0,1,0 --fov 40)
 duck=("$models/gltf/Duck/Duck.gltf" --frame --no-default-light --environment "$work/grey.exr")
-
-# The mean relative error of two float EXRs, over pixels and channels.
-error() {
-    oiiotool "$1" "$2" --absdiff "$2" --addc 0.01 --div --printstats |
-        awk '/Avg:/ { printf "%.5f\n", ($3 + $4 + $5) / 3; exit }'
-}
 
 # The uniform samples a pixel that give error E, from CURVE's "samples error" lines, in log-log:
 # uniformFor E CURVE.
@@ -76,7 +51,7 @@ run() {
     local s curve=""
     for ((s = 16; s <= max / 2; s *= 2)); do
         "$render" "${common[@]}" -S "$s" -f "$work/$name-$s.exr"
-        curve+="$s $(error "$work/$name-$s.exr" "$work/$name-ref.exr")"$'\n'
+        curve+="$s $(meanRelativeError "$work/$name-$s.exr" "$work/$name-ref.exr")"$'\n'
     done
     "$render" "${common[@]}" -S "$max" --noise-threshold "$threshold" --stats-json "$work/$name-stats.json" \
         --aov samples -f "$work/$name-adaptive-aov.exr"
@@ -84,7 +59,7 @@ run() {
     local taken perPixel adaptiveError needed
     taken=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["samplesTaken"])' "$work/$name-stats.json")
     perPixel=$(awk -v t="$taken" -v n="$size" 'BEGIN { printf "%.1f", t / (n * n) }')
-    adaptiveError=$(error "$work/$name-adaptive.exr" "$work/$name-ref.exr")
+    adaptiveError=$(meanRelativeError "$work/$name-adaptive.exr" "$work/$name-ref.exr")
     needed=$(uniformFor "$adaptiveError" "$curve")
     echo "uniform: $(tr '\n' ' ' <<<"$curve")" >&2
     awk -v n="$name" -v a="$perPixel" -v e="$adaptiveError" -v u="$needed" \

@@ -12,21 +12,88 @@ namespace {
 // Below this the power estimate of an emitter counts as none.
 constexpr double kNoPower = 1e-12;
 
+// A spot's cone past its inner angle, at least this wide (radians): a spot whose inner and outer
+// angles are one still lights the inside of its cone.
+constexpr Real kMinSpotFalloff = Real(1e-3);
+
+// Lights that light every point alike, apart from shadows (the environment, directional lights,
+// the thesis's point lights without falloff), stay out of the tree: distance says nothing of them.
+bool local(const Light& light) {
+    return light.type != Light::Type::Directional && light.falloff == Light::Falloff::InverseSquare;
+}
+
+// The power a light sends out, by luminance. A light without falloff (and a directional one) gives
+// irradiance I everywhere: I over the scene's bounding sphere. A point light of intensity I with
+// inverse-square falloff sends 4 pi I; a spot the share of that in its cone, counting the smooth
+// edge between its inner and outer angles as half (pbrt-v4's SpotLight::Phi).
+double powerOf(const Light& light, double sphereArea) {
+    const double intensity = luminance(light.color);
+    if (!local(light)) return sphereArea * intensity;
+    if (light.type != Light::Type::Spot) return 4 * kPi * intensity;
+    constexpr double kDegrees = kPi / 180;
+    const double cosInner = std::cos(std::min(light.innerConeDegrees, light.outerConeDegrees) * kDegrees);
+    const double cosOuter = std::cos(light.outerConeDegrees * kDegrees);
+    return 2 * kPi * intensity * (1 - (cosInner + cosOuter) / 2);
+}
+
+LightBounds boundsOf(const Light& light) {
+    LightBounds b;
+    b.box.extend(light.position);
+    b.intensity = Real(luminance(light.color));  // the irradiance it gives at distance 1
+    if (light.type == Light::Type::Spot) {
+        constexpr Real kDegrees = kPi / 180;
+        const Real inner = Real(std::min(light.innerConeDegrees, light.outerConeDegrees)) * kDegrees;
+        const Real outer = Real(light.outerConeDegrees) * kDegrees;
+        b.normals = {light.direction, std::cos(inner)};
+        b.cosEmission = std::cos(std::max(outer - inner, kMinSpotFalloff));
+    } else {
+        b.normals.cosSpread = -1;  // every way alike
+    }
+    return b;
+}
+
+LightBounds boundsOf(const Triangle& tri, double radiance) {
+    LightBounds b;
+    b.box.extend(tri.p0), b.box.extend(tri.p1), b.box.extend(tri.p2);
+    b.normals = {tri.normal(), 1};
+    b.cosEmission = 0;                          // Lambertian: out to 90 degrees from its normal
+    b.intensity = Real(radiance) * tri.area();  // along its normal
+    return b;
+}
+
 }  // namespace
 
-LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* images)
+LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* images, LightSampler sampler)
     : scene_(scene), environment_(scene, images) {
-    // The scene's bounding sphere: the thesis's unattenuated point lights and the environment
-    // send their light over it.
+    // The scene's bounding sphere: the thesis's unattenuated point lights, directional lights and
+    // the environment send their light over it.
     const Aabb box = scene.primitives.bounds();
     const double radius = box.empty() ? 1 : std::max(0.5 * double(length(box.diagonal())), 1e-6);
     const double sphereArea = 4 * kPi * radius * radius;
-    std::vector<double> power;
+    const bool useTree = sampler == LightSampler::Tree;
+    std::vector<LightBounds> treeLights;
+    double treePower = 0;
+    // Each light joins the tree (a local light, with a tree) or is a choice of its own.
+    const auto add = [&](LightSample::Source source, std::uint32_t index, double power, bool isLocal,
+                         const auto& bounds) {
+        const auto entry = std::uint32_t(entries_.size());
+        entries_.push_back({source, index});
+        if (useTree && isLocal) {
+            entries_.back().inTree = true;
+            entries_.back().slot = std::uint32_t(treeEntries_.size());
+            treeEntries_.push_back(entry);
+            treeLights.push_back(bounds());
+            treePower += power;
+        } else {
+            addChoice(entry, power);
+        }
+    };
     const bool emitters = scene.hasEmissiveMaterial();
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        if (scene.lights[i].headlight && emitters) continue;  // the emitters light the scene (scene/light.h)
-        entries_.push_back({LightSample::Source::Point, std::uint32_t(i)});
-        power.push_back(sphereArea * double(luminance(scene.lights[i].color)));  // irradiance I everywhere
+        const Light& light = scene.lights[i];
+        if (light.headlight && emitters) continue;  // the emitters light the scene (scene/light.h)
+        add(LightSample::Source::Point, std::uint32_t(i), powerOf(light, sphereArea), local(light),
+            [&] { return boundsOf(light); });
     }
     const auto triangles = scene.primitives.all<Triangle>();
     for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -34,42 +101,69 @@ LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* im
         if (id >= scene.materials.size()) continue;
         const double radiance = luminance(scene.materials[id].emission);
         if (!(radiance > kNoPower)) continue;
-        triangleEntry_[std::uint32_t(i)] = entries_.size();
-        entries_.push_back({LightSample::Source::Triangle, std::uint32_t(i)});
-        power.push_back(kPi * radiance * double(triangles[i].area()));  // Lambertian, front side
+        triangleEntry_[std::uint32_t(i)] = std::uint32_t(entries_.size());
+        add(LightSample::Source::Triangle, std::uint32_t(i), kPi * radiance * double(triangles[i].area()), true,
+            [&] { return boundsOf(triangles[i], radiance); });  // power: Lambertian, front side
     }
     const double background = environment_.averageLuminance();
     if (background > kNoPower) {
         // an environment of mean radiance L gives irradiance pi L over the bounding sphere
-        entries_.push_back({LightSample::Source::Environment, 0});
-        power.push_back(sphereArea * kPi * background);
+        add(LightSample::Source::Environment, 0, sphereArea * kPi * background, false, [] { return LightBounds{}; });
     }
-    double total = 0;
-    for (const double p : power) cdf_.push_back(total += p);
+    if (!treeLights.empty()) {
+        tree_ = LightTree(treeLights);
+        treeChoice_ = choices_.size();
+        addChoice(kTree, treePower);
+    }
+    const double total = cdf_.empty() ? 0 : cdf_.back();
     if (!(total > 0)) {
         entries_.clear();
+        choices_.clear();
         cdf_.clear();
         triangleEntry_.clear();
         return;
     }
     for (double& c : cdf_) c /= total;
     cdf_.back() = 1;
-    if (!entries_.empty() && entries_.back().source == LightSample::Source::Environment)
-        environmentProbability_ = probability(entries_.size() - 1);
+    for (const Entry& e : entries_)
+        if (e.source == LightSample::Source::Environment) environmentProbability_ = probability(e.slot);
 }
 
-Real LightDistribution::probability(std::size_t entry) const {
-    return Real(cdf_[entry] - (entry == 0 ? 0 : cdf_[entry - 1]));
+void LightDistribution::addChoice(std::uint32_t entry, double power) {
+    if (entry != kTree) entries_[entry].slot = std::uint32_t(choices_.size());
+    choices_.push_back(entry);
+    cdf_.push_back((cdf_.empty() ? 0 : cdf_.back()) + power);
 }
 
-std::optional<LightSample> LightDistribution::sample(const Vec3& from, Real u, Real u1, Real u2) const {
+Real LightDistribution::probability(std::size_t choice) const {
+    return Real(cdf_[choice] - (choice == 0 ? 0 : cdf_[choice - 1]));
+}
+
+Real LightDistribution::probability(const Entry& entry, const Vec3& from, const Vec3& normal) const {
+    if (!entry.inTree) return probability(entry.slot);
+    return probability(treeChoice_) * tree_.probability(entry.slot, from, normal);
+}
+
+std::optional<LightSample> LightDistribution::sample(const Vec3& from, const Vec3& normal, Real u, Real u1,
+                                                     Real u2) const {
     if (cdf_.empty()) return std::nullopt;
-    const std::size_t entry =
+    const std::size_t choice =
         std::min(std::size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u)) - cdf_.begin()), cdf_.size() - 1);
-    const Real chosen = probability(entry);
+    const Real chosen = probability(choice);
+    if (choices_[choice] != kTree) return sampleEntry(entries_[choices_[choice]], chosen, from, u1, u2);
+    // u, stretched over [0, 1) within the tree's share of the CDF, walks down the tree
+    const double start = choice == 0 ? 0 : cdf_[choice - 1];
+    const Real uTree = std::min(Real((double(u) - start) / (cdf_[choice] - start)), kBelowOne);
+    const std::optional<LightTree::Choice> light = tree_.sample(from, normal, std::max(uTree, Real(0)));
+    if (!light) return std::nullopt;
+    return sampleEntry(entries_[treeEntries_[light->light]], chosen * light->probability, from, u1, u2);
+}
+
+std::optional<LightSample> LightDistribution::sampleEntry(const Entry& entry, Real chosen, const Vec3& from, Real u1,
+                                                          Real u2) const {
     LightSample s;
-    s.source = entries_[entry].source;
-    s.index = entries_[entry].index;
+    s.source = entry.source;
+    s.index = entry.index;
     switch (s.source) {
         case LightSample::Source::Point: {  // point, spot or directional: render/light_sample.h
             const LightIncidence in = lightIncidence(scene_.lights[s.index], from);
@@ -105,13 +199,14 @@ std::optional<LightSample> LightDistribution::sample(const Vec3& from, Real u, R
     return std::nullopt;
 }
 
-Real LightDistribution::pdfTriangle(std::uint32_t prim, const Vec3& direction, Real distance) const {
+Real LightDistribution::pdfTriangle(std::uint32_t prim, const Vec3& from, const Vec3& normal, const Vec3& direction,
+                                    Real distance) const {
     const auto it = triangleEntry_.find(prim);
     if (it == triangleEntry_.end()) return 0;
     const Triangle& tri = scene_.primitives.all<Triangle>()[prim];
     const Real cosine = -dot(tri.normal(), direction);
     if (!(cosine > 0)) return 0;
-    return probability(it->second) * distance * distance / (cosine * tri.area());
+    return probability(entries_[it->second], from, normal) * distance * distance / (cosine * tri.area());
 }
 
 }  // namespace rt

@@ -42,7 +42,7 @@ PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const Rende
       accel_(accel),
       settings_(settings),
       camera_(scene.camera, settings.width, settings.height),
-      lights_(scene, images),
+      lights_(scene, images, settings.lightSampler),
       epsilon_(secondaryRayOffset(scene.primitives)) {}
 
 Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
@@ -76,14 +76,19 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
     // light sample could have found the same direction (not through glass, not a delta lobe).
     Real bsdfPdf = 0;
     bool lightSampled = false;
-    const auto misWeight = [&](Real lightPdf) { return lightSampled ? powerHeuristic(bsdfPdf, lightPdf) : Real(1); };
+    LightQuery from;  // where `ray` left, as next-event estimation there saw it
+    // lightPdf() is only asked for when it matters (a light tree's walk is not free)
+    const auto misWeight = [&](const auto& lightPdf) {
+        return lightSampled ? powerHeuristic(bsdfPdf, lightPdf()) : Real(1);
+    };
     seen = false;
     for (int bounce = 0;; ++bounce) {
         Hit hit;
         if (!accel_.intersect(ray, kInfinity, hit, bounce == 0 ? counters.camera : counters.reflection)) {
             const Color sky = lights_.environment().radiance(ray.direction);
             if (bounce == 0) return sky;
-            result += clampIndirect(throughput * sky * float(misWeight(lights_.pdfEnvironment(ray.direction))), bounce);
+            result += clampIndirect(
+                throughput * sky * float(misWeight([&] { return lights_.pdfEnvironment(ray.direction); })), bounce);
             break;
         }
         seen = seen || bounce == 0;
@@ -93,7 +98,8 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         // Beer-Lambert along the stretch just travelled inside (render/refraction.h)
         if (!s.frontFace && m.transmission.absorbs()) throughput = throughput * absorbed(m.transmission, hit.t);
         if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {
-            const Real weight = misWeight(lights_.pdfTriangle(hit.prim, ray.direction, hit.t));
+            const Real weight =
+                misWeight([&] { return lights_.pdfTriangle(hit.prim, from.point, from.normal, ray.direction, hit.t); });
             result += clampIndirect(throughput * emitted * float(weight), bounce);
         }
         if (bounce == settings_.maxBounces) break;
@@ -107,8 +113,10 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         const ShadingFrame frame = shadingFrame(s, toViewer);
         const Vec3 wo = frame.toLocal(toViewer);
         const Bsdf bsdf = bsdfAt(context_, m, s, lobe);
+        from = {s.shadowOrigin + s.geometricNormal * epsilon_, s.geometricNormal};
         if (isNonSpecular(bsdf.flags()))
-            result += clampIndirect(throughput * directLight(s, bsdf, frame, wo, {pick, l1, l2}, counters), bounce + 1);
+            result +=
+                clampIndirect(throughput * directLight(from, bsdf, frame, wo, {pick, l1, l2}, counters), bounce + 1);
 
         const std::optional<BsdfSample> next = bsdf.sample(wo, lobe, u1, u2);
         if (!next) break;
@@ -130,12 +138,12 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
     return result;
 }
 
-Color PathTracer::directLight(const SurfacePoint& s, const Bsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
+Color PathTracer::directLight(const LightQuery& at, const Bsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
                               const LightNumbers& u, RenderCounters& counters) const {
     if (lights_.empty()) return {};
-    const Vec3 origin = s.shadowOrigin + s.geometricNormal * epsilon_;
-    const std::optional<LightSample> light = lights_.sample(origin, u.pick, u.u1, u.u2);
-    if (!light || dot(light->direction, s.geometricNormal) <= 0) return {};
+    const Vec3& origin = at.point;
+    const std::optional<LightSample> light = lights_.sample(origin, at.normal, u.pick, u.u1, u.u2);
+    if (!light || dot(light->direction, at.normal) <= 0) return {};
     const Vec3 wi = frame.toLocal(light->direction);
     const Color f = bsdf.evaluate(wo, wi);
     if (f == Color{}) return {};

@@ -47,8 +47,14 @@ private:
     struct LightNumbers {
         Real pick, u1, u2;  // which light, and where on it
     };
-    // Light from one next-event sample at s, weighted against the BSDF's density.
-    Color directLight(const SurfacePoint& s, const Bsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
+    // Where next-event estimation samples a light from: the shadow rays' origin, off the surface,
+    // and the geometric normal on the viewer's side. Kept for the MIS weight of the emitter the
+    // BSDF's ray from there hits, whose light-sampling density depends on both (a light tree's).
+    struct LightQuery {
+        Vec3 point, normal;
+    };
+    // Light from one next-event sample at `at`, weighted against the BSDF's density.
+    Color directLight(const LightQuery& at, const Bsdf& bsdf, const ShadingFrame& frame, const Vec3& wo,
                       const LightNumbers& u, RenderCounters& counters) const;
     Color emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const;
     Color lightRadiance(const LightSample& light, const Vec3& from) const;

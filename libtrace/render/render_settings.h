@@ -26,6 +26,13 @@ enum class Integrator { Whitted, Path };
 inline constexpr NamedValues<Integrator, 2> kIntegratorNames{
     {{"whitted", Integrator::Whitted}, {"path", Integrator::Path}}};
 
+// --light-sampler: how the path tracer's next-event estimation picks a light
+// (render/light_distribution.h): a light tree over the local lights (the default), or in
+// proportion to power alone.
+enum class LightSampler { Tree, Power };
+inline constexpr NamedValues<LightSampler, 2> kLightSamplerNames{
+    {{"tree", LightSampler::Tree}, {"power", LightSampler::Power}}};
+
 // The structure an integrator traces with when none is asked for (docs/trees.md, "The path
 // tracer's structure"): the thesis's KD tree for its Whitted tracer; the BVH for the path tracer,
 // whose rays after the first bounce go every way: on bench/path_structures.sh's twelve scenes the
@@ -53,6 +60,7 @@ struct RenderSettings {
     Integrator integrator = Integrator::Whitted;
     int maxBounces = 8;       // --max-bounces: the path tracer's surface interactions after the camera ray
     float clampRadiance = 0;  // --clamp: the path tracer's indirect samples capped at this value; 0 is off
+    LightSampler lightSampler = LightSampler::Tree;  // --light-sampler
     // --adaptive (thesis 2.3, render/adaptive.h): the spacing of the grid of traced corners, a
     // power of two; 0 traces every pixel. A block whose corners differ by less than
     // adaptiveThreshold (linear colour and alpha) and see the same object is interpolated.

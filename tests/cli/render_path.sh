@@ -46,6 +46,12 @@ expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator bidirectional
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --max-bounces -1
 expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --clamp nan
 
+# --light-sampler: the demo's thesis lights (no falloff) light every point alike and stay out of
+# the light tree, so power and tree choose them alike
+"$RT_RENDER" "$scene" "${opts[@]}" --light-sampler power -f "$WORK/power.exr"
+idiff -fail 0 -warn 0 "$WORK/power.exr" "$WORK/whole.exr" >/dev/null || fail "--light-sampler power changed the demo"
+expect_exit 2 "$RT_RENDER" "$scene" -q -o null --integrator path --light-sampler uniform
+
 # every AOV with the path tracer
 "$RT_RENDER" "$scene" "${opts[@]}" --aov all -f "$WORK/aov.exr"
 channels=$(iinfo -v "$WORK/aov.exr" | grep "channel list")

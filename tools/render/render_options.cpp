@@ -137,6 +137,10 @@ void addPathTracingOptions(CLI::App& app, RenderOptions& o) {
                    "Cap indirect samples at this value, trading bias for fewer fireflies (default 0: off)")
         ->check(CLI::NonNegativeNumber)
         ->group(group);
+    addNamedOption(app, "--light-sampler", o.render.lightSampler, rt::kLightSamplerNames,
+                   "How next-event estimation picks a light: tree (by what each can send to the point, "
+                   "the default) or power")
+        ->group(group);
     app.add_option("--noise-threshold", o.render.noiseThreshold,
                    "Stop sampling a pixel once the relative standard error of its mean luminance is below this, "
                    "e.g. 0.02; -S is then the most a pixel takes (default 0: off)")
@@ -258,13 +262,14 @@ struct IntegratorOption {
     const char* name;
     Integrator readBy;
 };
-constexpr std::array<IntegratorOption, 8> kIntegratorOptions{{{"--depth", Integrator::Whitted},
+constexpr std::array<IntegratorOption, 9> kIntegratorOptions{{{"--depth", Integrator::Whitted},
                                                               {"--shadows", Integrator::Whitted},
                                                               {"--distributed", Integrator::Whitted},
                                                               {"--distributed-samples", Integrator::Whitted},
                                                               {"--packets", Integrator::Whitted},
                                                               {"--max-bounces", Integrator::Path},
                                                               {"--clamp", Integrator::Path},
+                                                              {"--light-sampler", Integrator::Path},
                                                               {"--adaptive-min-samples", Integrator::Path}}};
 
 }  // namespace
