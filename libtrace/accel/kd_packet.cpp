@@ -501,7 +501,8 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
             updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {
-                searchNearest<level>(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
+                searchNearest<level, TriangleTest::MollerTrumbore>(rays[r], reciprocal(rays[r].direction), node, tMin,
+                                                                   tEnd, hit, counters);
             });
         });
     counters.intersectionTests += tests;
@@ -538,8 +539,8 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
             if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
-            if (!searchBlocker<level>(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray],
-                                      counters))
+            if (!searchBlocker<level, TriangleTest::MollerTrumbore>(rays[ray], reciprocal(rays[ray].direction), node,
+                                                                    tMin, tEnd, tMax[ray], counters))
                 return;
             found |= 1u << ray;
             closeRays(1u << ray, tLimit);
