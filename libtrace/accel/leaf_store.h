@@ -45,6 +45,15 @@ struct alignas(16) LeafPrimitives {
         return std::launder(reinterpret_cast<const std::uint32_t*>(sphereBlocks() + sphereBlockCount()));
     }
 };
+// A leaf's triangle blocks as the triangle test `test` reads them.
+template <TriangleTest test>
+auto triangleBlocks(const LeafPrimitives& leaf) {
+    if constexpr (test == TriangleTest::Watertight)
+        return leaf.vertexBlocks();
+    else
+        return leaf.blocks();
+}
+
 static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16 &&
               sizeof(SphereBlock) % 16 == 0 && alignof(SphereBlock) <= 16);
 // What a traversal fetches ahead of a leaf: its record and first block.

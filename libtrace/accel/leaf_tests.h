@@ -75,14 +75,6 @@ public:
           sheared_(ray) {
     }
 
-    // The leaf's triangle blocks, as this test reads them.
-    static auto triangleBlocks(const LeafPrimitives& leaf) {
-        if constexpr (test == TriangleTest::Watertight)
-            return leaf.vertexBlocks();
-        else
-            return leaf.blocks();
-    }
-
     // visit(blocks + b, b, hits, count) for each group of `count` of the `blockCount` blocks from
     // block b on, lane i of `hits` in block b + i / kSimdWidth, each group tested against tMax as
     // it is then; stops when visit returns true, and returns whether it did.
@@ -171,7 +163,7 @@ template <TriangleTest test>
         }
         return false;
     };
-    testBlocks(testBlocks.triangleBlocks(leaf), leaf.blockCount(), nearest.t, takeNearest);
+    testBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), nearest.t, takeNearest);
     testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), nearest.t, takeNearest);
     const std::uint32_t* otherIds = leaf.otherIds();
     for (std::uint32_t i = 0; i < leaf.others; ++i) {
@@ -204,7 +196,7 @@ template <TriangleTest test>
             return false;
         };
     };
-    if (testBlocks(testBlocks.triangleBlocks(leaf), leaf.blockCount(), rayTMax, blockedIn(leaf.triangles)) ||
+    if (testBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), rayTMax, blockedIn(leaf.triangles)) ||
         testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), rayTMax, blockedIn(leaf.spheres)))
         return true;
     const std::uint32_t* otherIds = leaf.otherIds();

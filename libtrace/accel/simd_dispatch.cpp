@@ -33,12 +33,16 @@ bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const
 
 void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                                 RayCounters& counters) const {
-    onChosenLevel([&](auto level) { tracePacket<decltype(level)::value>(rays, count, tMax, hits, found, counters); });
+    onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+        tracePacket<decltype(level)::value, decltype(test)::value>(rays, count, tMax, hits, found, counters);
+    });
 }
 
 void SplitTree::occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
                                RayCounters& counters) const {
-    onChosenLevel([&](auto level) { traceShadowPacket<decltype(level)::value>(rays, count, tMax, blocked, counters); });
+    onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+        traceShadowPacket<decltype(level)::value, decltype(test)::value>(rays, count, tMax, blocked, counters);
+    });
 }
 
 }  // namespace rt

@@ -99,17 +99,14 @@ private:
     LeafPrimitives leafSizes(const FlatTree& tree, const SplitNode& node) const {
         return LeafStore::sizesOf(prims_, &tree.primitiveIndices[node.primitiveOffset()], node.primitiveCount());
     }
-    // The packet traversals on one level's lanes: kd_packet.cpp, compiled once per level.
-    template <SimdLevel level>
+    // The packet traversals on one level's lanes with one triangle test: kd_packet.cpp, compiled
+    // once per level.
+    template <SimdLevel level, TriangleTest test>
     void tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found, RayCounters& counters) const;
-    template <SimdLevel level>
+    template <SimdLevel level, TriangleTest test>
     void traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const;
     // Whether `count` rays may walk the tree as a packet (kd_packet.cpp checks that they are coherent).
-    // The packets test triangles by Moller-Trumbore only: with the watertight test rays go one by one.
-    bool tracesTogether(int count) const {
-        return !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty() &&
-               leaves_.triangleTest() == TriangleTest::MollerTrumbore;
-    }
+    bool tracesTogether(int count) const { return !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty(); }
     // The part [tMin, tMax] of the ray inside the root voxel; false if it misses the voxel.
     bool enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const {
         tMin = 0;

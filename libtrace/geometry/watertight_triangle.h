@@ -50,8 +50,10 @@ inline Real exactDifferenceOfProducts(Real a, Real b, Real c, Real d) {
 // the shear that takes its direction to (0, 0, 1): x -= sx z, y -= sy z, z *= sz.
 struct ShearedRay {
     Vec3 origin;
-    int kx, ky, kz;
-    Real sx, sy, sz;
+    int kx = 0, ky = 1, kz = 2;
+    Real sx = 0, sy = 0, sz = 1;
+
+    ShearedRay() = default;  // the ray along +z from 0
 
     explicit ShearedRay(const Ray& ray) : origin(ray.origin) {
         const Vec3& d = ray.direction;
@@ -132,19 +134,22 @@ struct alignas(16) VertexBlock {
 };
 static_assert(sizeof(VertexBlock) == sizeof(TriangleBlock) && alignof(VertexBlock) == alignof(TriangleBlock));
 
-// The sheared ray in every lane; the axes stay scalars, as they choose which rows a block's test
-// loads.
+// The sheared ray on lanes: one ray in every lane (the leaves' blocks), or one ray per lane
+// (accel/kd_packet.cpp's packets, whose rays share their axes). The axes stay scalars, as they
+// choose which rows a block's test loads.
 template <class Lanes>
 struct ShearedRayLanesOf {
-    typename Lanes::Type origin[3], sx, sy, sz;  // origin in the order kx, ky, kz
+    using L = typename Lanes::Type;
+    L origin[3], sx, sy, sz;  // origin in the order kx, ky, kz
     int kx, ky, kz;
 
     [[gnu::always_inline]] explicit ShearedRayLanesOf(const ShearedRay& ray)
-        : sx(Lanes::all(ray.sx)), sy(Lanes::all(ray.sy)), sz(Lanes::all(ray.sz)), kx(ray.kx), ky(ray.ky), kz(ray.kz) {
-        origin[0] = Lanes::all(ray.origin[kx]);
-        origin[1] = Lanes::all(ray.origin[ky]);
-        origin[2] = Lanes::all(ray.origin[kz]);
-    }
+        : ShearedRayLanesOf(
+              {Lanes::all(ray.origin[ray.kx]), Lanes::all(ray.origin[ray.ky]), Lanes::all(ray.origin[ray.kz])},
+              Lanes::all(ray.sx), Lanes::all(ray.sy), Lanes::all(ray.sz), ray) {}
+    // Rays lane by lane, each of them sheared along the axes of `axes`.
+    [[gnu::always_inline]] ShearedRayLanesOf(const L (&o)[3], L sxLanes, L syLanes, L szLanes, const ShearedRay& axes)
+        : origin{o[0], o[1], o[2]}, sx(sxLanes), sy(syLanes), sz(szLanes), kx(axes.kx), ky(axes.ky), kz(axes.kz) {}
 };
 using ShearedRayLanes = ShearedRayLanesOf<BaseLanes>;
 
@@ -163,12 +168,20 @@ template <int N>
     }
 }
 
-// The watertight test with one triangle per lane (see intersectWatertight: the same operations in
-// the same order, the rejections as masks). load(vertex, axis) gives the lanes' VertexBlock::p0, p1
-// or p2 (a pointer to the member) on one axis. Always inlined, as mollerTrumboreLanes is.
+// What the lanes' watertight test finds: where it hits before each lane's limit, and t, u, v.
+template <class L>
+struct WatertightLaneHits {
+    L hit, t, u, v;
+};
+
+// The watertight test lane by lane (see intersectWatertight: the same operations in the same
+// order, the rejections as masks): one triangle per lane against one ray (the blocks), or one
+// triangle against a ray per lane (the packets). load(vertex, axis) gives the lanes' VertexBlock::p0,
+// p1 or p2 (a pointer to the member) on one axis; N, the lanes' count. Always inlined, as
+// mollerTrumboreLanes is.
 template <class Lanes, int N, class Load>
-[[gnu::always_inline]] inline LaneHits<N> watertightLanes(const Load& load, const ShearedRayLanesOf<Lanes>& ray,
-                                                          Real tMax) {
+[[gnu::always_inline]] inline WatertightLaneHits<typename Lanes::Type> watertightLaneTest(
+    const Load& load, const ShearedRayLanesOf<Lanes>& ray, const typename Lanes::Type& limit) {
     using L = typename Lanes::Type;
     // Vertex p relative to the origin, sheared: its x, y and (unscaled) z.
     const auto project = [&](auto vertex, L& x, L& y, L& z) __attribute__((always_inline)) {
@@ -201,8 +214,15 @@ template <class Lanes, int N, class Load>
     const L scaled = u * (ray.sz * az) + v * (ray.sz * bz) + w * (ray.sz * cz);
     const L invDet = Lanes::all(1) / det;
     const L t = scaled * invDet;
-    const L hit = inside & notEqual(det, zero) & lessThan(zero, t) & lessThan(t, Lanes::all(tMax));
-    return LaneHits<N>::of(hit, t, v * invDet, w * invDet);
+    return {inside & notEqual(det, zero) & lessThan(zero, t) & lessThan(t, limit), t, v * invDet, w * invDet};
+}
+
+// The test with one triangle per lane, as LaneHits.
+template <class Lanes, int N, class Load>
+[[gnu::always_inline]] inline LaneHits<N> watertightLanes(const Load& load, const ShearedRayLanesOf<Lanes>& ray,
+                                                          Real tMax) {
+    const auto h = watertightLaneTest<Lanes, N>(load, ray, Lanes::all(tMax));
+    return LaneHits<N>::of(h.hit, h.t, h.u, h.v);
 }
 
 // The test on one block's triangles.

@@ -330,3 +330,39 @@ TEST_P(WatertightMeshes, NoRaySlipsThroughAClosedMesh) {
         }
     }
 }
+
+// The KD tree's packets with the watertight test (accel/kd_packet.cpp) give each ray its single
+// query's answer, bit for bit: rays from one point outside each mesh to its edges' points in turn,
+// neighbours in a packet sharing their octant and their shear's axes.
+TEST_P(WatertightMeshes, PacketsHaveTheSingleRaysBits) {
+    for (const ClosedMesh& closed : closedMeshes()) {
+        const Primitives prims = closed.mesh.primitives();
+        const auto kd = buildAccelerator(prims, settingsFor(AccelKind::Kd, TriangleTest::Watertight));
+        const Vec3 origin = closed.mesh.centre + Vec3{Real(2.5), Real(1.9), Real(1.3)};
+        std::vector<Ray> rays;
+        for (const auto& [i, j] : closed.mesh.edges())
+            for (Real s : {Real(0.5), Real(1) / Real(3), Real(0.71)})
+                rays.push_back({origin, normalize(closed.mesh.vertices[i] +
+                                                  (closed.mesh.vertices[j] - closed.mesh.vertices[i]) * s - origin)});
+        int differing = 0, hits = 0;
+        RayCounters counters;
+        for (std::size_t first = 0; first + kPacketSize <= rays.size(); first += kPacketSize) {
+            Hit packetHits[kPacketSize];
+            bool found[kPacketSize], blocked[kPacketSize];
+            const Real ends[kPacketSize] = {4, 4, 4, 4, 4, 4, 4, 4};
+            kd->intersectPacket(&rays[first], kPacketSize, kInfinity, packetHits, found, counters);
+            kd->occludedPacket(&rays[first], kPacketSize, ends, blocked, counters);
+            for (int i = 0; i < kPacketSize; ++i) {
+                Hit hit;
+                const Ray& ray = rays[first + std::size_t(i)];
+                const bool single = kd->intersect(ray, kInfinity, hit, counters);
+                hits += single;
+                differing += single != found[i] || kd->occluded(ray, 4, counters) != blocked[i] ||
+                             (single && (hit.t != packetHits[i].t || hit.prim != packetHits[i].prim ||
+                                         hit.u != packetHits[i].u || hit.v != packetHits[i].v));
+            }
+        }
+        EXPECT_EQ(differing, 0) << closed.name;
+        EXPECT_GT(hits, int(rays.size()) / 4) << closed.name;
+    }
+}
