@@ -8,7 +8,8 @@
 #
 # Environment: RT_MODELS, the shared models' folder (default /work/shared/models, else ../shared/models);
 # CORPUS_VIEWS, the views to take (default all seven below); CORPUS_SCENES, the thesis scenes (default all
-# five); CORPUS_MODELS, the models (paths under RT_MODELS; default the list below).
+# five); CORPUS_MODELS, the models (paths under RT_MODELS; default the list below); CORPUS_RT_OPTIONS, options
+# for rt's structure in vs_embree and rt-render (as --watertight; default none).
 #
 # Views, from the scene's bounding box (min, max, centre c, size s), as rt-render's camera options, in
 # (x, up, z) (up: see view_options):
@@ -36,6 +37,7 @@ accel=${3:-bvh}
 models_root=${RT_MODELS:-/work/shared/models}
 [ -d "$models_root" ] || models_root=../shared/models
 read -r -a views <<<"${CORPUS_VIEWS:-file overview close inside inside-z grazing top}"
+read -r -a rt_options <<<"${CORPUS_RT_OPTIONS:-}"
 read -r -a thesis <<<"${CORPUS_SCENES:-balls balls2 ships tree pyramid5}"
 read -r -a models <<<"${CORPUS_MODELS:-glb/Duck/Duck.glb glb/2CylinderEngine/2CylinderEngine.glb \
 glb/TransmissionRoughnessTest/TransmissionRoughnessTest.glb gltf/LightsPunctualLamp/LightsPunctualLamp.gltf \
@@ -93,7 +95,7 @@ ratios() {
 kd_tests() {
     local file=$1
     shift
-    nice "$build/tools/render/rt-render" "$file" "$@" -K -s -d 3 -x 800 -y 600 -o null -q --stats-json - |
+    nice "$build/tools/render/rt-render" "$file" "$@" "${rt_options[@]}" -K -s -d 3 -x 800 -y 600 -o null -q --stats-json - |
         jq '.rays.intersectionTestsPerRay * 100 | round / 100'
 }
 
@@ -105,7 +107,7 @@ measure() {  # group scene-name file
         read -r -a options <<<"$(view_options "$box" "$view")"
         local mark=""
         echo "corpus.sh: $name $view" >&2
-        nice "$build/bench/vs_embree" --scene "$file" --accel "$accel" --passes "$passes" "${options[@]}" \
+        nice "$build/bench/vs_embree" --scene "$file" --accel "$accel" --passes "$passes" "${options[@]}" "${rt_options[@]}" \
             >"$work/table.md" 2>"$work/err.txt" || mark=" (vs_embree failed its agreement check)"
         if ! row=$(ratios "$work/table.md"); then
             echo "corpus.sh: $name $view: vs_embree failed: $(tail -1 "$work/err.txt")" >&2

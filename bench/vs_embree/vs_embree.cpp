@@ -559,6 +559,7 @@ int main(int argc, char** argv) {
     tool::addNamedOption(app, "--accel", accel.kind, kAccelKindNames, "rt's structure: kd, bvh, bsp or naive")
         ->capture_default_str();
     tool::addKdOptions(app, accel.kd);
+    tool::addTriangleTestOption(app, accel);
     addCameraOptions(app, camera);
     CLI11_PARSE(app, argc, argv);
     if (quick) scenes = {"ships", "tri10k"}, passes = 1;
@@ -576,7 +577,8 @@ int main(int argc, char** argv) {
     std::cout << "rt (" << realTypeName() << ") against Embree " << RTC_VERSION_STRING << ", " << kWidth << "x"
               << kHeight << ", best of " << passes << " passes, rt on " << simdLevelName(simdLevel())
               << " lanes, single rays and packets (RT_SIMD=sse2|avx2|avx512 for another); rt's "
-              << accelKindName(accel.kind) << (accel.kind == AccelKind::Kd ? kdOptions(app) : std::string()) << "\n";
+              << accelKindName(accel.kind) << (accel.kind == AccelKind::Kd ? kdOptions(app) : std::string())
+              << (accel.triangles == TriangleTest::Watertight ? ", watertight triangles" : "") << "\n";
     printTables(reports, accel.kind);
     if (std::all_of(reports.begin(), reports.end(), [](const SceneReport& r) { return r.agreed; })) return 0;
     std::cerr << "vs_embree ERROR: rt and Embree disagree on more than " << 100 * kMaxDisagreement

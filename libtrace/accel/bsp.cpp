@@ -73,7 +73,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSettings& settings) {
+std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSettings& settings,
+                                          TriangleTest triangles) {
     const Stopwatch stopwatch;
     BspNode root{{}, roundOutToFloat(prims.bounds()), 0};
     root.primitives.resize(prims.size());
@@ -81,7 +82,7 @@ std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSett
     const Aabb bounds = root.voxel;
     FlatTree flat = buildFlatTree(std::move(root), BspSplitter(prims, settings));
     // The BSP has no costs of its own: it is reported with the KD tree's defaults.
-    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat), "bsp", sahCosts(KdSettings{}));
+    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat), "bsp", sahCosts(KdSettings{}), triangles);
     tree->setBuildTime(stopwatch.seconds(), buildThreads(prims.size()));
     return tree;
 }

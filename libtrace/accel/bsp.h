@@ -10,7 +10,8 @@
 
 namespace rt {
 
-// The primitives must outlive the tree.
-std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSettings& settings);
+// The primitives must outlive the tree. Its leaves' triangles are tested with `triangles`.
+std::unique_ptr<Accelerator> buildBspTree(const Primitives& prims, const BspSettings& settings,
+                                          TriangleTest triangles = TriangleTest::MollerTrumbore);
 
 }  // namespace rt

@@ -11,7 +11,8 @@
 namespace rt {
 
 // The primitives must outlive the BVH. The build runs on all OpenMP threads; the BVH does not
-// depend on their number.
-std::unique_ptr<Accelerator> buildBvh(const Primitives& prims, const BvhSettings& settings);
+// depend on their number. Its leaves' triangles are tested with `triangles`.
+std::unique_ptr<Accelerator> buildBvh(const Primitives& prims, const BvhSettings& settings,
+                                      TriangleTest triangles = TriangleTest::MollerTrumbore);
 
 }  // namespace rt

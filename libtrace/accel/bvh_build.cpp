@@ -374,8 +374,8 @@ public:
         for (const auto& child : b.children) count(*child, inner, leaves);
     }
 
-    LeafStore writeLeaves() const {
-        LeafStore store;
+    LeafStore writeLeaves(TriangleTest triangles) const {
+        LeafStore store(triangles);
         store.resize(units_);
         const auto count = std::int64_t(leaves_.size());
 #pragma omp parallel for schedule(dynamic, 1024) if (count >= std::int64_t(kTaskPrimitives))
@@ -421,7 +421,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Accelerator> buildBvh(const Primitives& prims, const BvhSettings& settings) {
+std::unique_ptr<Accelerator> buildBvh(const Primitives& prims, const BvhSettings& settings, TriangleTest triangles) {
     const Stopwatch stopwatch;
     BvhBuilder builder(prims, settings);
     const BuildNode root = builder.build();
@@ -429,7 +429,7 @@ std::unique_ptr<Accelerator> buildBvh(const Primitives& prims, const BvhSettings
     for (std::uint32_t i = 0; i < prims.size(); ++i) ids[i] = builder.id(i);
     Flattener flat(prims, std::move(ids));
     flat.flatten(root);
-    LeafStore leaves = flat.writeLeaves();
+    LeafStore leaves = flat.writeLeaves(triangles);
     return std::make_unique<Bvh>(prims, flat.takeNodes(), std::move(leaves), settings, stopwatch.seconds(),
                                  BvhBuilder::threadsFor(prims.size()));
 }

@@ -109,12 +109,12 @@ namespace rt {
 // child is taken from the stack only if it starts before the nearest hit so far (with the ray's
 // slack), which a leaf's tests (accel/leaf_tests.h) lower. A node with one child hit hands it on
 // without the stack.
-template <SimdLevel level>
+template <SimdLevel level, TriangleTest test>
 void Bvh::searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
     static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
     const SlabRay slabs(ray, sceneMagnitude_);
-    const BlockTests testBlocks(ray);
+    const BlockTests<test> testBlocks(ray);
     const HitFilter* filter = filter_;
     const PrimitiveView prims = view_;  // a local copy, kept in registers (see PrimitiveView)
     std::uint64_t steps = 0, tests = 0;
@@ -145,12 +145,12 @@ void Bvh::searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) con
 
 // Any hit: the children in slot order, the last hit first, and the search ends at the first leaf
 // that blocks.
-template <SimdLevel level>
+template <SimdLevel level, TriangleTest test>
 bool Bvh::searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
     static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
     const SlabRay slabs(ray, sceneMagnitude_);
-    const BlockTests testBlocks(ray);
+    const BlockTests<test> testBlocks(ray);
     const HitFilter* filter = filter_;
     const PrimitiveView prims = view_;
     std::uint64_t steps = 0, tests = 0;
@@ -175,8 +175,10 @@ bool Bvh::searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const 
     return blocked;
 }
 
-template void Bvh::searchNearest<RT_LEVEL>(const Ray& ray, Hit& nearest, RayCounters& counters) const;
-template bool Bvh::searchBlocker<RT_LEVEL>(const Ray& ray, Real tMax, RayCounters& counters) const;
+template void Bvh::searchNearest<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray&, Hit&, RayCounters&) const;
+template void Bvh::searchNearest<RT_LEVEL, TriangleTest::Watertight>(const Ray&, Hit&, RayCounters&) const;
+template bool Bvh::searchBlocker<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray&, Real, RayCounters&) const;
+template bool Bvh::searchBlocker<RT_LEVEL, TriangleTest::Watertight>(const Ray&, Real, RayCounters&) const;
 
 }  // namespace rt
 

@@ -48,15 +48,18 @@ bool Bvh::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) 
     Hit nearest;
     nearest.t = tMax;
     if (!nodes_.empty())
-        onChosenLevel([&](auto level) { searchNearest<decltype(level)::value>(ray, nearest, counters); });
+        onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+            searchNearest<decltype(level)::value, decltype(test)::value>(ray, nearest, counters);
+        });
     if (!(nearest.t < tMax)) return false;
     hit = nearest;
     return true;
 }
 
 bool Bvh::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
-    return !nodes_.empty() &&
-           onChosenLevel([&](auto level) { return searchBlocker<decltype(level)::value>(ray, tMax, counters); });
+    return !nodes_.empty() && onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+        return searchBlocker<decltype(level)::value, decltype(test)::value>(ray, tMax, counters);
+    });
 }
 
 void Bvh::forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const {

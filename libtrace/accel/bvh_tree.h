@@ -70,10 +70,11 @@ public:
     void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const override;
 
 private:
-    // The queries on one level's lanes: accel/bvh_traversal.cpp, compiled once per level.
-    template <SimdLevel level>
+    // The queries on one level's lanes with one triangle test: accel/bvh_traversal.cpp, compiled
+    // once per level.
+    template <SimdLevel level, TriangleTest test>
     void searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) const;
-    template <SimdLevel level>
+    template <SimdLevel level, TriangleTest test>
     bool searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const;
     AccelStats computeStats(const BvhSettings& settings) const;
 

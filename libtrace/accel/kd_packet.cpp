@@ -28,7 +28,10 @@
 // queries run): the same nodes, tests and counts, without the packet's work for its idle lanes.
 // Rays that do not share an octant, have a direction component that is zero or whose
 // reciprocal overflows (their plane distances can be NaN, and the single traversal then orders
-// the children by the origin), and a tree with a hit filter are traced one by one.
+// the children by the origin), and a tree with a hit filter are traced one by one. With the
+// watertight triangle test (geometry/watertight_triangle.h) a triangle is tested against the rays
+// sheared, each with its own shear, so they must also share the axis they run most along (the
+// rays of a camera tile nearly always do); else they too are traced one by one.
 //
 // Compiled three times (accel/simd_level.h): on SSE2 lanes (core/simd.h, simd_base), on AVX2 lanes
 // in namespace simd_avx2 and on AVX-512 lanes in simd_avx512. SplitTree::intersectPacket and
@@ -39,6 +42,7 @@
 #include <cmath>
 
 #include "accel/split_tree.h"
+#include "geometry/watertight_triangle.h"
 
 // Last, in a block of its own (clang-format sorts a block): the level's region starts here.
 #include "accel/simd_level.h"
@@ -91,9 +95,12 @@ void store(const Lanes& l, Real (&values)[kPacketSize]) {
     for (int g = 0; g < kGroups; ++g) storeLanes(values + g * kLanes, l.group[g]);
 }
 
-// The rays' per-axis data, and the interval of each inside a node with the rays inside it.
+// The rays' per-axis data, and the interval of each inside a node with the rays inside it. For the
+// watertight test also each ray's shear (ShearedRay), along the axes all of them share.
 struct PacketRays {
     Lanes origin[3], direction[3], inverse[3];
+    Lanes sx, sy, sz;
+    ShearedRay axes;
 };
 
 struct Span {
@@ -111,9 +118,10 @@ struct Packet {
 
 // Loads rays[0, count), rays[i] ending at tMax[i], into `packet`; lanes past `count` repeat ray 0
 // and stay inactive. False, and `packet` unusable, if the rays are not coherent: finite origins,
-// one octant, every direction component nonzero with a finite reciprocal (see the note at the top).
-bool loadPacket(const Ray* rays, int count, const Real* tMax, const Aabb& bounds, Packet& packet) {
-    alignas(64) Real values[12][kPacketSize];  // origin, direction, inverse (xyz each), tMin, tEnd, tMax
+// one octant, every direction component nonzero with a finite reciprocal (see the note at the top),
+// and, `sheared` (for the watertight test), the same axes of their shears.
+bool loadPacket(const Ray* rays, int count, const Real* tMax, const Aabb& bounds, bool sheared, Packet& packet) {
+    alignas(64) Real values[15][kPacketSize];  // origin, direction, inverse (xyz each), tMin, tEnd, tMax, shear
     LaneBits inside = 0;
     for (int i = 0; i < kPacketSize; ++i) {
         const int r = i < count ? i : 0;
@@ -133,6 +141,20 @@ bool loadPacket(const Ray* rays, int count, const Real* tMax, const Aabb& bounds
         values[9][i] = tMin;
         values[10][i] = tEnd;
         values[11][i] = tMax[r];
+        if (sheared) {
+            const ShearedRay shear(ray);
+            if (i == 0) packet.rays.axes = shear;
+            const ShearedRay& first = packet.rays.axes;
+            if (shear.kx != first.kx || shear.ky != first.ky || shear.kz != first.kz) return false;
+            values[12][i] = shear.sx;
+            values[13][i] = shear.sy;
+            values[14][i] = shear.sz;
+        }
+    }
+    if (sheared) {
+        packet.rays.sx = load(values[12]);
+        packet.rays.sy = load(values[13]);
+        packet.rays.sz = load(values[14]);
     }
     for (int axis = 0; axis < 3; ++axis) {
         packet.rays.origin[axis] = load(values[axis]);
@@ -195,6 +217,39 @@ inline GroupHits hitTriangle(const TriangleLanes& tri, const PacketRays& rays, i
     return h;
 }
 
+// The lanes of one group of rays as watertightLaneTest takes them.
+struct GroupLanes {
+    using Type = RealLanes;
+    static RealLanes all(Real x) { return broadcast(x); }
+    static RealLanes load(const Real* p) { return loadLanes(p); }
+};
+
+// Triangle `lane` of a VertexBlock, its vertices in every lane.
+struct VertexLanes {
+    using Row = Real (VertexBlock::*)[3][kSimdWidth];  // &VertexBlock::p0, p1 or p2
+    static constexpr Row kRows[3] = {&VertexBlock::p0, &VertexBlock::p1, &VertexBlock::p2};
+    RealLanes vertex[3][3];  // p0, p1, p2, each on the three axes
+
+    VertexLanes(const VertexBlock& block, int lane) {
+        for (int k = 0; k < 3; ++k)
+            for (int axis = 0; axis < 3; ++axis) vertex[k][axis] = broadcast((block.*kRows[k])[axis][lane]);
+    }
+    RealLanes at(Row row, int axis) const { return vertex[row == kRows[0] ? 0 : row == kRows[1] ? 1 : 2][axis]; }
+};
+
+// The watertight test (geometry/watertight_triangle.h) of one triangle against group g of the
+// packet's rays: its operations and hit condition in its order, lane by lane, so each ray gets the
+// bits its single traversal gets.
+inline GroupHits hitTriangle(const VertexLanes& tri, const PacketRays& rays, int g, RealLanes limit) {
+    const int kx = rays.axes.kx, ky = rays.axes.ky, kz = rays.axes.kz;
+    const ShearedRayLanesOf<GroupLanes> ray(
+        {rays.origin[kx].group[g], rays.origin[ky].group[g], rays.origin[kz].group[g]}, rays.sx.group[g],
+        rays.sy.group[g], rays.sz.group[g], rays.axes);
+    const auto h =
+        watertightLaneTest<GroupLanes, kLanes>([&](auto vertex, int axis) { return tri.at(vertex, axis); }, ray, limit);
+    return {h.hit, h.t, h.u, h.v};
+}
+
 // Sphere `lane` of a block, in every lane.
 struct SphereLanes {
     RealLanes center[3], r2;
@@ -251,6 +306,12 @@ inline void nearestIn(const TriangleBlock& block, int lane, const PacketRays& ra
     takeNearer(block.id[lane], active, nearest,
                [&](int g, RealLanes limit) { return hitTriangle(tri, rays, g, limit); });
 }
+inline void nearestIn(const VertexBlock& block, int lane, const PacketRays& rays, const Lanes& active,
+                      PacketHits& nearest) {
+    const VertexLanes tri(block, lane);
+    takeNearer(block.id[lane], active, nearest,
+               [&](int g, RealLanes limit) { return hitTriangle(tri, rays, g, limit); });
+}
 inline void nearestIn(const SphereBlock& block, int lane, const PacketRays& rays, const Lanes& active,
                       PacketHits& nearest) {
     const SphereLanes sphere(block, lane);
@@ -263,6 +324,12 @@ inline void nearestIn(const SphereBlock& block, int lane, const PacketRays& rays
 inline void blockingIn(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& open,
                        const Lanes& tLimit, Lanes& blocked) {
     const TriangleLanes tri(block, lane);
+    for (int g = 0; g < kGroups; ++g)
+        blocked.group[g] = blocked.group[g] | (open.group[g] & hitTriangle(tri, rays, g, tLimit.group[g]).hit);
+}
+inline void blockingIn(const VertexBlock& block, int lane, const PacketRays& rays, const Lanes& open,
+                       const Lanes& tLimit, Lanes& blocked) {
+    const VertexLanes tri(block, lane);
     for (int g = 0; g < kGroups; ++g)
         blocked.group[g] = blocked.group[g] | (open.group[g] & hitTriangle(tri, rays, g, tLimit.group[g]).hit);
 }
@@ -438,12 +505,13 @@ LaneBits blockedInBlocks(const Block* blocks, std::uint32_t blockCount, std::uin
 // The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
 // tMax), found and counted as SplitTree::occluded finds and counts them ray by ray: the triangles
 // block by block, then the spheres likewise (blockedInBlocks), then the other primitives one at a
-// time, until one blocks (the packet has no hit filter).
+// time, until one blocks (the packet has no hit filter). Triangles by the test `test`.
+template <TriangleTest test>
 LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const Real* tMax,
                        const PacketRays& packet, Lanes open, LaneBits active, const Lanes& tLimit,
                        std::uint64_t& tests) {
-    LaneBits blocked =
-        blockedInBlocks(leaf.blocks(), leaf.blockCount(), leaf.triangles, packet, open, active, tLimit, tests);
+    LaneBits blocked = blockedInBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), leaf.triangles, packet, open,
+                                       active, tLimit, tests);
     blocked |= blockedInBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), leaf.spheres, packet, open, active, tLimit,
                                tests);
     for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
@@ -471,7 +539,7 @@ void closeRays(LaneBits bits, Lanes& tLimit) {
 
 namespace rt {
 
-template <SimdLevel level>
+template <SimdLevel level, TriangleTest test>
 void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                             RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
@@ -479,7 +547,7 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
     Real ends[kPacketSize];
     std::fill(std::begin(ends), std::end(ends), tMax);
     Packet packet;
-    if (!tracesTogether(count) || !loadPacket(rays, count, ends, bounds_, packet)) {
+    if (!tracesTogether(count) || !loadPacket(rays, count, ends, bounds_, test == TriangleTest::Watertight, packet)) {
         Accelerator::intersectPacket(rays, count, tMax, hits, found, counters);
         return;
     }
@@ -494,14 +562,15 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
             tests += std::uint64_t(std::popcount(active)) * (leaf.triangles + leaf.spheres + leaf.others);
             // As SplitTree::intersect: the triangles in leaf order, the spheres, then the others.
             for (std::uint32_t k = 0; k < leaf.triangles; ++k)
-                nearestIn(leaf.blocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
+                nearestIn(triangleBlocks<test>(leaf)[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf,
+                          nearest);
             for (std::uint32_t k = 0; k < leaf.spheres; ++k)
                 nearestIn(leaf.sphereBlocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
             if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
             updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {
-                searchNearest<level>(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
+                searchNearest<level, test>(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
             });
         });
     counters.intersectionTests += tests;
@@ -515,13 +584,13 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
     }
 }
 
-template <SimdLevel level>
+template <SimdLevel level, TriangleTest test>
 void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
                                   RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
     static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
     Packet packet;
-    if (!tracesTogether(count) || !loadPacket(rays, count, tMax, bounds_, packet)) {
+    if (!tracesTogether(count) || !loadPacket(rays, count, tMax, bounds_, test == TriangleTest::Watertight, packet)) {
         Accelerator::occludedPacket(rays, count, tMax, blocked, counters);
         return;
     }
@@ -533,13 +602,13 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
         nodes_.data(), packet, tLimit,
         [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
             const LaneBits now =
-                blockedInLeaf(prims, leafAt(unit), rays, tMax, packet.rays, inLeaf, active, tLimit, tests);
+                blockedInLeaf<test>(prims, leafAt(unit), rays, tMax, packet.rays, inLeaf, active, tLimit, tests);
             found |= now;
             if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
-            if (!searchBlocker<level>(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray],
-                                      counters))
+            if (!searchBlocker<level, test>(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray],
+                                            counters))
                 return;
             found |= 1u << ray;
             closeRays(1u << ray, tLimit);
@@ -548,10 +617,14 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
     for (int i = 0; i < count; ++i) blocked[i] = (found >> i) & 1u;
 }
 
-template void SplitTree::tracePacket<RT_LEVEL>(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
-                                               RayCounters& counters) const;
-template void SplitTree::traceShadowPacket<RT_LEVEL>(const Ray* rays, int count, const Real* tMax, bool* blocked,
-                                                     RayCounters& counters) const;
+template void SplitTree::tracePacket<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray*, int, Real, Hit*, bool*,
+                                                                             RayCounters&) const;
+template void SplitTree::tracePacket<RT_LEVEL, TriangleTest::Watertight>(const Ray*, int, Real, Hit*, bool*,
+                                                                         RayCounters&) const;
+template void SplitTree::traceShadowPacket<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray*, int, const Real*, bool*,
+                                                                                   RayCounters&) const;
+template void SplitTree::traceShadowPacket<RT_LEVEL, TriangleTest::Watertight>(const Ray*, int, const Real*, bool*,
+                                                                               RayCounters&) const;
 
 }  // namespace rt
 

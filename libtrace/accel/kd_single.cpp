@@ -103,10 +103,10 @@ void SplitTree::traverse(const Ray& ray, const Vec3& invDir, std::uint32_t index
 }
 
 // Nearest hit: the leaves' loop of accel/leaf_tests.h.
-template <SimdLevel level>
+template <SimdLevel level, TriangleTest test>
 void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Hit& nearest, RayCounters& counters) const {
-    const RT_LEVEL_LANES::BlockTests testBlocks(ray);
+    const RT_LEVEL_LANES::BlockTests<test> testBlocks(ray);
     const HitFilter* filter = filter_;
     std::uint64_t tests = 0;  // in a register; added to the caller's counters once
     traverse(
@@ -119,10 +119,10 @@ void SplitTree::searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t 
 }
 
 // Any hit before `rayTMax`, the whole shadow ray's end, in the subtree at `node`.
-template <SimdLevel level>
+template <SimdLevel level, TriangleTest test>
 bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax,
                               Real rayTMax, RayCounters& counters) const {
-    const RT_LEVEL_LANES::BlockTests testBlocks(ray);
+    const RT_LEVEL_LANES::BlockTests<test> testBlocks(ray);
     std::uint64_t tests = 0;
     bool found = false;
     const HitFilter* filter = filter_;
@@ -135,10 +135,14 @@ bool SplitTree::searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t 
     return found;
 }
 
-template void SplitTree::searchNearest<RT_LEVEL>(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin,
-                                                 Real tMax, Hit& nearest, RayCounters& counters) const;
-template bool SplitTree::searchBlocker<RT_LEVEL>(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin,
-                                                 Real tMax, Real rayTMax, RayCounters& counters) const;
+template void SplitTree::searchNearest<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray&, const Vec3&, std::uint32_t,
+                                                                               Real, Real, Hit&, RayCounters&) const;
+template void SplitTree::searchNearest<RT_LEVEL, TriangleTest::Watertight>(const Ray&, const Vec3&, std::uint32_t, Real,
+                                                                           Real, Hit&, RayCounters&) const;
+template bool SplitTree::searchBlocker<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray&, const Vec3&, std::uint32_t,
+                                                                               Real, Real, Real, RayCounters&) const;
+template bool SplitTree::searchBlocker<RT_LEVEL, TriangleTest::Watertight>(const Ray&, const Vec3&, std::uint32_t, Real,
+                                                                           Real, Real, RayCounters&) const;
 
 }  // namespace rt
 

@@ -371,15 +371,16 @@ KdNode makeRoot(const Primitives& prims) {
 
 }  // namespace
 
-std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& userSettings) {
+std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& userSettings,
+                                         TriangleTest triangles) {
     const Stopwatch stopwatch;
     const KdSettings settings = withSceneCosts(prims, userSettings);
     KdNode root = makeRoot(prims);
     const Aabb bounds = root.voxel;
     FlatTree flat = buildFlatTree(std::move(root), KdSplitter(prims, settings));
-    auto tree =
-        std::make_unique<SplitTree>(prims, bounds, std::move(flat),
-                                    std::string("kd-") + kdSplitMethodName(settings.splitMethod), sahCosts(settings));
+    auto tree = std::make_unique<SplitTree>(prims, bounds, std::move(flat),
+                                            std::string("kd-") + kdSplitMethodName(settings.splitMethod),
+                                            sahCosts(settings), triangles);
     tree->setBuildTime(stopwatch.seconds(), buildThreads(prims.size()));
     return tree;
 }

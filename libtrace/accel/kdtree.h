@@ -19,6 +19,8 @@ int kdMaxDepth(const KdSettings& settings, std::size_t primitives);
 
 // The primitives must outlive the tree. The build runs on all OpenMP threads; the tree
 // does not depend on their number.
-std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& settings);
+// Its leaves' triangles are tested with `triangles` (accel/settings.h).
+std::unique_ptr<Accelerator> buildKdTree(const Primitives& prims, const KdSettings& settings,
+                                         TriangleTest triangles = TriangleTest::MollerTrumbore);
 
 }  // namespace rt

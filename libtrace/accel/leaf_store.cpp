@@ -49,10 +49,14 @@ void LeafStore::write(const Primitives& prims, const std::uint32_t* ids, const L
     std::byte* const sphereBlocks = triangleBlocks + sizes.blockCount() * sizeof(TriangleBlock);
     std::byte* others = sphereBlocks + sizes.sphereBlockCount() * sizeof(SphereBlock);
     BlockWriter<TriangleBlock, Triangle> triangles(triangleBlocks, sizes.triangles);
+    BlockWriter<VertexBlock, Triangle> watertightTriangles(triangleBlocks, sizes.triangles);
     BlockWriter<SphereBlock, Sphere> spheres(sphereBlocks, sizes.spheres);
     for (std::uint32_t i = 0; i < sizes.count(); ++i) {
         if (const std::optional<std::uint32_t> triangle = prims.indexIn<Triangle>(ids[i])) {
-            triangles.add(prims.all<Triangle>()[*triangle], ids[i]);
+            if (test_ == TriangleTest::Watertight)
+                watertightTriangles.add(prims.all<Triangle>()[*triangle], ids[i]);
+            else
+                triangles.add(prims.all<Triangle>()[*triangle], ids[i]);
         } else if (const std::optional<std::uint32_t> sphere = prims.indexIn<Sphere>(ids[i])) {
             spheres.add(prims.all<Sphere>()[*sphere], ids[i]);
         } else {

@@ -9,10 +9,12 @@
 #include <cstdint>
 #include <new>
 
+#include "accel/settings.h"
 #include "core/default_init.h"
 #include "geometry/primitives.h"
 #include "geometry/sphere_block.h"
 #include "geometry/triangle_block.h"
+#include "geometry/watertight_triangle.h"
 
 namespace rt {
 
@@ -34,6 +36,8 @@ struct alignas(16) LeafPrimitives {
                (others + 3) / 4;
     }
     const TriangleBlock* blocks() const { return std::launder(reinterpret_cast<const TriangleBlock*>(this + 1)); }
+    // The triangle blocks of a store of TriangleTest::Watertight, in the same bytes as blocks().
+    const VertexBlock* vertexBlocks() const { return std::launder(reinterpret_cast<const VertexBlock*>(this + 1)); }
     const SphereBlock* sphereBlocks() const {
         return std::launder(reinterpret_cast<const SphereBlock*>(blocks() + blockCount()));
     }
@@ -41,15 +45,28 @@ struct alignas(16) LeafPrimitives {
         return std::launder(reinterpret_cast<const std::uint32_t*>(sphereBlocks() + sphereBlockCount()));
     }
 };
+// A leaf's triangle blocks as the triangle test `test` reads them.
+template <TriangleTest test>
+auto triangleBlocks(const LeafPrimitives& leaf) {
+    if constexpr (test == TriangleTest::Watertight)
+        return leaf.vertexBlocks();
+    else
+        return leaf.blocks();
+}
+
 static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16 &&
               sizeof(SphereBlock) % 16 == 0 && alignof(SphereBlock) <= 16);
 // What a traversal fetches ahead of a leaf: its record and first block.
 inline constexpr std::size_t kLeafPrefetchBytes = sizeof(LeafPrimitives) + sizeof(TriangleBlock);
 
 // The leaves of one structure: sized first (units), then written leaf by leaf, possibly in
-// parallel at offsets the caller summed (write).
+// parallel at offsets the caller summed (write). Its triangles are blocks for `test`:
+// TriangleBlocks for Moller-Trumbore, VertexBlocks for the watertight test.
 class LeafStore {
 public:
+    explicit LeafStore(TriangleTest test) : test_(test) {}
+    TriangleTest triangleTest() const { return test_; }
+
     // The record of the leaf of the `count` primitives `ids`: how many are triangles and spheres.
     static LeafPrimitives sizesOf(const Primitives& prims, const std::uint32_t* ids, std::uint32_t count);
 
@@ -72,6 +89,7 @@ private:
     struct alignas(16) Unit {
         std::byte bytes[16];
     };
+    TriangleTest test_;
     UninitializedVector<Unit> units_;
 };
 

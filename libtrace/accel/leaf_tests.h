@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <type_traits>
 
 #include "accel/leaf_store.h"
 #include "geometry/hit_filter.h"
@@ -26,6 +27,7 @@ namespace rt::RT_LEVEL_NAMESPACE {
 struct PairLanes {
     using Type = simd_avx2::RealLanes;
     static Type all(Real x) { return simd_avx2::broadcast(x); }
+    static Type load(const Real* p) { return simd_avx2::loadLanes(p); }
 };
 static_assert(2 * kSimdWidth == simd_avx2::kLanes);
 
@@ -36,6 +38,15 @@ static_assert(2 * kSimdWidth == simd_avx2::kLanes);
     return mollerTrumboreLanes<PairLanes, 2 * kSimdWidth>(
         [&](auto component, int axis) {
             return simd_avx2::loadHalves((first[0].*component)[axis], (first[1].*component)[axis]);
+        },
+        ray, tMax);
+}
+[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const VertexBlock* first,
+                                                                          const ShearedRayLanesOf<PairLanes>& ray,
+                                                                          Real tMax) {
+    return watertightLanes<PairLanes, 2 * kSimdWidth>(
+        [&](auto vertex, int axis) {
+            return simd_avx2::loadHalves((first[0].*vertex)[axis], (first[1].*vertex)[axis]);
         },
         ray, tMax);
 }
@@ -51,16 +62,17 @@ static_assert(2 * kSimdWidth == simd_avx2::kLanes);
 #endif
 
 // A leaf's blocks of one kind (triangles or spheres) tested against one ray, in order: two at a
-// time where the level has pairs, the last alone when their number is odd.
+// time where the level has pairs, the last alone when their number is odd. With `test`
+// Watertight the triangles are VertexBlocks, tested on the ray sheared (geometry/watertight_triangle.h).
+template <TriangleTest test>
 class BlockTests {
 public:
     explicit BlockTests(const Ray& ray)
-        : one_(ray)
+        : one_(ray),
 #if RT_BLOCK_PAIRS
-          ,
-          two_(ray)
+          two_(ray),
 #endif
-    {
+          sheared_(ray) {
     }
 
     // visit(blocks + b, b, hits, count) for each group of `count` of the `blockCount` blocks from
@@ -72,18 +84,57 @@ public:
         std::uint32_t b = 0;
 #if RT_BLOCK_PAIRS
         for (; b + 2 <= blockCount; b += 2)
-            if (visit(blocks + b, b, intersectBlockPair(blocks + b, two_, tMax), 2)) return true;
+            if (visit(blocks + b, b, testTwo(blocks + b, tMax), 2)) return true;
 #endif
         for (; b < blockCount; ++b)
-            if (visit(blocks + b, b, intersectBlock(blocks[b], one_, tMax), 1)) return true;
+            if (visit(blocks + b, b, testOne(blocks[b], tMax), 1)) return true;
         return false;
     }
 
 private:
+    // A block's test on the ray as it takes it: sheared for VertexBlocks, else as it is.
+    template <class Block>
+    [[gnu::always_inline]] BlockHits testOne(const Block& block, Real tMax) const {
+        return intersectBlock(block, one_, tMax);
+    }
+    [[gnu::always_inline]] BlockHits testOne(const VertexBlock& block, Real tMax) const {
+        return intersectBlock(block, sheared_.one, tMax);
+    }
+#if RT_BLOCK_PAIRS
+    template <class Block>
+    [[gnu::always_inline]] LaneHits<2 * kSimdWidth> testTwo(const Block* first, Real tMax) const {
+        return intersectBlockPair(first, two_, tMax);
+    }
+    [[gnu::always_inline]] LaneHits<2 * kSimdWidth> testTwo(const VertexBlock* first, Real tMax) const {
+        return intersectBlockPair(first, sheared_.two, tMax);
+    }
+#endif
+
+    // The sheared ray on the lanes of one block and of a pair, for the watertight test only.
+    struct Sheared {
+        explicit Sheared(const Ray& ray) : Sheared(ShearedRay(ray)) {}
+        explicit Sheared(const ShearedRay& ray)
+            : one(ray)
+#if RT_BLOCK_PAIRS
+              ,
+              two(ray)
+#endif
+        {
+        }
+        ShearedRayLanes one;
+#if RT_BLOCK_PAIRS
+        ShearedRayLanesOf<PairLanes> two;
+#endif
+    };
+    struct NotSheared {
+        explicit NotSheared(const Ray&) {}
+    };
+
     RayLanes one_;
 #if RT_BLOCK_PAIRS
     RayLanesOf<PairLanes> two_;
 #endif
+    [[no_unique_address]] std::conditional_t<test == TriangleTest::Watertight, Sheared, NotSheared> sheared_;
 };
 
 // Lane `lane` of the hits of the blocks from `first` on as a Hit.
@@ -97,7 +148,8 @@ Hit laneHit(const Block* first, const LaneHits<N>& hits, int lane) {
 // and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
 // A pair of blocks is the same: its second block is tested with the nearest t from before the
 // first's hits, and its hits that the first's then beat are dropped here. Adds its tests to `tests`.
-[[gnu::always_inline]] inline void nearestInLeaf(const BlockTests& testBlocks, const PrimitiveView& prims,
+template <TriangleTest test>
+[[gnu::always_inline]] inline void nearestInLeaf(const BlockTests<test>& testBlocks, const PrimitiveView& prims,
                                                  const LeafPrimitives& leaf, const Ray& ray, const HitFilter* filter,
                                                  Hit& nearest, std::uint64_t& tests) {
     tests += leaf.count();
@@ -111,7 +163,7 @@ Hit laneHit(const Block* first, const LaneHits<N>& hits, int lane) {
         }
         return false;
     };
-    testBlocks(leaf.blocks(), leaf.blockCount(), nearest.t, takeNearest);
+    testBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), nearest.t, takeNearest);
     testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), nearest.t, takeNearest);
     const std::uint32_t* otherIds = leaf.otherIds();
     for (std::uint32_t i = 0; i < leaf.others; ++i) {
@@ -125,7 +177,8 @@ Hit laneHit(const Block* first, const LaneHits<N>& hits, int lane) {
 // Whether anything in `leaf` blocks the ray before `rayTMax`. The triangles are counted in `tests`
 // block by block up to the first that blocks; a pair of blocks is counted as its two blocks would
 // be, the second only if the first does not block.
-[[gnu::always_inline]] inline bool blockerInLeaf(const BlockTests& testBlocks, const PrimitiveView& prims,
+template <TriangleTest test>
+[[gnu::always_inline]] inline bool blockerInLeaf(const BlockTests<test>& testBlocks, const PrimitiveView& prims,
                                                  const LeafPrimitives& leaf, const Ray& ray, Real rayTMax,
                                                  const HitFilter* filter, std::uint64_t& tests) {
     // Block by block within a group of the `total` primitives of a kind: its tests counted,
@@ -143,7 +196,7 @@ Hit laneHit(const Block* first, const LaneHits<N>& hits, int lane) {
             return false;
         };
     };
-    if (testBlocks(leaf.blocks(), leaf.blockCount(), rayTMax, blockedIn(leaf.triangles)) ||
+    if (testBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), rayTMax, blockedIn(leaf.triangles)) ||
         testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), rayTMax, blockedIn(leaf.spheres)))
         return true;
     const std::uint32_t* otherIds = leaf.otherIds();

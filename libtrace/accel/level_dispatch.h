@@ -5,6 +5,7 @@
 
 #include <type_traits>
 
+#include "accel/settings.h"
 #include "core/simd.h"
 
 namespace rt {
@@ -20,6 +21,17 @@ decltype(auto) onChosenLevel(const Call& call) {
     if (simdLevel() == SimdLevel::avx2) return call(std::integral_constant<SimdLevel, SimdLevel::avx2>{});
 #endif
     return call(std::integral_constant<SimdLevel, SimdLevel::sse2>{});
+}
+
+// call(level, test) with the chosen level and the triangle test `test` as compile-time constants:
+// the copy of a single-ray search for both.
+template <typename Call>
+decltype(auto) onChosenCopy(TriangleTest test, const Call& call) {
+    return onChosenLevel([&](auto level) -> decltype(auto) {
+        if (test == TriangleTest::Watertight)
+            return call(level, std::integral_constant<TriangleTest, TriangleTest::Watertight>{});
+        return call(level, std::integral_constant<TriangleTest, TriangleTest::MollerTrumbore>{});
+    });
 }
 
 }  // namespace rt

@@ -3,12 +3,15 @@
 #pragma once
 
 #include "accel/accelerator.h"
+#include "accel/settings.h"
 
 namespace rt {
 
 class NaiveAccelerator final : public Accelerator {
 public:
-    explicit NaiveAccelerator(const Primitives& prims) : prims_(prims), view_(prims.view()) {}
+    // Its triangles are tested with `triangles`.
+    explicit NaiveAccelerator(const Primitives& prims, TriangleTest triangles = TriangleTest::MollerTrumbore)
+        : prims_(prims), view_(prims.view()), triangles_(triangles) {}
 
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
@@ -18,6 +21,7 @@ public:
 private:
     const Primitives& prims_;
     PrimitiveView view_;  // of prims_, which must not change while the list is used
+    TriangleTest triangles_;
 };
 
 }  // namespace rt

@@ -69,8 +69,15 @@ struct BvhSettings {
     double intersectionCost = 1.0;  // C_I: testing one block of a leaf
 };
 
+// The ray-triangle test of every structure's queries (docs/trees.md, "Watertight triangles").
+enum class TriangleTest {
+    MollerTrumbore,  // thesis [5]: the fastest; a ray through a shared edge or vertex may slip between its triangles
+    Watertight,      // Woop, Benthin and Wald 2013 (geometry/watertight_triangle.h): no ray slips through a closed mesh
+};
+
 struct AccelSettings {
     AccelKind kind = AccelKind::Kd;
+    TriangleTest triangles = TriangleTest::MollerTrumbore;
     BspSettings bsp;
     KdSettings kd;
     BvhSettings bvh;

@@ -13,8 +13,9 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
     const Vec3 invDir = reciprocal(ray.direction);
     Real tMin = 0, tEnd = tMax;
     if (enters(ray, invDir, tMin, tEnd))
-        onChosenLevel(
-            [&](auto level) { searchNearest<decltype(level)::value>(ray, invDir, 0, tMin, tEnd, nearest, counters); });
+        onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+            searchNearest<decltype(level)::value, decltype(test)::value>(ray, invDir, 0, tMin, tEnd, nearest, counters);
+        });
     // A hit only ever lowers nearest.t: no flag to keep in the leaf loop.
     if (!(nearest.t < tMax)) return false;
     hit = nearest;
@@ -24,19 +25,24 @@ bool SplitTree::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& coun
 bool SplitTree::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     const Vec3 invDir = reciprocal(ray.direction);
     Real tMin = 0, tEnd = tMax;
-    return enters(ray, invDir, tMin, tEnd) && onChosenLevel([&](auto level) {
-               return searchBlocker<decltype(level)::value>(ray, invDir, 0, tMin, tEnd, tMax, counters);
+    return enters(ray, invDir, tMin, tEnd) && onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+               return searchBlocker<decltype(level)::value, decltype(test)::value>(ray, invDir, 0, tMin, tEnd, tMax,
+                                                                                   counters);
            });
 }
 
 void SplitTree::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
                                 RayCounters& counters) const {
-    onChosenLevel([&](auto level) { tracePacket<decltype(level)::value>(rays, count, tMax, hits, found, counters); });
+    onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+        tracePacket<decltype(level)::value, decltype(test)::value>(rays, count, tMax, hits, found, counters);
+    });
 }
 
 void SplitTree::occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
                                RayCounters& counters) const {
-    onChosenLevel([&](auto level) { traceShadowPacket<decltype(level)::value>(rays, count, tMax, blocked, counters); });
+    onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+        traceShadowPacket<decltype(level)::value, decltype(test)::value>(rays, count, tMax, blocked, counters);
+    });
 }
 
 }  // namespace rt

@@ -22,8 +22,9 @@ void FlatTree::append(const FlatTree& subtree) {
     primitiveIndices.insert(primitiveIndices.end(), subtree.primitiveIndices.begin(), subtree.primitiveIndices.end());
 }
 
-SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs)
-    : prims_(prims), view_(prims.view()), bounds_(bounds), nodes_(std::move(tree.nodes)) {
+SplitTree::SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs,
+                     TriangleTest triangles)
+    : prims_(prims), view_(prims.view()), bounds_(bounds), nodes_(std::move(tree.nodes)), leaves_(triangles) {
     layOutLeaves(tree);
     stats_ = computeStats(std::move(name), costs);
 }

@@ -73,8 +73,10 @@ inline SahCosts sahCosts(const KdSettings& kd) { return {kd.traversalCost, kd.in
 
 class SplitTree final : public Accelerator {
 public:
-    // `bounds` is the root voxel; every plane in `tree` must lie inside it.
-    SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs);
+    // `bounds` is the root voxel; every plane in `tree` must lie inside it. The leaves' triangles
+    // are tested with `triangles`.
+    SplitTree(const Primitives& prims, const Aabb& bounds, FlatTree tree, std::string name, SahCosts costs,
+              TriangleTest triangles = TriangleTest::MollerTrumbore);
 
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
@@ -97,10 +99,11 @@ private:
     LeafPrimitives leafSizes(const FlatTree& tree, const SplitNode& node) const {
         return LeafStore::sizesOf(prims_, &tree.primitiveIndices[node.primitiveOffset()], node.primitiveCount());
     }
-    // The packet traversals on one level's lanes: kd_packet.cpp, compiled once per level.
-    template <SimdLevel level>
+    // The packet traversals on one level's lanes with one triangle test: kd_packet.cpp, compiled
+    // once per level.
+    template <SimdLevel level, TriangleTest test>
     void tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found, RayCounters& counters) const;
-    template <SimdLevel level>
+    template <SimdLevel level, TriangleTest test>
     void traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const;
     // Whether `count` rays may walk the tree as a packet (kd_packet.cpp checks that they are coherent).
     bool tracesTogether(int count) const { return !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty(); }
@@ -112,11 +115,11 @@ private:
     // The single-ray queries in the subtree at `node`, for the part [tMin, tMax] of the ray inside
     // it: from the root for intersect() and occluded(), from deeper for a ray a packet hands on alone.
     // invDir: reciprocal(ray.direction), found once per ray by the caller. On one level's lanes:
-    // kd_single.cpp, compiled once per level.
-    template <SimdLevel level>
+    // kd_single.cpp, compiled once per level and triangle test.
+    template <SimdLevel level, TriangleTest test>
     void searchNearest(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax, Hit& nearest,
                        RayCounters& counters) const;
-    template <SimdLevel level>
+    template <SimdLevel level, TriangleTest test>
     bool searchBlocker(const Ray& ray, const Vec3& invDir, std::uint32_t node, Real tMin, Real tMax, Real rayTMax,
                        RayCounters& counters) const;
     template <typename LeafVisitor>

@@ -19,17 +19,18 @@ public:
     virtual bool accepts(const Ray& ray, const Hit& hit) const = 0;
 };
 
-// The leaf tests with a filter. The nearest hit: primitive `id`'s hit nearer than nearest.t
+// The leaf tests with a filter, on a PrimitiveView (or a view with its intersect, as the naive
+// list's with watertight triangles). The nearest hit: primitive `id`'s hit nearer than nearest.t
 // replaces `nearest` only if the filter accepts it.
-inline void intersectFiltered(const PrimitiveView& prims, std::uint32_t id, const Ray& ray, const HitFilter& filter,
-                              Hit& nearest) {
+template <class View>
+void intersectFiltered(const View& prims, std::uint32_t id, const Ray& ray, const HitFilter& filter, Hit& nearest) {
     Hit candidate;
     if (prims.intersect(id, ray, nearest.t, candidate) && filter.accepts(ray, candidate)) nearest = candidate;
 }
 // Any hit (shadow rays): the primitive's nearest hit before tMax, if the filter accepts it. A
 // triangle is hit once; of a closed primitive's two hits the nearer decides.
-inline bool occludesFiltered(const PrimitiveView& prims, std::uint32_t id, const Ray& ray, Real tMax,
-                             const HitFilter& filter) {
+template <class View>
+bool occludesFiltered(const View& prims, std::uint32_t id, const Ray& ray, Real tMax, const HitFilter& filter) {
     Hit candidate;
     return prims.intersect(id, ray, tMax, candidate) && filter.accepts(ray, candidate);
 }

@@ -35,11 +35,13 @@ struct alignas(16) TriangleBlock {
 };
 
 // A set of lanes the block test runs on: Type, a register of Real lanes with core/simd.h's
-// operations (found by argument-dependent lookup), and all(x), x in every lane. BaseLanes is
+// operations (found by argument-dependent lookup), all(x), x in every lane, and load(p), the lanes
+// from p (aligned to 64 bytes). BaseLanes is
 // simd_base's register, one block's width; accel/kd_single.cpp adds a register two blocks wide.
 struct BaseLanes {
     using Type = RealLanes;
     static RealLanes all(Real x) { return broadcast(x); }
+    static RealLanes load(const Real* p) { return loadLanes(p); }
 };
 
 // The ray, once per ray in every lane.

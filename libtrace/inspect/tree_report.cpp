@@ -88,6 +88,7 @@ void writeMembers(JsonWriter& json, const std::vector<Statistic<T>>& statistics,
 
 void writeSettingsJson(JsonWriter& json, const AccelSettings& settings, std::uint32_t primitives) {
     json.beginObject();
+    json.member("watertight", settings.triangles == TriangleTest::Watertight);
     if (settings.kind == AccelKind::Bsp) {
         json.member("maxDepth", settings.bsp.maxDepth);
         json.member("minPrimitives", settings.bsp.minPrimitives);

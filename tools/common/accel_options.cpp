@@ -11,6 +11,7 @@ constexpr const char* kGroup = "Tree options";
 }  // namespace
 
 void addAccelOptions(CLI::App& app, AccelSettings& settings) {
+    addTriangleTestOption(app, settings);
     BspSettings& bsp = settings.bsp;
     app.add_option("--bsp-max-depth", bsp.maxDepth, "BSP: maximum depth")
         ->check(numberIn(1, kMaxTreeDepth))
@@ -23,6 +24,13 @@ void addAccelOptions(CLI::App& app, AccelSettings& settings) {
     app.add_flag("--bsp-round-robin", bsp.roundRobin, "BSP: split X, Y, Z in turn instead of the longest axis")
         ->group(kGroup);
     addKdOptions(app, settings.kd);
+}
+
+void addTriangleTestOption(CLI::App& app, AccelSettings& settings) {
+    app.add_flag_callback(
+           "--watertight", [&settings] { settings.triangles = TriangleTest::Watertight; },
+           "Test triangles watertight (Woop, Benthin and Wald 2013): no ray slips through a shared edge or vertex")
+        ->group(kGroup);
 }
 
 void addKdOptions(CLI::App& app, KdSettings& kd) {

@@ -9,8 +9,11 @@
 
 namespace rt::tool {
 
-// Adds the --bsp-* and --kd-* options; they write into `settings` when the command line is parsed.
+// Adds --watertight and the --bsp-* and --kd-* options; they write into `settings` when the command
+// line is parsed.
 void addAccelOptions(CLI::App& app, AccelSettings& settings);
+// --watertight alone (AccelSettings::triangles), for a program with its own tree options (bench/vs_embree).
+void addTriangleTestOption(CLI::App& app, AccelSettings& settings);
 // The --kd-* options alone, for a program that builds only KD trees (bench/vs_embree).
 void addKdOptions(CLI::App& app, KdSettings& kd);
 
