@@ -1,56 +1,80 @@
 // The leaves of the trees and of the BVH as the traversals read them (issue 14, issue 37): each
-// non-empty leaf one LeafPrimitives record followed by its triangles and spheres in SIMD blocks
+// non-empty leaf one LeafPrimitives record followed by its primitives of each kind with a block
+// (geometry/leaf_block.h: triangles, spheres, ...) in SIMD blocks, kind after kind in list order,
 // and the ids of its other primitives, all leaves in one array of 16-byte units. The KD and BSP
 // trees (accel/split_tree.h) and the BVH (accel/bvh_tree.h) lay their leaves out here alike, and
-// test them with the same loops (accel/leaf_tests.h).
+// test them with the same loops (accel/leaf_tests.h). Neither names a kind: a new kind with a
+// block is laid out and tested in blocks, one without is tested by id.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <new>
+#include <tuple>
 
 #include "core/default_init.h"
 #include "geometry/primitives.h"
-#include "geometry/sphere_block.h"
-#include "geometry/triangle_block.h"
 
 namespace rt {
 
-// A non-empty leaf as the traversal reads it, in one piece of memory: this 16-byte record, then its
-// triangles, copied in blocks of kSimdWidth (two with Real = double, four with float;
-// geometry/triangle_block.h) so that they are read in sequence and tested together, then its
-// spheres likewise (geometry/sphere_block.h), then the ids of its other primitives (padded to 16
-// bytes), tested one by one through the PrimitiveView. The record and the first block lie side by
-// side, so the traversal fetches them together: the block's address does not wait for the record.
-struct alignas(16) LeafPrimitives {
-    std::uint32_t triangles = 0, spheres = 0, others = 0;
+// The block type of the I-th kind with a block (geometry/primitive_kinds.h, BlockKinds).
+template <std::size_t I>
+using BlockOfKind = LeafBlock<std::tuple_element_t<I, BlockKinds>>;
 
-    std::uint32_t count() const { return triangles + spheres + others; }
-    std::uint32_t blockCount() const { return (triangles + kSimdWidth - 1) / kSimdWidth; }
-    std::uint32_t sphereBlockCount() const { return (spheres + kSimdWidth - 1) / kSimdWidth; }
-    // The 16-byte units the leaf takes: this record, its blocks and its other ids, padded.
-    std::size_t units() const {
-        return 1 + (blockCount() * sizeof(TriangleBlock) + sphereBlockCount() * sizeof(SphereBlock)) / 16 +
-               (others + 3) / 4;
+// A non-empty leaf as the traversal reads it, in one piece of memory: this 16-byte record, then the
+// primitives of each kind with a block, copied kSimdWidth to a block (two with Real = double, four
+// with float) so that they are read in sequence and tested together, then the ids of its other
+// primitives (padded to 16 bytes), tested one by one through the PrimitiveView. The record and the
+// first block lie side by side, so the traversal fetches them together: the block's address does
+// not wait for the record.
+struct alignas(16) LeafPrimitives {
+    std::uint32_t blocked[kBlockKindCount] = {};  // of each kind with a block, in BlockKinds order
+    std::uint32_t others = 0;
+
+    std::uint32_t count() const {
+        std::uint32_t n = others;
+        for (const std::uint32_t k : blocked) n += k;
+        return n;
     }
-    const TriangleBlock* blocks() const { return std::launder(reinterpret_cast<const TriangleBlock*>(this + 1)); }
-    const SphereBlock* sphereBlocks() const {
-        return std::launder(reinterpret_cast<const SphereBlock*>(blocks() + blockCount()));
+    // The blocks of the I-th kind with a block, and how many.
+    template <std::size_t I>
+    std::uint32_t blockCount() const {
+        return (blocked[I] + kSimdWidth - 1) / kSimdWidth;
+    }
+    template <std::size_t I>
+    const BlockOfKind<I>* blocks() const {
+        return std::launder(reinterpret_cast<const BlockOfKind<I>*>(afterRecord() + blockBytesBefore<I>()));
     }
     const std::uint32_t* otherIds() const {
-        return std::launder(reinterpret_cast<const std::uint32_t*>(sphereBlocks() + sphereBlockCount()));
+        return std::launder(
+            reinterpret_cast<const std::uint32_t*>(afterRecord() + blockBytesBefore<kBlockKindCount>()));
     }
+    // The 16-byte units the leaf takes: this record, its blocks and its other ids, padded.
+    std::size_t units() const { return 1 + blockBytesBefore<kBlockKindCount>() / 16 + (others + 3) / 4; }
+    // The bytes of the blocks of the kinds before the I-th: where its blocks start after the record.
+    template <std::size_t I>
+    std::size_t blockBytesBefore() const {
+        if constexpr (I == 0)
+            return 0;
+        else
+            return blockBytesBefore<I - 1>() + blockCount<I - 1>() * sizeof(BlockOfKind<I - 1>);
+    }
+
+private:
+    const std::byte* afterRecord() const { return reinterpret_cast<const std::byte*>(this + 1); }
 };
-static_assert(sizeof(LeafPrimitives) == 16 && sizeof(TriangleBlock) % 16 == 0 && alignof(TriangleBlock) <= 16 &&
-              sizeof(SphereBlock) % 16 == 0 && alignof(SphereBlock) <= 16);
+static_assert(sizeof(LeafPrimitives) == 16, "a leaf's record counts at most three kinds with blocks");
+static_assert([]<std::size_t... I>(std::index_sequence<I...>) {
+    return ((sizeof(BlockOfKind<I>) % 16 == 0 && alignof(BlockOfKind<I>) <= 16) && ...);
+}(std::make_index_sequence<kBlockKindCount>{}));
 // What a traversal fetches ahead of a leaf: its record and first block.
-inline constexpr std::size_t kLeafPrefetchBytes = sizeof(LeafPrimitives) + sizeof(TriangleBlock);
+inline constexpr std::size_t kLeafPrefetchBytes = sizeof(LeafPrimitives) + sizeof(BlockOfKind<0>);
 
 // The leaves of one structure: sized first (units), then written leaf by leaf, possibly in
 // parallel at offsets the caller summed (write).
 class LeafStore {
 public:
-    // The record of the leaf of the `count` primitives `ids`: how many are triangles and spheres.
+    // The record of the leaf of the `count` primitives `ids`: how many are of each kind with a block.
     static LeafPrimitives sizesOf(const Primitives& prims, const std::uint32_t* ids, std::uint32_t count);
 
     void resize(std::size_t units) { units_.resize(units); }
