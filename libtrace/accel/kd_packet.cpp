@@ -11,16 +11,16 @@
 // - Rays with one direction sign per axis take both children in the same order (the near one
 //   is the one the ray's origin lies in, so the one its direction sign names), so each ray sees
 //   its leaves in the order the single traversal sees them.
-// - In a leaf each triangle is tested against all rays at once (a lane is a ray), with the
-//   operations of the single traversal's block test (geometry/triangle_block.h) in its order,
-//   triangles in leaf order, then the other primitives ray by ray. The tie rule is therefore the
+// - In a leaf each primitive of a kind with blocks is tested against all rays at once (a lane is a
+//   ray) with its block's test (geometry/leaf_block.h), the single traversal's, in leaf order, then
+//   the other primitives ray by ray. The tie rule is therefore the
 //   single traversal's: a hit replaces the nearest only when strictly nearer, so of equally near
 //   hits the first found wins, in the first leaf along the ray and, in a leaf, the first primitive.
 // - A ray leaves the packet when its nearest hit lies before the node taken from the stack,
 //   where the single traversal stops.
 // Shadow rays (SplitTree::occludedPacket) walk the same way, each with its own tMax, and a ray
 // stops where SplitTree::occluded stops: its lane turns off after the first block of a leaf in
-// which one of its triangles lies in (0, tMax), or the first other primitive that does, and its
+// which one of its primitives lies in (0, tMax), or the first other primitive that does, and its
 // tLimit drops to -infinity, so no node left on the stack is open to it any more. Until then it
 // counts, node by node and block by block, what the single ray counts.
 // A ray left alone in a node, the others having gone elsewhere or ended, goes on from there with
@@ -40,12 +40,14 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <type_traits>
 
 #include "accel/split_tree.h"
 #include "geometry/watertight_triangle.h"
 
-// Last, in a block of its own (clang-format sorts a block): the level's region starts here.
-#include "accel/simd_level.h"
+// Last, in a block of its own (clang-format sorts a block): the level's region starts in it
+// (accel/simd_level.h), with the leaves' loops.
+#include "accel/leaf_tests.h"
 
 namespace rt::RT_LEVEL_NAMESPACE {
 
@@ -173,111 +175,47 @@ struct PacketHits {
     std::uint32_t prim[kPacketSize];
 };
 
-// Triangle `lane` of a block, in every lane.
-struct TriangleLanes {
-    RealLanes p0[3], e1[3], e2[3];
-
-    TriangleLanes(const TriangleBlock& block, int lane) {
-        for (int axis = 0; axis < 3; ++axis) {
-            p0[axis] = broadcast(block.p0[axis][lane]);
-            e1[axis] = broadcast(block.e1[axis][lane]);
-            e2[axis] = broadcast(block.e2[axis][lane]);
-        }
-    }
-};
-
-// What one group of rays meets of a triangle: the rays that hit it with 0 < t < their limit, and
-// t, u and v (of every ray).
-struct GroupHits {
-    RealLanes hit, t, u, v;
-};
-
-// Moller-Trumbore of one triangle against group g of the packet's rays: intersectBlock's operations
-// and hit condition in its order, lane by lane (a lane is a ray here, not a triangle), so each ray
-// gets the bits its single traversal gets. Both queries test triangles with it: the nearest hit
-// with the ray's nearest so far as `limit`, the any hit with its tMax.
-inline GroupHits hitTriangle(const TriangleLanes& tri, const PacketRays& rays, int g, RealLanes limit) {
-    const RealLanes &e1x = tri.e1[0], &e1y = tri.e1[1], &e1z = tri.e1[2];
-    const RealLanes &e2x = tri.e2[0], &e2y = tri.e2[1], &e2z = tri.e2[2];
-    const RealLanes zero = broadcast(0), one = broadcast(1);
-    const RealLanes dx = rays.direction[0].group[g], dy = rays.direction[1].group[g], dz = rays.direction[2].group[g];
-    const RealLanes px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
-    const RealLanes det = e1x * px + e1y * py + e1z * pz;
-    const RealLanes invDet = one / det;
-    const RealLanes sx = rays.origin[0].group[g] - tri.p0[0], sy = rays.origin[1].group[g] - tri.p0[1],
-                    sz = rays.origin[2].group[g] - tri.p0[2];
-    GroupHits h;
-    h.u = (sx * px + sy * py + sz * pz) * invDet;
-    const RealLanes qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
-    h.v = (dx * qx + dy * qy + dz * qz) * invDet;
-    h.t = (e2x * qx + e2y * qy + e2z * qz) * invDet;
-    const RealLanes inside = notEqual(det, zero) & notLessThan(h.u, zero) & notGreaterThan(h.u, one) &
-                             notLessThan(h.v, zero) & notGreaterThan(h.u + h.v, one);
-    h.hit = inside & lessThan(zero, h.t) & lessThan(h.t, limit);
-    return h;
-}
-
-// The lanes of one group of rays as watertightLaneTest takes them.
-struct GroupLanes {
+// The level's lanes as a block test takes them (geometry/leaf_block.h).
+struct LevelLanes {
     using Type = RealLanes;
+    static constexpr int kWidth = kLanes;
     static RealLanes all(Real x) { return broadcast(x); }
     static RealLanes load(const Real* p) { return loadLanes(p); }
 };
 
-// Triangle `lane` of a VertexBlock, its vertices in every lane.
-struct VertexLanes {
-    using Row = Real (VertexBlock::*)[3][kSimdWidth];  // &VertexBlock::p0, p1 or p2
-    static constexpr Row kRows[3] = {&VertexBlock::p0, &VertexBlock::p1, &VertexBlock::p2};
-    RealLanes vertex[3][3];  // p0, p1, p2, each on the three axes
+// What one group of rays meets of a primitive: the rays that hit it with 0 < t < their limit, and
+// t, u and v (of every ray).
+using GroupHits = LaneTest<RealLanes>;
 
-    VertexLanes(const VertexBlock& block, int lane) {
-        for (int k = 0; k < 3; ++k)
-            for (int axis = 0; axis < 3; ++axis) vertex[k][axis] = broadcast((block.*kRows[k])[axis][lane]);
+// Group g of the packet's rays, a ray per lane, as Block's test takes them (Block::RayOf): sheared
+// for the watertight test's VertexBlocks (each ray by its own shear, along the axes they share),
+// else as they are.
+template <class Block>
+[[gnu::always_inline]] inline typename Block::template RayOf<LevelLanes> groupRays(const PacketRays& rays, int g) {
+    if constexpr (std::is_same_v<Block, VertexBlock>) {
+        const int kx = rays.axes.kx, ky = rays.axes.ky, kz = rays.axes.kz;
+        return ShearedRayLanesOf<LevelLanes>(
+            {rays.origin[kx].group[g], rays.origin[ky].group[g], rays.origin[kz].group[g]}, rays.sx.group[g],
+            rays.sy.group[g], rays.sz.group[g], rays.axes);
+    } else {
+        RayLanesOf<LevelLanes> group;
+        for (int axis = 0; axis < 3; ++axis) {
+            group.origin[axis] = rays.origin[axis].group[g];
+            group.direction[axis] = rays.direction[axis].group[g];
+        }
+        return group;
     }
-    RealLanes at(Row row, int axis) const { return vertex[row == kRows[0] ? 0 : row == kRows[1] ? 1 : 2][axis]; }
-};
-
-// The watertight test (geometry/watertight_triangle.h) of one triangle against group g of the
-// packet's rays: its operations and hit condition in its order, lane by lane, so each ray gets the
-// bits its single traversal gets.
-inline GroupHits hitTriangle(const VertexLanes& tri, const PacketRays& rays, int g, RealLanes limit) {
-    const int kx = rays.axes.kx, ky = rays.axes.ky, kz = rays.axes.kz;
-    const ShearedRayLanesOf<GroupLanes> ray(
-        {rays.origin[kx].group[g], rays.origin[ky].group[g], rays.origin[kz].group[g]}, rays.sx.group[g],
-        rays.sy.group[g], rays.sz.group[g], rays.axes);
-    const auto h =
-        watertightLaneTest<GroupLanes, kLanes>([&](auto vertex, int axis) { return tri.at(vertex, axis); }, ray, limit);
-    return {h.hit, h.t, h.u, h.v};
 }
 
-// Sphere `lane` of a block, in every lane.
-struct SphereLanes {
-    RealLanes center[3], r2;
-
-    SphereLanes(const SphereBlock& block, int lane) : r2(broadcast(block.r2[lane])) {
-        for (int axis = 0; axis < 3; ++axis) center[axis] = broadcast(block.center[axis][lane]);
-    }
-};
-
-// intersectSphere (geometry/sphere.h) against group g of the packet's rays: its operations in its
-// order, lane by lane, its rejections as masks, so each ray gets the bits of its single test.
-inline GroupHits hitSphere(const SphereLanes& s, const PacketRays& rays, int g, RealLanes limit) {
-    const RealLanes zero = broadcast(0);
-    const RealLanes dx = rays.direction[0].group[g], dy = rays.direction[1].group[g], dz = rays.direction[2].group[g];
-    const RealLanes lx = s.center[0] - rays.origin[0].group[g], ly = s.center[1] - rays.origin[1].group[g],
-                    lz = s.center[2] - rays.origin[2].group[g];
-    const RealLanes tca = lx * dx + ly * dy + lz * dz;
-    const RealLanes l2 = lx * lx + ly * ly + lz * lz;
-    const RealLanes outside = lessThan(s.r2, l2);
-    const RealLanes d2 = l2 - tca * tca;
-    const RealLanes missed = (outside & lessThan(tca, zero)) | lessThan(s.r2, d2);
-    const RealLanes thc = squareRoot(s.r2 - d2);
-    const RealLanes near = select(outside, tca - thc, tca + thc);
-    GroupHits h;
-    h.t = select(lessThan(zero, near), near, tca + thc);  // the origin on the surface: the far side
-    h.u = h.v = zero;
-    h.hit = andNot(missed, lessThan(zero, h.t) & lessThan(h.t, limit));
-    return h;
+// Primitive `lane` of a block against group g of the packet's rays: the block's test
+// (geometry/leaf_block.h) with the primitive in every lane and a ray per lane, so each ray gets
+// the bits its single traversal gets. Both queries test primitives with it: the nearest hit with
+// the ray's nearest so far as `limit`, the any hit with its tMax.
+template <class Block>
+[[gnu::always_inline]] inline GroupHits hitLane(const Block& block, int lane, const PacketRays& rays, int g,
+                                                const RealLanes& limit) {
+    return Block::template test<LevelLanes>([&](auto row) { return broadcast(row(block)[lane]); },
+                                            groupRays<Block>(rays, g), limit);
 }
 
 // Primitive `id`'s hits on the `active` rays are taken where they are nearer than the ray's
@@ -299,45 +237,19 @@ inline void takeNearer(std::uint32_t id, const Lanes& active, PacketHits& neares
     for (LaneBits bits = taken; bits != 0; bits &= bits - 1) nearest.prim[std::countr_zero(bits)] = id;
 }
 
-// Triangle or sphere `lane` of a block against the packet's nearest hits.
-inline void nearestIn(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& active,
-                      PacketHits& nearest) {
-    const TriangleLanes tri(block, lane);
+// Primitive `lane` of a block against the packet's nearest hits.
+template <class Block>
+inline void nearestIn(const Block& block, int lane, const PacketRays& rays, const Lanes& active, PacketHits& nearest) {
     takeNearer(block.id[lane], active, nearest,
-               [&](int g, RealLanes limit) { return hitTriangle(tri, rays, g, limit); });
-}
-inline void nearestIn(const VertexBlock& block, int lane, const PacketRays& rays, const Lanes& active,
-                      PacketHits& nearest) {
-    const VertexLanes tri(block, lane);
-    takeNearer(block.id[lane], active, nearest,
-               [&](int g, RealLanes limit) { return hitTriangle(tri, rays, g, limit); });
-}
-inline void nearestIn(const SphereBlock& block, int lane, const PacketRays& rays, const Lanes& active,
-                      PacketHits& nearest) {
-    const SphereLanes sphere(block, lane);
-    takeNearer(block.id[lane], active, nearest,
-               [&](int g, RealLanes limit) { return hitSphere(sphere, rays, g, limit); });
+               [&](int g, RealLanes limit) { return hitLane(block, lane, rays, g, limit); });
 }
 
-// Adds to `blocked` the rays of `open` that triangle or sphere `lane` of the block hits before
-// their tLimit.
-inline void blockingIn(const TriangleBlock& block, int lane, const PacketRays& rays, const Lanes& open,
-                       const Lanes& tLimit, Lanes& blocked) {
-    const TriangleLanes tri(block, lane);
+// Adds to `blocked` the rays of `open` that primitive `lane` of the block hits before their tLimit.
+template <class Block>
+inline void blockingIn(const Block& block, int lane, const PacketRays& rays, const Lanes& open, const Lanes& tLimit,
+                       Lanes& blocked) {
     for (int g = 0; g < kGroups; ++g)
-        blocked.group[g] = blocked.group[g] | (open.group[g] & hitTriangle(tri, rays, g, tLimit.group[g]).hit);
-}
-inline void blockingIn(const VertexBlock& block, int lane, const PacketRays& rays, const Lanes& open,
-                       const Lanes& tLimit, Lanes& blocked) {
-    const VertexLanes tri(block, lane);
-    for (int g = 0; g < kGroups; ++g)
-        blocked.group[g] = blocked.group[g] | (open.group[g] & hitTriangle(tri, rays, g, tLimit.group[g]).hit);
-}
-inline void blockingIn(const SphereBlock& block, int lane, const PacketRays& rays, const Lanes& open,
-                       const Lanes& tLimit, Lanes& blocked) {
-    const SphereLanes sphere(block, lane);
-    for (int g = 0; g < kGroups; ++g)
-        blocked.group[g] = blocked.group[g] | (open.group[g] & hitSphere(sphere, rays, g, tLimit.group[g]).hit);
+        blocked.group[g] = blocked.group[g] | (open.group[g] & hitLane(block, lane, rays, g, tLimit.group[g]).hit);
 }
 
 // The single traversal's decision at a node, ray by ray (split_tree.cpp, SplitTree::traverse),
@@ -473,7 +385,7 @@ void updateHits(PacketHits& nearest, LaneBits rays, const Update& update) {
     nearest.v = load(v);
 }
 
-// The leaf's primitives that are neither triangles nor spheres, ray by ray (the packet has no hit
+// The leaf's primitives of kinds without blocks, ray by ray (the packet has no hit
 // filter).
 void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
                    PacketHits& nearest) {
@@ -503,17 +415,20 @@ LaneBits blockedInBlocks(const Block* blocks, std::uint32_t blockCount, std::uin
 }
 
 // The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
-// tMax), found and counted as SplitTree::occluded finds and counts them ray by ray: the triangles
-// block by block, then the spheres likewise (blockedInBlocks), then the other primitives one at a
-// time, until one blocks (the packet has no hit filter). Triangles by the test `test`.
+// tMax), found and counted as SplitTree::occluded finds and counts them ray by ray: the blocks of
+// each kind with blocks block by block, kind after kind (blockedInBlocks), then the other
+// primitives one at a time, until one blocks (the packet has no hit filter). The triangles by the
+// test `test`.
 template <TriangleTest test>
 LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const Real* tMax,
                        const PacketRays& packet, Lanes open, LaneBits active, const Lanes& tLimit,
                        std::uint64_t& tests) {
-    LaneBits blocked = blockedInBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), leaf.triangles, packet, open,
-                                       active, tLimit, tests);
-    blocked |= blockedInBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), leaf.spheres, packet, open, active, tLimit,
-                               tests);
+    LaneBits blocked = 0;
+    anyBlockKind([&](auto kind) {
+        blocked |= blockedInBlocks(leaf.blocks<test, kind>(), leaf.blockCount<kind>(), leaf.blocked[kind], packet, open,
+                                   active, tLimit, tests);
+        return false;
+    });
     for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
         const int r = std::countr_zero(bits);
         for (std::uint32_t i = 0; i < leaf.others; ++i) {
@@ -559,13 +474,14 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
         nodes_.data(), packet, nearest.t,
         [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
             const LeafPrimitives& leaf = leafAt(unit);
-            tests += std::uint64_t(std::popcount(active)) * (leaf.triangles + leaf.spheres + leaf.others);
-            // As SplitTree::intersect: the triangles in leaf order, the spheres, then the others.
-            for (std::uint32_t k = 0; k < leaf.triangles; ++k)
-                nearestIn(triangleBlocks<test>(leaf)[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf,
-                          nearest);
-            for (std::uint32_t k = 0; k < leaf.spheres; ++k)
-                nearestIn(leaf.sphereBlocks()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf, nearest);
+            tests += std::uint64_t(std::popcount(active)) * leaf.count();
+            // As SplitTree::intersect: each kind with blocks in leaf order, kind after kind, then the others.
+            anyBlockKind([&](auto kind) {
+                for (std::uint32_t k = 0; k < leaf.blocked[kind]; ++k)
+                    nearestIn(leaf.blocks<test, kind>()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf,
+                              nearest);
+                return false;
+            });
             if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
         },
         [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {

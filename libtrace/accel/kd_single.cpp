@@ -1,5 +1,5 @@
 // The single-ray queries of the KD and BSP trees (SplitTree::intersect, occluded): front to back
-// down the tree's 8-byte nodes, a leaf's triangles tested in blocks (geometry/triangle_block.h).
+// down the tree's 8-byte nodes, a leaf's primitives tested in blocks (geometry/leaf_block.h).
 // Compiled three times (accel/simd_level.h), once per set of lanes: on AVX2 and AVX-512 a leaf's
 // blocks are tested two at a time, and the compiler's code has three-operand instructions (no
 // register copies) and, for AVX-512, 32 registers: with AVX2, 25 % fewer instructions per camera

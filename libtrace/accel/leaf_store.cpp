@@ -1,28 +1,31 @@
 #include "accel/leaf_store.h"
 
 #include <cstring>
-#include <optional>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 namespace rt {
 
-LeafPrimitives LeafStore::sizesOf(const Primitives& prims, const std::uint32_t* ids, std::uint32_t count) {
-    LeafPrimitives sizes;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        sizes.triangles += prims.indexIn<Triangle>(ids[i]) ? 1 : 0;
-        sizes.spheres += prims.indexIn<Sphere>(ids[i]) ? 1 : 0;
-    }
-    sizes.others = count - sizes.triangles - sizes.spheres;
-    return sizes;
-}
-
 namespace {
 
-// Copies the blocks of Kind one by one to `out`, each full block or the last as it is filled:
-// set(block, lane, primitive, id) fills a lane.
-template <class Block, class Kind>
+// The place of kind K among the kinds with blocks.
+template <class K, std::size_t I = 0>
+constexpr std::size_t blockKindIndex() {
+    if constexpr (std::is_same_v<std::tuple_element_t<I, BlockKinds>, K>)
+        return I;
+    else
+        return blockKindIndex<K, I + 1>();
+}
+
+// Copies the blocks of one kind one by one to `out`, each full block or the last as it is filled:
+// Block::set(lane, primitive, id) fills a lane.
+template <class Block>
 class BlockWriter {
 public:
+    BlockWriter() = default;
     BlockWriter(std::byte* out, std::uint32_t count) : out_(out), count_(count) {}
+    template <class Kind>
     void add(const Kind& primitive, std::uint32_t id) {
         if (written_ % kSimdWidth == 0) block_ = Block();
         block_.set(int(written_ % kSimdWidth), primitive, id);
@@ -34,36 +37,66 @@ public:
     }
 
 private:
-    std::byte* out_;
-    std::uint32_t count_, written_ = 0;
+    std::byte* out_ = nullptr;
+    std::uint32_t count_ = 0, written_ = 0;
     Block block_;
 };
 
+// The writers of the blocks of each kind with a block, as a store of triangle test `test` holds them.
+template <TriangleTest test, class Indices = std::make_index_sequence<kBlockKindCount>>
+struct BlockWritersOf;
+template <TriangleTest test, std::size_t... I>
+struct BlockWritersOf<test, std::index_sequence<I...>> {
+    using type = std::tuple<BlockWriter<StoredBlock<test, I>>...>;
+};
+
+// LeafStore::write for the triangle test `test`: the record, then each kind's blocks, then the
+// other ids, from `out` on.
+template <TriangleTest test>
+void writeLeaf(const Primitives& prims, const std::uint32_t* ids, const LeafPrimitives& sizes, std::byte* out) {
+    std::memcpy(out, &sizes, sizeof(sizes));
+    std::byte* const blocks = out + sizeof(LeafPrimitives);
+    typename BlockWritersOf<test>::type writers;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((std::get<I>(writers) = {blocks + sizes.blockBytesBefore<I>(), sizes.blocked[I]}), ...);
+    }
+    (std::make_index_sequence<kBlockKindCount>{});
+    std::byte* others = blocks + sizes.blockBytesBefore<kBlockKindCount>();
+    const PrimitiveView view = prims.view();
+    for (std::uint32_t i = 0; i < sizes.count(); ++i) {
+        view.visit(ids[i], [&]<class K>(const K& primitive) {
+            if constexpr (BlockTested<K>) {
+                std::get<blockKindIndex<K>()>(writers).add(primitive, ids[i]);
+            } else {
+                std::memcpy(others, &ids[i], sizeof(std::uint32_t));
+                others += sizeof(std::uint32_t);
+            }
+        });
+    }
+}
+
 }  // namespace
+
+LeafPrimitives LeafStore::sizesOf(const Primitives& prims, const std::uint32_t* ids, std::uint32_t count) {
+    LeafPrimitives sizes;
+    const PrimitiveView view = prims.view();
+    for (std::uint32_t i = 0; i < count; ++i) {
+        view.visit(ids[i], [&]<class K>(const K&) {
+            if constexpr (BlockTested<K>)
+                ++sizes.blocked[blockKindIndex<K>()];
+            else
+                ++sizes.others;
+        });
+    }
+    return sizes;
+}
 
 // (Copying the bytes of these trivially copyable types creates them there.)
 void LeafStore::write(const Primitives& prims, const std::uint32_t* ids, const LeafPrimitives& sizes, std::size_t at) {
-    std::byte* out = units_[at].bytes;
-    std::memcpy(out, &sizes, sizeof(sizes));
-    std::byte* const triangleBlocks = out + sizeof(LeafPrimitives);
-    std::byte* const sphereBlocks = triangleBlocks + sizes.blockCount() * sizeof(TriangleBlock);
-    std::byte* others = sphereBlocks + sizes.sphereBlockCount() * sizeof(SphereBlock);
-    BlockWriter<TriangleBlock, Triangle> triangles(triangleBlocks, sizes.triangles);
-    BlockWriter<VertexBlock, Triangle> watertightTriangles(triangleBlocks, sizes.triangles);
-    BlockWriter<SphereBlock, Sphere> spheres(sphereBlocks, sizes.spheres);
-    for (std::uint32_t i = 0; i < sizes.count(); ++i) {
-        if (const std::optional<std::uint32_t> triangle = prims.indexIn<Triangle>(ids[i])) {
-            if (test_ == TriangleTest::Watertight)
-                watertightTriangles.add(prims.all<Triangle>()[*triangle], ids[i]);
-            else
-                triangles.add(prims.all<Triangle>()[*triangle], ids[i]);
-        } else if (const std::optional<std::uint32_t> sphere = prims.indexIn<Sphere>(ids[i])) {
-            spheres.add(prims.all<Sphere>()[*sphere], ids[i]);
-        } else {
-            std::memcpy(others, &ids[i], sizeof(std::uint32_t));
-            others += sizeof(std::uint32_t);
-        }
-    }
+    if (test_ == TriangleTest::Watertight)
+        writeLeaf<TriangleTest::Watertight>(prims, ids, sizes, units_[at].bytes);
+    else
+        writeLeaf<TriangleTest::MollerTrumbore>(prims, ids, sizes, units_[at].bytes);
 }
 
 }  // namespace rt

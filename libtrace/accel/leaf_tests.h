@@ -1,14 +1,17 @@
 // The single-ray tests of one leaf (accel/leaf_store.h), shared by the KD and BSP trees
-// (accel/kd_single.cpp) and the BVH (accel/bvh_traversal.cpp): a leaf's triangle and sphere blocks
-// tested on the level's lanes, its other primitives one by one. Included last by a file compiled
-// once per level (accel/simd_level.h), in an include block of its own: what it defines lies in
-// that level's region and namespace.
+// (accel/kd_single.cpp) and the BVH (accel/bvh_traversal.cpp): a leaf's blocks of each kind with a
+// block (geometry/leaf_block.h) tested on the level's lanes, kind after kind, its other primitives
+// one by one; the triangles by the structure's triangle test (TriangleTest). Included last by a
+// file compiled once per level (accel/simd_level.h), in an include block of its own: what it
+// defines lies in that level's region and namespace.
 #pragma once
 
 #include <algorithm>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 
 #include "accel/leaf_store.h"
 #include "geometry/hit_filter.h"
@@ -18,52 +21,47 @@
 
 // AVX2 and AVX-512 test a leaf's blocks two at a time, in one register twice SSE2's width (four
 // doubles or eight floats; AVX-512 takes AVX2's register, compiled for its own level): one test's
-// instructions for two blocks' triangles, each lane computing what it computes in a block alone.
+// instructions for two blocks' primitives, each lane computing what it computes in a block alone.
 #define RT_BLOCK_PAIRS (RT_LEVEL_AVX2 || RT_LEVEL_AVX512)
 
 namespace rt::RT_LEVEL_NAMESPACE {
 
+// Calls f(std::integral_constant<std::size_t, I>{}) for the I-th kind with a block
+// (geometry/primitive_kinds.h, BlockKinds), in list order, while f returns false; returns whether
+// one returned true. Here, in the level's region, so that the tests it calls are compiled for the
+// level and inlined (a helper compiled for the base level could not inline them).
+template <class F>
+[[gnu::always_inline]] inline bool anyBlockKind(const F& f) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) __attribute__((always_inline)) {
+        return (f(std::integral_constant<std::size_t, I>{}) || ...);
+    }
+    (std::make_index_sequence<kBlockKindCount>{});
+}
+
 #if RT_BLOCK_PAIRS
 struct PairLanes {
     using Type = simd_avx2::RealLanes;
+    static constexpr int kWidth = simd_avx2::kLanes;
     static Type all(Real x) { return simd_avx2::broadcast(x); }
     static Type load(const Real* p) { return simd_avx2::loadLanes(p); }
 };
 static_assert(2 * kSimdWidth == simd_avx2::kLanes);
 
 // The blocks `first` and `first + 1`, lane i of the pair being lane i of the first and lane
-// kSimdWidth + i of the second. Always inlined, as the one-block test is in its loop.
-[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const TriangleBlock* first,
-                                                                          const RayLanesOf<PairLanes>& ray, Real tMax) {
-    return mollerTrumboreLanes<PairLanes, 2 * kSimdWidth>(
-        [&](auto component, int axis) {
-            return simd_avx2::loadHalves((first[0].*component)[axis], (first[1].*component)[axis]);
-        },
-        ray, tMax);
-}
-[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const VertexBlock* first,
-                                                                          const ShearedRayLanesOf<PairLanes>& ray,
-                                                                          Real tMax) {
-    return watertightLanes<PairLanes, 2 * kSimdWidth>(
-        [&](auto vertex, int axis) {
-            return simd_avx2::loadHalves((first[0].*vertex)[axis], (first[1].*vertex)[axis]);
-        },
-        ray, tMax);
-}
-[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(const SphereBlock* first,
-                                                                          const RayLanesOf<PairLanes>& ray, Real tMax) {
-    return sphereLanes<PairLanes, 2 * kSimdWidth>(
-        [&](int axis) {
-            return axis < 0 ? simd_avx2::loadHalves(first[0].r2, first[1].r2)
-                            : simd_avx2::loadHalves(first[0].center[axis], first[1].center[axis]);
-        },
-        ray, tMax);
+// kSimdWidth + i of the second: one test's instructions for both. Always inlined, as the one-block
+// test is in its loop.
+template <class Block>
+[[gnu::always_inline]] inline LaneHits<2 * kSimdWidth> intersectBlockPair(
+    const Block* first, const typename Block::template RayOf<PairLanes>& ray, Real tMax) {
+    return LaneHits<2 * kSimdWidth>::of(Block::template test<PairLanes>(
+        [&](auto row) { return simd_avx2::loadHalves(row(first[0]), row(first[1])); }, ray, PairLanes::all(tMax)));
 }
 #endif
 
-// A leaf's blocks of one kind (triangles or spheres) tested against one ray, in order: two at a
-// time where the level has pairs, the last alone when their number is odd. With `test`
-// Watertight the triangles are VertexBlocks, tested on the ray sheared (geometry/watertight_triangle.h).
+// A leaf's blocks of one kind tested against one ray, in order: two at a time where the level has
+// pairs, the last alone when their number is odd, each on the ray as its test takes it
+// (Block::RayOf): with `test` Watertight the triangles are VertexBlocks, tested on the ray sheared
+// (geometry/watertight_triangle.h), found once per ray here.
 template <TriangleTest test>
 class BlockTests {
 public:
@@ -84,29 +82,29 @@ public:
         std::uint32_t b = 0;
 #if RT_BLOCK_PAIRS
         for (; b + 2 <= blockCount; b += 2)
-            if (visit(blocks + b, b, testTwo(blocks + b, tMax), 2)) return true;
+            if (visit(blocks + b, b, intersectBlockPair(blocks + b, pairRay<Block>(), tMax), 2)) return true;
 #endif
         for (; b < blockCount; ++b)
-            if (visit(blocks + b, b, testOne(blocks[b], tMax), 1)) return true;
+            if (visit(blocks + b, b, intersectBlock(blocks[b], oneRay<Block>(), tMax), 1)) return true;
         return false;
     }
 
 private:
-    // A block's test on the ray as it takes it: sheared for VertexBlocks, else as it is.
+    // The ray as Block's test takes it: sheared for VertexBlocks, else as it is.
     template <class Block>
-    [[gnu::always_inline]] BlockHits testOne(const Block& block, Real tMax) const {
-        return intersectBlock(block, one_, tMax);
-    }
-    [[gnu::always_inline]] BlockHits testOne(const VertexBlock& block, Real tMax) const {
-        return intersectBlock(block, sheared_.one, tMax);
+    [[gnu::always_inline]] const auto& oneRay() const {
+        if constexpr (std::is_same_v<Block, VertexBlock>)
+            return sheared_.one;
+        else
+            return one_;
     }
 #if RT_BLOCK_PAIRS
     template <class Block>
-    [[gnu::always_inline]] LaneHits<2 * kSimdWidth> testTwo(const Block* first, Real tMax) const {
-        return intersectBlockPair(first, two_, tMax);
-    }
-    [[gnu::always_inline]] LaneHits<2 * kSimdWidth> testTwo(const VertexBlock* first, Real tMax) const {
-        return intersectBlockPair(first, sheared_.two, tMax);
+    [[gnu::always_inline]] const auto& pairRay() const {
+        if constexpr (std::is_same_v<Block, VertexBlock>)
+            return sheared_.two;
+        else
+            return two_;
     }
 #endif
 
@@ -163,8 +161,9 @@ template <TriangleTest test>
         }
         return false;
     };
-    testBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), nearest.t, takeNearest);
-    testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), nearest.t, takeNearest);
+    anyBlockKind([&](auto kind) __attribute__((always_inline)) {
+        return testBlocks(leaf.blocks<test, kind>(), leaf.blockCount<kind>(), nearest.t, takeNearest);
+    });
     const std::uint32_t* otherIds = leaf.otherIds();
     for (std::uint32_t i = 0; i < leaf.others; ++i) {
         if (filter)
@@ -174,8 +173,8 @@ template <TriangleTest test>
     }
 }
 
-// Whether anything in `leaf` blocks the ray before `rayTMax`. The triangles are counted in `tests`
-// block by block up to the first that blocks; a pair of blocks is counted as its two blocks would
+// Whether anything in `leaf` blocks the ray before `rayTMax`. The blocks are counted in `tests`
+// block by block, kind after kind, up to the first that blocks; a pair of blocks is counted as its two blocks would
 // be, the second only if the first does not block.
 template <TriangleTest test>
 [[gnu::always_inline]] inline bool blockerInLeaf(const BlockTests<test>& testBlocks, const PrimitiveView& prims,
@@ -196,8 +195,10 @@ template <TriangleTest test>
             return false;
         };
     };
-    if (testBlocks(triangleBlocks<test>(leaf), leaf.blockCount(), rayTMax, blockedIn(leaf.triangles)) ||
-        testBlocks(leaf.sphereBlocks(), leaf.sphereBlockCount(), rayTMax, blockedIn(leaf.spheres)))
+    if (anyBlockKind([&](auto kind) __attribute__((always_inline)) {
+            return testBlocks(leaf.blocks<test, kind>(), leaf.blockCount<kind>(), rayTMax,
+                              blockedIn(leaf.blocked[kind]));
+        }))
         return true;
     const std::uint32_t* otherIds = leaf.otherIds();
     for (std::uint32_t i = 0; i < leaf.others; ++i) {

@@ -16,6 +16,8 @@
 //   bool overlaps(K, box)         exact, or tight and conservative, overlap with a closed box (the BSP tree)
 //   bool intersect(K, ray, tMax, Hit&)  nearest hit with 0 < t < tMax: sets t, u, v
 //   bool intersectsAny(K, ray, tMax)    any hit with 0 < t < tMax (shadow rays)
+// and optionally a block (geometry/leaf_block.h: LeafBlockOf<K>, specialized in the header this
+// file includes for K), which the trees' leaves then test kSimdWidth at a time.
 #pragma once
 
 #include <cstddef>
@@ -24,15 +26,18 @@
 #include <utility>
 
 #include "geometry/clip.h"
+#include "geometry/disk.h"
 #include "geometry/frustum.h"
 #include "geometry/overlap.h"
 #include "geometry/sphere.h"
+#include "geometry/sphere_block.h"
 #include "geometry/triangle.h"
+#include "geometry/triangle_block.h"
 
 namespace rt {
 
 // Primitive ids run over the kinds in this order: all triangles, then all spheres, ...
-using PrimitiveKinds = std::tuple<Triangle, Sphere, Cylinder, Cone>;
+using PrimitiveKinds = std::tuple<Triangle, Sphere, Cylinder, Cone, Disk>;
 
 inline constexpr std::size_t kKindCount = std::tuple_size_v<PrimitiveKinds>;
 
@@ -44,5 +49,16 @@ constexpr void forEachKind(F&& f) {
     }
     (std::make_index_sequence<kKindCount>{});
 }
+
+// The kinds with a block (geometry/leaf_block.h), in list order: the trees' leaves hold them in
+// blocks, and test the others one at a time.
+template <class Kinds>
+struct BlockKindsOf;
+template <class... K>
+struct BlockKindsOf<std::tuple<K...>> {
+    using type = decltype(std::tuple_cat(std::conditional_t<BlockTested<K>, std::tuple<K>, std::tuple<>>{}...));
+};
+using BlockKinds = typename BlockKindsOf<PrimitiveKinds>::type;
+inline constexpr std::size_t kBlockKindCount = std::tuple_size_v<BlockKinds>;
 
 }  // namespace rt

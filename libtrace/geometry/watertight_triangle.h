@@ -109,8 +109,45 @@ inline bool intersectWatertight(const Triangle& tri, const ShearedRay& ray, Real
     return intersectWatertight(tri, ray, tMax, hit.t, hit.u, hit.v);
 }
 
-// kSimdWidth triangles as their vertices, component by component, in the bytes of a TriangleBlock.
-// An unused lane's vertices are NaN: its edge functions are NaN, and NaN is on no side of an edge.
+// The sheared ray on lanes: one ray in every lane (the leaves' blocks), or one ray per lane
+// (accel/kd_packet.cpp's packets, whose rays share their axes). The axes stay scalars, as they
+// choose which rows a block's test loads.
+template <class Lanes>
+struct ShearedRayLanesOf {
+    using L = typename Lanes::Type;
+    L origin[3], sx, sy, sz;  // origin in the order kx, ky, kz
+    int kx, ky, kz;
+
+    [[gnu::always_inline]] explicit ShearedRayLanesOf(const ShearedRay& ray)
+        : ShearedRayLanesOf(
+              {Lanes::all(ray.origin[ray.kx]), Lanes::all(ray.origin[ray.ky]), Lanes::all(ray.origin[ray.kz])},
+              Lanes::all(ray.sx), Lanes::all(ray.sy), Lanes::all(ray.sz), ray) {}
+    // Rays lane by lane, each of them sheared along the axes of `axes`.
+    [[gnu::always_inline]] ShearedRayLanesOf(const L (&o)[3], const L& sxLanes, const L& syLanes, const L& szLanes,
+                                             const ShearedRay& axes)
+        : origin{o[0], o[1], o[2]}, sx(sxLanes), sy(syLanes), sz(szLanes), kx(axes.kx), ky(axes.ky), kz(axes.kz) {}
+};
+using ShearedRayLanes = ShearedRayLanesOf<BaseLanes>;
+
+// The lanes whose edge function came out zero, recomputed one by one with exact signs, as
+// intersectWatertight recomputes them. Rare (a ray through an edge or a vertex, as computed), so
+// kept out of the inlined test.
+template <int N>
+[[gnu::noinline, gnu::cold]] inline void refineEdgeFunctions(unsigned lanes, const Real (&xy)[6][N], Real (&u)[N],
+                                                             Real (&v)[N], Real (&w)[N]) {
+    for (; lanes != 0; lanes &= lanes - 1) {
+        const int i = std::countr_zero(lanes);
+        const EdgeFunctions e = exactEdgeFunctions(xy[0][i], xy[1][i], xy[2][i], xy[3][i], xy[4][i], xy[5][i]);
+        u[i] = e.u;
+        v[i] = e.v;
+        w[i] = e.w;
+    }
+}
+
+// kSimdWidth triangles as their vertices, component by component, in the bytes of a TriangleBlock:
+// the triangles' block (geometry/leaf_block.h) in the leaves of a structure with the watertight
+// test (accel/leaf_store.h). An unused lane's vertices are NaN: its edge functions are NaN, and NaN
+// is on no side of an edge.
 struct alignas(16) VertexBlock {
     static constexpr std::uint32_t kNoPrimitive = ~0u;
     Real p0[3][kSimdWidth], p1[3][kSimdWidth], p2[3][kSimdWidth];
@@ -131,104 +168,57 @@ struct alignas(16) VertexBlock {
         }
         id[lane] = primitiveId;
     }
+
+    template <class Lanes>
+    using RayOf = ShearedRayLanesOf<Lanes>;  // the ray sheared, found once per ray
+
+    // The watertight test lane by lane (see intersectWatertight: the same operations in the same
+    // order, the rejections as masks): one triangle per lane against one ray (the blocks), or one
+    // triangle against a ray per lane (the packets).
+    template <class Lanes, class Load>
+    [[gnu::always_inline]] static LaneTest<typename Lanes::Type> test(const Load& load,
+                                                                      const ShearedRayLanesOf<Lanes>& ray,
+                                                                      const typename Lanes::Type& limit) {
+        using L = typename Lanes::Type;
+        constexpr int N = Lanes::kWidth;
+        // Vertex p relative to the origin, sheared: its x, y and (unscaled) z.
+        const auto project = [&](auto vertex, L& x, L& y, L& z) __attribute__((always_inline)) {
+            z = load(blockRow<VertexBlock>(vertex, ray.kz)) - ray.origin[2];
+            x = (load(blockRow<VertexBlock>(vertex, ray.kx)) - ray.origin[0]) - ray.sx * z;
+            y = (load(blockRow<VertexBlock>(vertex, ray.ky)) - ray.origin[1]) - ray.sy * z;
+        };
+        L ax, ay, az, bx, by, bz, cx, cy, cz;
+        project(&VertexBlock::p0, ax, ay, az);
+        project(&VertexBlock::p1, bx, by, bz);
+        project(&VertexBlock::p2, cx, cy, cz);
+        L u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+        const L zero = Lanes::all(0);
+        const unsigned exact = laneBits(notEqual(u, zero) & notEqual(v, zero) & notEqual(w, zero));
+        if (exact != (1u << N) - 1) [[unlikely]] {
+            alignas(64) Real xy[6][N], us[N], vs[N], ws[N];
+            const L* projected[6] = {&ax, &ay, &bx, &by, &cx, &cy};
+            for (int k = 0; k < 6; ++k) storeLanes(xy[k], *projected[k]);
+            storeLanes(us, u);
+            storeLanes(vs, v);
+            storeLanes(ws, w);
+            refineEdgeFunctions<N>(~exact & ((1u << N) - 1), xy, us, vs, ws);
+            u = Lanes::load(us);
+            v = Lanes::load(vs);
+            w = Lanes::load(ws);
+        }
+        const L inside = (lessEqual(zero, u) & lessEqual(zero, v) & lessEqual(zero, w)) |
+                         (lessEqual(u, zero) & lessEqual(v, zero) & lessEqual(w, zero));
+        const L det = u + v + w;
+        const L scaled = u * (ray.sz * az) + v * (ray.sz * bz) + w * (ray.sz * cz);
+        const L invDet = Lanes::all(1) / det;
+        LaneTest<L> hits;
+        hits.t = scaled * invDet;
+        hits.u = v * invDet;
+        hits.v = w * invDet;
+        hits.hit = inside & notEqual(det, zero) & lessThan(zero, hits.t) & lessThan(hits.t, limit);
+        return hits;
+    }
 };
 static_assert(sizeof(VertexBlock) == sizeof(TriangleBlock) && alignof(VertexBlock) == alignof(TriangleBlock));
-
-// The sheared ray on lanes: one ray in every lane (the leaves' blocks), or one ray per lane
-// (accel/kd_packet.cpp's packets, whose rays share their axes). The axes stay scalars, as they
-// choose which rows a block's test loads.
-template <class Lanes>
-struct ShearedRayLanesOf {
-    using L = typename Lanes::Type;
-    L origin[3], sx, sy, sz;  // origin in the order kx, ky, kz
-    int kx, ky, kz;
-
-    [[gnu::always_inline]] explicit ShearedRayLanesOf(const ShearedRay& ray)
-        : ShearedRayLanesOf(
-              {Lanes::all(ray.origin[ray.kx]), Lanes::all(ray.origin[ray.ky]), Lanes::all(ray.origin[ray.kz])},
-              Lanes::all(ray.sx), Lanes::all(ray.sy), Lanes::all(ray.sz), ray) {}
-    // Rays lane by lane, each of them sheared along the axes of `axes`.
-    [[gnu::always_inline]] ShearedRayLanesOf(const L (&o)[3], L sxLanes, L syLanes, L szLanes, const ShearedRay& axes)
-        : origin{o[0], o[1], o[2]}, sx(sxLanes), sy(syLanes), sz(szLanes), kx(axes.kx), ky(axes.ky), kz(axes.kz) {}
-};
-using ShearedRayLanes = ShearedRayLanesOf<BaseLanes>;
-
-// The lanes whose edge function came out zero, recomputed one by one with exact signs, as
-// intersectWatertight recomputes them. Rare (a ray through an edge or a vertex, as computed), so
-// kept out of the inlined test.
-template <int N>
-[[gnu::noinline, gnu::cold]] inline void refineEdgeFunctions(unsigned lanes, const Real (&xy)[6][N], Real (&u)[N],
-                                                             Real (&v)[N], Real (&w)[N]) {
-    for (; lanes != 0; lanes &= lanes - 1) {
-        const int i = std::countr_zero(lanes);
-        const EdgeFunctions e = exactEdgeFunctions(xy[0][i], xy[1][i], xy[2][i], xy[3][i], xy[4][i], xy[5][i]);
-        u[i] = e.u;
-        v[i] = e.v;
-        w[i] = e.w;
-    }
-}
-
-// What the lanes' watertight test finds: where it hits before each lane's limit, and t, u, v.
-template <class L>
-struct WatertightLaneHits {
-    L hit, t, u, v;
-};
-
-// The watertight test lane by lane (see intersectWatertight: the same operations in the same
-// order, the rejections as masks): one triangle per lane against one ray (the blocks), or one
-// triangle against a ray per lane (the packets). load(vertex, axis) gives the lanes' VertexBlock::p0,
-// p1 or p2 (a pointer to the member) on one axis; N, the lanes' count. Always inlined, as
-// mollerTrumboreLanes is.
-template <class Lanes, int N, class Load>
-[[gnu::always_inline]] inline WatertightLaneHits<typename Lanes::Type> watertightLaneTest(
-    const Load& load, const ShearedRayLanesOf<Lanes>& ray, const typename Lanes::Type& limit) {
-    using L = typename Lanes::Type;
-    // Vertex p relative to the origin, sheared: its x, y and (unscaled) z.
-    const auto project = [&](auto vertex, L& x, L& y, L& z) __attribute__((always_inline)) {
-        z = load(vertex, ray.kz) - ray.origin[2];
-        x = (load(vertex, ray.kx) - ray.origin[0]) - ray.sx * z;
-        y = (load(vertex, ray.ky) - ray.origin[1]) - ray.sy * z;
-    };
-    L ax, ay, az, bx, by, bz, cx, cy, cz;
-    project(&VertexBlock::p0, ax, ay, az);
-    project(&VertexBlock::p1, bx, by, bz);
-    project(&VertexBlock::p2, cx, cy, cz);
-    L u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-    const L zero = Lanes::all(0);
-    const unsigned exact = laneBits(notEqual(u, zero) & notEqual(v, zero) & notEqual(w, zero));
-    if (exact != (1u << N) - 1) [[unlikely]] {
-        alignas(64) Real xy[6][N], us[N], vs[N], ws[N];
-        const L* projected[6] = {&ax, &ay, &bx, &by, &cx, &cy};
-        for (int k = 0; k < 6; ++k) storeLanes(xy[k], *projected[k]);
-        storeLanes(us, u);
-        storeLanes(vs, v);
-        storeLanes(ws, w);
-        refineEdgeFunctions<N>(~exact & ((1u << N) - 1), xy, us, vs, ws);
-        u = Lanes::load(us);
-        v = Lanes::load(vs);
-        w = Lanes::load(ws);
-    }
-    const L inside = (lessEqual(zero, u) & lessEqual(zero, v) & lessEqual(zero, w)) |
-                     (lessEqual(u, zero) & lessEqual(v, zero) & lessEqual(w, zero));
-    const L det = u + v + w;
-    const L scaled = u * (ray.sz * az) + v * (ray.sz * bz) + w * (ray.sz * cz);
-    const L invDet = Lanes::all(1) / det;
-    const L t = scaled * invDet;
-    return {inside & notEqual(det, zero) & lessThan(zero, t) & lessThan(t, limit), t, v * invDet, w * invDet};
-}
-
-// The test with one triangle per lane, as LaneHits.
-template <class Lanes, int N, class Load>
-[[gnu::always_inline]] inline LaneHits<N> watertightLanes(const Load& load, const ShearedRayLanesOf<Lanes>& ray,
-                                                          Real tMax) {
-    const auto h = watertightLaneTest<Lanes, N>(load, ray, Lanes::all(tMax));
-    return LaneHits<N>::of(h.hit, h.t, h.u, h.v);
-}
-
-// The test on one block's triangles.
-inline BlockHits intersectBlock(const VertexBlock& b, const ShearedRayLanes& ray, Real tMax) {
-    return watertightLanes<BaseLanes, kSimdWidth>([&](auto vertex, int axis) { return loadLanes((b.*vertex)[axis]); },
-                                                  ray, tMax);
-}
 
 }  // namespace rt

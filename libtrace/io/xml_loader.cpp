@@ -89,6 +89,7 @@ private:
     void addSphere(const XmlElement& e, const Transform& toWorld);
     template <class K>
     void addFrustum(const XmlElement& e, const Transform& toWorld, Real baseRadius, Real topRadius);
+    void addDisk(const XmlElement& e, const Transform& toWorld);
     template <class K>
     void addLoose(const XmlElement& e, const K& primitive, std::uint32_t material);
     void addPolygon(const XmlElement& e, const Transform& toWorld, std::size_t corners);
@@ -505,6 +506,8 @@ void SceneBuilder::readObjects(pugi::xml_node parent, const Transform& toWorld, 
         } else if (tag == "cone") {
             const XmlElement e(file_, child, {"x0", "y0", "z0", "x1", "y1", "z1", "r0", "r1", "material"});
             addFrustum<Cone>(e, toWorld, e.number("r0"), e.number("r1"));
+        } else if (tag == "disk") {
+            addDisk(XmlElement(file_, child, {"x", "y", "z", "nx", "ny", "nz", "r", "material"}), toWorld);
         } else if (tag == "triangle" || tag == "quad") {
             addPolygon(XmlElement(file_, child, {"material"}), toWorld, tag == "triangle" ? 3 : 4);
         } else if (tag == "model") {
@@ -595,6 +598,17 @@ void SceneBuilder::addFrustum(const XmlElement& e, const Transform& toWorld, Rea
     k.baseRadius = baseRadius * toWorld.maxScale();
     k.topRadius = topRadius * toWorld.maxScale();
     addLoose(e, k, material);
+}
+
+// The centre is transformed, the normal as a normal; the radius, as a sphere's, takes the largest
+// stretch. A normal of zero length makes the disk degenerate (dropped and counted).
+void SceneBuilder::addDisk(const XmlElement& e, const Transform& toWorld) {
+    e.requireNoChildren();
+    const std::uint32_t material = materialOf(e);
+    const Vec3 written{e.number("nx"), e.number("ny"), e.number("nz")};
+    const Vec3 n = toWorld.isIdentity() ? written : toWorld.normal(written);
+    addLoose(e, Disk{place(toWorld, e.xyz(0)), isUnitLength(n) ? n : normalize(n), e.number("r") * toWorld.maxScale()},
+             material);
 }
 
 template <class K>

@@ -103,6 +103,16 @@ pugi::xml_node addObject(pugi::xml_node parent, const Cone& c) {
     return node;
 }
 
+pugi::xml_node addObject(pugi::xml_node parent, const Disk& d) {
+    pugi::xml_node node = parent.append_child("disk");
+    setXyz(node, d.center);
+    setNumber(node, "nx", d.planeNormal.x);
+    setNumber(node, "ny", d.planeNormal.y);
+    setNumber(node, "nz", d.planeNormal.z);
+    setNumber(node, "r", d.radius);
+    return node;
+}
+
 // A thesis point light as the thesis wrote it; the rt extension's attributes only where they
 // are not the defaults the loader assumes.
 void addLight(pugi::xml_node node, const Light& light) {

@@ -67,7 +67,7 @@ Scene generateScene(const SceneRecipe& recipe) {
     scene.materials.push_back({"spheres", {0.8f, 0.3f, 0.25f}, 0.1f, 0.7f, 0.3f, 40.0f, 0.2f});
 
     const std::size_t total =
-        std::max<std::size_t>(recipe.triangles + recipe.spheres + recipe.cylinders + recipe.cones, 1);
+        std::max<std::size_t>(recipe.triangles + recipe.spheres + recipe.cylinders + recipe.cones + recipe.disks, 1);
     const double spacing = std::cbrt(8.0 / double(total));
     const double size = recipe.placement == Placement::Clustered ? spacing * 0.5 : spacing;
     Random random(recipe.seed);
@@ -91,6 +91,11 @@ Scene generateScene(const SceneRecipe& recipe) {
     for (std::size_t i = 0; i < recipe.cylinders; ++i) scene.looseObjects.add<Cylinder>({frustum(1)}, 1);
     for (std::size_t i = 0; i < recipe.cones; ++i)
         scene.looseObjects.add<Cone>({frustum(i % 2 ? 0 : Real(random.uniform(0.2, 0.8)))}, 1);
+    for (std::size_t i = 0; i < recipe.disks; ++i) {
+        const Vec3 c = centres.next(), n = random.inCube(1);
+        if (length(n) > Real(0.1))
+            scene.looseObjects.add<Disk>({c, normalize(n), Real(size * random.uniform(0.2, 0.5))}, 1);
+    }
     scene.droppedDegenerate = scene.flatten();
     return scene;
 }

@@ -19,12 +19,14 @@ done
     echo '    <cylinder x0="0" y0="0" z0="10" x1="0" y1="2" z1="10" r="1" material="white" />'
     echo '    <cone x0="3" y0="0" z0="10" r0="1" x1="3" y1="2" z1="10" r1="0" material="white" />'
     echo '    <cone x0="-3" y0="0" z0="10" r0="1" x1="-3" y1="2" z1="10" r1="0.5" material="white" />'
+    echo '    <disk x="0" y="4" z="10" nx="0" ny="0" nz="1" r="1" material="white" />'
 } | scene "$WORK/cylinder_cones.xml" 60
 expect_exit 0 "$RT_INSPECT" --tree kd "$WORK/cylinder_cones.xml"
-grep -q "0 triangles, 0 spheres, 1 cylinders, 2 cones," "$WORK/stdout" || fail "counts per kind: $(head -1 "$WORK/stdout")"
+grep -q "0 triangles, 0 spheres, 1 cylinders, 2 cones, 1 disks," "$WORK/stdout" || fail "counts per kind: $(head -1 "$WORK/stdout")"
 expect_exit 0 "$RT_INSPECT" --tree kd --json "$WORK/cylinder_cones.xml"
 [ "$(json_number cones "$WORK/stdout")" = 2 ] || fail "JSON: 2 cones expected"
 [ "$(json_number cylinders "$WORK/stdout")" = 1 ] || fail "JSON: 1 cylinder expected"
+[ "$(json_number disks "$WORK/stdout")" = 1 ] || fail "JSON: 1 disk expected"
 
 # The least gain (--kd-min-gain, docs/trees.md): a speck of 512 tiny spheres over a ground 2,000
 # units wide, so that the speck's splits save almost nothing per ray entering the root. A bound

@@ -164,6 +164,16 @@ Primitives hardCases() {
         prims.add<Cone>({{b, a, Real(0.5), 0}}, 0);
     }
     prims.add<Cone>({{{0, 0, -5}, {0, 0, 5}, Real(5), Real(3)}}, 0);
+    // Disks in split planes (their bounds flat), coincident, tiny, and one across everything.
+    for (int i = 0; i < 3; ++i) {
+        Vec3 normal{0, 0, 0};
+        normal[i] = 1;
+        const Disk d{{Real(0.25) * Real(i), Real(0.5), Real(-0.25)}, normal, Real(0.3)};
+        prims.add<Disk>(d, 0);
+        prims.add<Disk>(d, 0);
+        prims.add<Disk>({d.center, normal, Real(1e-4)}, 0);
+    }
+    prims.add<Disk>({{0, 0, 0}, normalize(Vec3{1, 1, 1}), Real(6)}, 0);
     return prims;
 }
 
@@ -187,6 +197,15 @@ TEST(AccelAgreement, UniformWithCylindersAndCones) {
 TEST(AccelAgreement, ClusteredWithCylindersAndCones) {
     const Scene scene = generateScene({120, 40, Placement::Clustered, 4, 60, 60});
     EXPECT_EQ(disagreements(scene.primitives, kRays, 15), "");
+}
+
+// Disks reach the trees through the kinds list and their block alone (geometry/disk.h).
+TEST(AccelAgreement, ClusteredDisksAmongTrianglesAndSpheres) {
+    SceneRecipe recipe{60, 20, Placement::Clustered, 5};
+    recipe.disks = 240;
+    const Scene scene = generateScene(recipe);
+    ASSERT_GT(scene.primitives.count<Disk>(), 200u);
+    EXPECT_EQ(disagreements(scene.primitives, kRays, 16), "");
 }
 
 TEST(AccelAgreement, PlanesHugeTinyAndCoincidentPrimitives) { EXPECT_EQ(disagreements(hardCases(), kRays, 13), ""); }

@@ -221,6 +221,17 @@ TEST_P(KdPacket, SpheresCylindersAndConesAgreeWithSingleRays) {
         EXPECT_EQ(packetDisagreements(*tree, coneRays(600, 6), kPacketSize, kInfinity, &naive), "");
 }
 
+TEST_P(KdPacket, DisksAgreeWithSingleRays) {
+    SceneRecipe recipe{100, 50, Placement::Clustered, 27};
+    recipe.disks = 300;
+    const Scene scene = generateScene(recipe);
+    const NaiveAccelerator naive(scene.primitives);
+    for (const auto& tree : trees(scene.primitives)) {
+        EXPECT_EQ(packetDisagreements(*tree, coneRays(600, 7), kPacketSize, kInfinity, &naive), "");
+        EXPECT_EQ(packetDisagreements(*tree, coneRays(600, 8), kPacketSize, Real(1.2), &naive), "");
+    }
+}
+
 // Rays in the split planes, parallel to the axes and on the planes: packets with a zero direction
 // component go one by one, and the others must still break ties as single rays do.
 TEST_P(KdPacket, AxisAlignedRaysInSplitPlanesAgreeWithSingleRays) {

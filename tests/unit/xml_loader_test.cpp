@@ -403,6 +403,11 @@ const BadScene kBadScenes[] = {
     {"text", sceneWith("<objects>\nhello<sphere r=\"1\"/></objects>"), "s.xml:4: unexpected text in <objects>"},
     {"missing attribute", sceneWith("<objects>\n\n<sphere x=\"1\"/></objects>"),
      "s.xml:5: <sphere> needs attribute 'r'"},
+    {"disk without a normal", sceneWith("<objects>\n<disk r=\"1\" nx=\"1\" ny=\"0\"/></objects>"),
+     "s.xml:4: <disk> needs attribute 'nz'"},
+    {"unknown attribute of a disk",
+     sceneWith("<objects>\n<disk r=\"1\" nx=\"1\" ny=\"0\" nz=\"0\" h=\"1\"/></objects>"),
+     "s.xml:4: unknown attribute 'h' on <disk>"},
     {"not a number", sceneWith("<objects><sphere\n r=\"1cm\"/></objects>"),
      "s.xml:3: <sphere> attribute 'r': '1cm' is not a number"},
     {"empty number", sceneWith("<background r=\"\"/>"), "s.xml:3: <background> attribute 'r': '' is not a number"},
@@ -590,4 +595,22 @@ TEST(XmlLoader, CylindersAndConesUnderTransforms) {
     expectNear(k.top, {1, 0, 6});
     EXPECT_NEAR(k.baseRadius, 2, kTol);
     EXPECT_EQ(k.topRadius, 0);
+}
+
+TEST(XmlLoader, DisksUnderTransforms) {
+    const Scene scene = load(R"(<objects>
+        <scale x="1" y="1" z="2"><translate x="1">
+          <disk x="0" y="0" z="1" nx="1" ny="0" nz="1" r="0.5"/>
+        </translate></scale>
+        <disk x="0" y="0" z="0" nx="0" ny="3" nz="0" r="1"/>
+        <disk x="0" y="0" z="0" nx="0" ny="0" nz="0" r="1"/>
+        <disk x="0" y="0" z="0" nx="0" ny="0" nz="1" r="0"/></objects>)");
+    ASSERT_EQ(scene.looseObjects.count<Disk>(), 2u);  // those without a normal or a radius are dropped
+    EXPECT_EQ(scene.droppedDegenerate, 2u);
+    const Disk& placed = scene.looseObjects.all<Disk>()[0];
+    expectNear(placed.center, {1, 0, 2});
+    // A normal goes through the inverse transpose: the plane x + z = 1 becomes x + z / 2 = 2.
+    expectNear(placed.planeNormal, normalize(Vec3{1, 0, Real(0.5)}));
+    EXPECT_NEAR(placed.radius, 1, kTol);  // the largest stretch, as a sphere's
+    EXPECT_EQ(scene.looseObjects.all<Disk>()[1].planeNormal, Vec3(0, 1, 0));
 }

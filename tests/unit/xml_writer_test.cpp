@@ -36,7 +36,9 @@ const std::string kScene = R"(<scene>
       <quad material="blue"><vertex/><vertex x="1"/><vertex x="1" y="1"/><vertex y="1"/></quad>
       <cylinder x0="0.1" y0="-2" z0="3" x1="1" y1="1" z1="1" r="0.3" material="blue"/>
       <cone x0="1" y0="0" z0="0" r0="0.7" x1="0" y1="0.1" z1="0" r1="0"/>
+      <disk x="0.5" y="1" z="-2" nx="0.3" ny="1" nz="0" r="0.4" material="blue"/>
     </translate></scale></rotate>
+    <disk x="1" y="2" z="3" nx="0" ny="0" nz="1" r="2"/>
     <model name="balls"/>
     <translate x="5"><model name="balls" material="blue"/></translate>
   </objects>
