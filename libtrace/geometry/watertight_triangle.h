@@ -148,7 +148,8 @@ struct ShearedRayLanesOf {
               {Lanes::all(ray.origin[ray.kx]), Lanes::all(ray.origin[ray.ky]), Lanes::all(ray.origin[ray.kz])},
               Lanes::all(ray.sx), Lanes::all(ray.sy), Lanes::all(ray.sz), ray) {}
     // Rays lane by lane, each of them sheared along the axes of `axes`.
-    [[gnu::always_inline]] ShearedRayLanesOf(const L (&o)[3], L sxLanes, L syLanes, L szLanes, const ShearedRay& axes)
+    [[gnu::always_inline]] ShearedRayLanesOf(const L (&o)[3], const L& sxLanes, const L& syLanes, const L& szLanes,
+                                             const ShearedRay& axes)
         : origin{o[0], o[1], o[2]}, sx(sxLanes), sy(syLanes), sz(szLanes), kx(axes.kx), ky(axes.ky), kz(axes.kz) {}
 };
 using ShearedRayLanes = ShearedRayLanesOf<BaseLanes>;
