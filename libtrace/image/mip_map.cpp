@@ -123,9 +123,9 @@ float reduced(float s, Texture::Wrap wrap) {
     return s - std::floor(s);
 }
 
-// Texel index i of a side of n texels, wrapped; i within a period of `reduced`'s range and one beyond.
-int wrapped(int i, int n, Texture::Wrap wrap) {
-    if (unsigned(i) < unsigned(n)) return i;
+// Texel index i of a side of n texels, outside [0, n), wrapped; i within a period of `reduced`'s
+// range and one beyond.
+[[gnu::noinline]] int wrappedOutside(int i, int n, Texture::Wrap wrap) {
     switch (wrap) {
         case Texture::Wrap::Clamp:
             return std::clamp(i, 0, n - 1);
@@ -139,6 +139,11 @@ int wrapped(int i, int n, Texture::Wrap wrap) {
     }
     const int m = i % n;
     return m < 0 ? m + n : m;
+}
+
+// The same, the texels inside inline (nearly every one), the wrapping of those outside called.
+inline int wrapped(int i, int n, Texture::Wrap wrap) {
+    return unsigned(i) < unsigned(n) ? i : wrappedOutside(i, n, wrap);
 }
 
 // The footprint of a lookup in level 0's texels: its two axes (one pixel's step right and down).
@@ -205,14 +210,20 @@ private:
 
     // The four texels around (s, t) on `level`, weighted by distance, times `weight`, added to `sum`.
     void bilinear(const MipLevel<T>& level, float s, float t, float weight, float* sum) const {
-        const float x = reduced(s, how_.wrapS) * float(level.width) - 0.5f;
-        const float y = reduced(t, how_.wrapT) * float(level.height) - 0.5f;
+        bilinearReduced(level, reduced(s, how_.wrapS), reduced(t, how_.wrapT), weight, sum);
+    }
+
+    // The same at (s, t) reduced by each axis' wrap mode (`reduced`), as a trilinear probe reduces
+    // them once for its two levels.
+    void bilinearReduced(const MipLevel<T>& level, float s, float t, float weight, float* sum) const {
+        const float x = s * float(level.width) - 0.5f;
+        const float y = t * float(level.height) - 0.5f;
         const float x0 = std::floor(x), y0 = std::floor(y);
         const float fx = x - x0, fy = y - y0;
         const int xa = wrapped(int(x0), level.width, how_.wrapS), xb = wrapped(int(x0) + 1, level.width, how_.wrapS);
         const int ya = wrapped(int(y0), level.height, how_.wrapT), yb = wrapped(int(y0) + 1, level.height, how_.wrapT);
-        const std::size_t texels[4] = {level.texel(xa, ya), level.texel(xb, ya), level.texel(xa, yb),
-                                       level.texel(xb, yb)};
+        const std::size_t ra = level.row(ya), rb = level.row(yb), ca = level.column(xa), cb = level.column(xb);
+        const std::size_t texels[4] = {ra + ca, ra + cb, rb + ca, rb + cb};
         const float weights[4] = {weight * (1 - fx) * (1 - fy), weight * fx * (1 - fy), weight * (1 - fx) * fy,
                                   weight * fx * fy};
         float v[N];
@@ -232,8 +243,9 @@ private:
         if (level >= float(last)) return bilinear(levels_[std::size_t(last)], s, t, weight, sum);
         const int fine = int(level);
         const float f = level - float(fine);
-        bilinear(levels_[std::size_t(fine)], s, t, weight * (1 - f), sum);
-        bilinear(levels_[std::size_t(fine) + 1], s, t, weight * f, sum);
+        const float rs = reduced(s, how_.wrapS), rt = reduced(t, how_.wrapT);
+        bilinearReduced(levels_[std::size_t(fine)], rs, rt, weight * (1 - f), sum);
+        bilinearReduced(levels_[std::size_t(fine) + 1], rs, rt, weight * f, sum);
     }
 
     void trilinear(const TexCoord& at, float* sum) const {

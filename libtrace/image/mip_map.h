@@ -52,11 +52,15 @@ struct MipLevel {
     int tilesAcross = 0;  // tiles in a row of tiles (the width, row after row)
     std::vector<T> texels;
 
-    // Where texel (x, y) starts in `texels`, in texels (times the channels for values).
-    std::size_t texel(int x, int y) const {
-        const int inTile = (1 << tileShift) - 1;
-        const std::size_t tile = std::size_t(y >> tileShift) * std::size_t(tilesAcross) + std::size_t(x >> tileShift);
-        return (tile << (2 * tileShift)) + std::size_t(((y & inTile) << tileShift) + (x & inTile));
+    // Where texel (x, y) starts in `texels`, in texels (times the channels for values): the sum of
+    // a part for its row and one for its column, so that a probe computes two of each for its four.
+    std::size_t texel(int x, int y) const { return row(y) + column(x); }
+    std::size_t row(int y) const {
+        return (std::size_t(y >> tileShift) * std::size_t(tilesAcross) << (2 * tileShift)) +
+               std::size_t((y & ((1 << tileShift) - 1)) << tileShift);
+    }
+    std::size_t column(int x) const {
+        return (std::size_t(x >> tileShift) << (2 * tileShift)) + std::size_t(x & ((1 << tileShift) - 1));
     }
 };
 

@@ -43,12 +43,28 @@ inline std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) 
 }
 
 // Sobol dimension 0 is the van der Corput sequence (the index's bits reversed); dimension 1
-// has direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1), from the primitive polynomial x + 1.
+// has direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1), from the primitive polynomial x + 1:
+// its value is the XOR of v_k over the index's set bits k. It is linear in those bits, so a table
+// per byte of the index gives it in four lookups rather than a loop over 32 bits (the scrambled
+// indices the sampler asks for have bits set everywhere).
+struct SobolDimension1Table {
+    std::uint32_t byByte[4][256];
+
+    constexpr SobolDimension1Table() : byByte{} {
+        std::uint32_t direction[32] = {};
+        direction[0] = 0x80000000u;
+        for (int k = 1; k < 32; ++k) direction[k] = direction[k - 1] ^ (direction[k - 1] >> 1);
+        for (int b = 0; b < 4; ++b)
+            for (std::uint32_t byte = 0; byte < 256; ++byte)
+                for (int bit = 0; bit < 8; ++bit)
+                    if (byte >> bit & 1u) byByte[b][byte] ^= direction[8 * b + bit];
+    }
+};
+
 inline std::uint32_t sobolDimension1(std::uint32_t index) {
-    std::uint32_t x = 0;
-    for (std::uint32_t v = 0x80000000u; index != 0; index >>= 1, v ^= v >> 1)
-        if (index & 1u) x ^= v;
-    return x;
+    static constexpr SobolDimension1Table table;
+    return table.byByte[0][index & 0xffu] ^ table.byByte[1][index >> 8 & 0xffu] ^ table.byByte[2][index >> 16 & 0xffu] ^
+           table.byByte[3][index >> 24];
 }
 
 inline Real toUnit(std::uint32_t x) {
@@ -67,16 +83,31 @@ public:
     // The next two dimensions, in [0, 1)^2.
     std::pair<Real, Real> next2D() {
         using namespace sobol_detail;
-        const std::uint64_t h = mixBits(pixel_ + std::uint64_t(dimension_++) * kGoldenGamma);
-        const auto seed = [h](int k) { return std::uint32_t(mixBits(h + std::uint64_t(k)) >> 32); };
-        const std::uint32_t index = nestedUniformScramble(sample_, seed(0));
-        return {toUnit(nestedUniformScramble(reverseBits(index), seed(1))),
-                toUnit(nestedUniformScramble(sobolDimension1(index), seed(2)))};
+        const std::uint64_t h = nextDimension();
+        const std::uint32_t index = scrambledIndex(h);
+        return {first(index, h), toUnit(nestedUniformScramble(sobolDimension1(index), seed(h, 2)))};
     }
-    // The next dimension (the first of a pair, the second left unused).
-    Real next1D() { return next2D().first; }
+    // The next dimension: the first of a pair, the second left unused (and not computed).
+    Real next1D() {
+        const std::uint64_t h = nextDimension();
+        return first(scrambledIndex(h), h);
+    }
 
 private:
+    // The hash of the pixel and the pair of dimensions that seeds the pair's scrambles.
+    std::uint64_t nextDimension() { return mixBits(pixel_ + std::uint64_t(dimension_++) * kGoldenGamma); }
+    static std::uint32_t seed(std::uint64_t h, int k) { return std::uint32_t(mixBits(h + std::uint64_t(k)) >> 32); }
+    // The sample's index, shuffled for this pair (Burley's "shuffled" Sobol sequence).
+    std::uint32_t scrambledIndex(std::uint64_t h) const {
+        return sobol_detail::nestedUniformScramble(sample_, seed(h, 0));
+    }
+    // Dimension 0, scrambled: nestedUniformScramble(reverseBits(index)), whose two inner bit
+    // reversals cancel.
+    static Real first(std::uint32_t index, std::uint64_t h) {
+        using namespace sobol_detail;
+        return toUnit(reverseBits(laineKarrasPermutation(index, seed(h, 1))));
+    }
+
     std::uint64_t pixel_;
     std::uint32_t sample_;
     std::uint32_t dimension_ = 0;

@@ -92,57 +92,69 @@ PbrBsdf::PbrBsdf(const Color& baseColor, const MetallicRoughness& factors)
 
 // The metal's multiple-scattering lobe: F_ms (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)), a
 // diffuse-like lobe whose integral is F_ms (1 - E(mu_o)), the energy the single-scattering lobe
-// lost at wo's angle.
-Color PbrBsdf::multipleScattering(const Vec3& wo, const Vec3& wi) const {
+// lost at wo's angle; albedoO is E(mu_o).
+Color PbrBsdf::multipleScattering(const Vec3& wi, Real albedoO) const {
     if (f_.metallic <= 0 || !(averageAlbedo_ < 1)) return {};
-    const GgxAlbedoTable& table = GgxAlbedoTable::get();
-    const Real lost = (1 - table.albedo(wo.z, f_.roughness)) * (1 - table.albedo(wi.z, f_.roughness));
+    const Real lost = (1 - albedoO) * (1 - GgxAlbedoTable::get().albedo(wi.z, f_.roughness));
     return multipleScatteringFresnel_ * float(lost / (kPi * (1 - averageAlbedo_)));
+}
+
+Real PbrBsdf::albedoAt(const Vec3& wo) const {
+    return f_.metallic > 0 ? GgxAlbedoTable::get().albedo(wo.z, f_.roughness) : 0;
+}
+
+PbrBsdf::Pair PbrBsdf::pair(const Vec3& wo, const Vec3& wi, Real albedoO) const {
+    const Vec3 h = normalize(wo + wi);
+    return {h, ggxD(h, alpha_), smithLambda(wo, alpha_), albedoO};
 }
 
 Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi) const {
     if (wo.z <= 0 || wi.z <= 0) return {};
-    const Vec3 h = normalize(wo + wi);
-    const auto s = float(schlickWeight(dot(wo, h)));
+    return evaluate(wo, wi, pair(wo, wi, albedoAt(wo)));
+}
+
+Color PbrBsdf::evaluate(const Vec3& wo, const Vec3& wi, const Pair& p) const {
+    const auto s = float(schlickWeight(dot(wo, p.h)));
     const float dielectricF = f_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
     const Color metalF = base_ + (Color{1, 1, 1} + base_ * -1.0f) * s;
-    const auto dv =
-        float(ggxD(h, alpha_) / ((1 + smithLambda(wo, alpha_) + smithLambda(wi, alpha_)) * 4 * wo.z * wi.z));
+    const auto dv = float(p.d / ((1 + p.lambdaO + smithLambda(wi, alpha_)) * 4 * wo.z * wi.z));
     const float m = f_.metallic;
     const Color diffuse = base_ * ((1 - m) * (1 - dielectricF) / float(kPi));
     const Color glossy = (Color{1, 1, 1} * ((1 - m) * dielectricF) + metalF * m) * dv;
-    return (diffuse + glossy + multipleScattering(wo, wi) * m) * float(wi.z);
+    return (diffuse + glossy + multipleScattering(wi, p.albedoO) * m) * float(wi.z);
 }
 
 // The share of reflected light the glossy lobe carries at wo's angle, by Schlick's Fresnel at
-// the normal: the better the lobe choice follows f, the less noise.
-Real PbrBsdf::glossyProbability(const Vec3& wo) const {
+// the normal: the better the lobe choice follows f, the less noise. albedoO: albedoAt(wo).
+Real PbrBsdf::glossyProbability(const Vec3& wo, Real albedoO) const {
     const Real s = schlickWeight(wo.z);
     const Real dielectricF = f_.specular * (kDielectricF0 + (1 - kDielectricF0) * s);
     const Real metalF = luminance(base_) + (1 - luminance(base_)) * s;
     const Real m = f_.metallic;
-    const Real albedo = m > 0 ? GgxAlbedoTable::get().albedo(wo.z, f_.roughness) : 0;  // metals only
-    const Real glossy = (1 - m) * dielectricF + m * metalF * albedo;
+    const Real glossy = (1 - m) * dielectricF + m * metalF * albedoO;
     // the cosine-sampled share: the base, and the metal's multiple scattering
     const Real diffuse =
-        (1 - m) * (1 - dielectricF) * luminance(base_) + m * luminance(multipleScatteringFresnel_) * (1 - albedo);
+        (1 - m) * (1 - dielectricF) * luminance(base_) + m * luminance(multipleScatteringFresnel_) * (1 - albedoO);
     return glossy + diffuse > 0 ? glossy / (glossy + diffuse) : Real(0.5);
 }
 
-Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi) const { return pdf(wo, wi, glossyProbability(wo)); }
-
-Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi, Real glossyShare) const {
+Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     if (wo.z <= 0 || wi.z <= 0) return 0;
-    const Vec3 h = normalize(wo + wi);
+    const Real albedoO = albedoAt(wo);
+    return pdf(wo, wi, glossyProbability(wo, albedoO), pair(wo, wi, albedoO));
+}
+
+Real PbrBsdf::pdf(const Vec3& wo, const Vec3& wi, Real glossyShare, const Pair& p) const {
     // visible normals: D_wo(h) = G1(wo) (wo.h) D(h) / wo.z, and d(wi)/d(h) = 1 / (4 wo.h)
-    const Real glossy = smithG1(wo, alpha_) * ggxD(h, alpha_) / (4 * wo.z);
+    const Real glossy = 1 / (1 + p.lambdaO) * p.d / (4 * wo.z);
     const Real diffuse = wi.z / kPi;
     return glossyShare * glossy + (1 - glossyShare) * diffuse;
 }
 
 std::optional<BsdfSample> PbrBsdf::sample(const Vec3& wo, Real u1, Real u2, Real u3) const {
     if (wo.z <= 0) return std::nullopt;
-    const Real glossyShare = glossyProbability(wo);  // once: it costs a table lookup
+    const Real albedoO = albedoAt(wo);  // once: it costs a table lookup
+    const Real glossyShare = glossyProbability(wo, albedoO);
     Vec3 wi;
     if (u1 < glossyShare) {
         const Vec3 h = sampleVisibleNormal(wo, alpha_, u2, u3);
@@ -151,9 +163,10 @@ std::optional<BsdfSample> PbrBsdf::sample(const Vec3& wo, Real u1, Real u2, Real
         wi = sampleCosine(u2, u3);
     }
     if (wi.z <= 0) return std::nullopt;
-    const Real density = pdf(wo, wi, glossyShare);
+    const Pair p = pair(wo, wi, albedoO);
+    const Real density = pdf(wo, wi, glossyShare, p);
     if (!(density > 0)) return std::nullopt;
-    return BsdfSample{wi, evaluate(wo, wi) * float(1 / density), density};
+    return BsdfSample{wi, evaluate(wo, wi, p) * float(1 / density), density};
 }
 
 }  // namespace rt

@@ -35,9 +35,21 @@ public:
     static constexpr BsdfFlags flags() { return BsdfFlags::Reflection | BsdfFlags::Diffuse | BsdfFlags::Glossy; }
 
 private:
-    Real glossyProbability(const Vec3& wo) const;
-    Real pdf(const Vec3& wo, const Vec3& wi, Real glossyShare) const;
-    Color multipleScattering(const Vec3& wo, const Vec3& wi) const;
+    // What evaluate and pdf both need for a pair of directions above the surface, computed once
+    // per pair: sample() asks for both, and each costs a normalisation, D, Smith's Lambda at wo
+    // (a square root) and, for metals, a lookup of the albedo table at wo.
+    struct Pair {
+        Vec3 h;            // the half vector
+        Real d;            // GGX's D(h)
+        Real lambdaO;      // Smith's Lambda(wo)
+        Real albedoO = 0;  // E(wo), metals only (0 otherwise, unused)
+    };
+    Pair pair(const Vec3& wo, const Vec3& wi, Real albedoO) const;
+    Real albedoAt(const Vec3& wo) const;  // E(wo) for metals, else 0
+    Color evaluate(const Vec3& wo, const Vec3& wi, const Pair& p) const;
+    Real pdf(const Vec3& wo, const Vec3& wi, Real glossyShare, const Pair& p) const;
+    Real glossyProbability(const Vec3& wo, Real albedoO) const;
+    Color multipleScattering(const Vec3& wi, Real albedoO) const;
 
     Color base_;
     MetallicRoughness f_;
