@@ -5,7 +5,7 @@
 #include <string>
 
 #include "image/image_output.h"
-#include "render/framebuffer.h"
+#include "render/film/framebuffer.h"
 
 namespace rt {
 

@@ -12,8 +12,8 @@
 
 #include "core/names.h"
 #include "image/color_pipeline.h"
-#include "render/aov.h"
-#include "render/framebuffer.h"
+#include "render/film/aov.h"
+#include "render/film/framebuffer.h"
 
 namespace rt {
 

@@ -2,8 +2,8 @@
 
 #include <omp.h>
 
+#include "render/integrators/tracer.h"
 #include "render/renderer.h"
-#include "render/tracer.h"
 
 namespace rt {
 

@@ -17,9 +17,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/framebuffer.h"
+#include "render/film/framebuffer.h"
+#include "render/integrators/tracer.h"
 #include "render/render_settings.h"
-#include "render/tracer.h"
 
 namespace rt {
 

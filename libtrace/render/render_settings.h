@@ -7,8 +7,8 @@
 
 #include "accel/settings.h"
 #include "core/names.h"
-#include "render/aov.h"
-#include "render/framebuffer.h"
+#include "render/film/aov.h"
+#include "render/film/framebuffer.h"
 
 namespace rt {
 

@@ -12,10 +12,10 @@
 
 #include "core/stopwatch.h"
 #include "render/adaptive.h"
-#include "render/noise_threshold.h"
-#include "render/path_tracer.h"
-#include "render/pixel_estimate.h"
-#include "render/tracer.h"
+#include "render/film/noise_threshold.h"
+#include "render/film/pixel_estimate.h"
+#include "render/integrators/path_tracer.h"
+#include "render/integrators/tracer.h"
 
 namespace rt {
 

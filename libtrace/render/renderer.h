@@ -8,7 +8,7 @@
 #include <functional>
 
 #include "accel/accelerator.h"
-#include "render/framebuffer.h"
+#include "render/film/framebuffer.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"
 #include "render/texture.h"

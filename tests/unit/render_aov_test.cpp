@@ -1,6 +1,6 @@
 // AOVs: what each pixel's camera rays found, checked against values computed by hand and
 // against rt-inspect's per-pixel work.
-#include "render/aov.h"
+#include "render/film/aov.h"
 
 #include <cmath>
 #include <cstring>
@@ -10,7 +10,7 @@
 #include "core/error.h"
 #include "inspect/ray_statistics.h"
 #include "render/camera_rays.h"
-#include "render/path_tracer.h"
+#include "render/integrators/path_tracer.h"
 #include "render/renderer.h"
 #include "render/surface.h"
 #include "render_test_scenes.h"

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <functional>
 
-#include "render/environment_light.h"
+#include "render/lights/environment_light.h"
 #include "render/sampling.h"
 #include "render/sobol_sampler.h"
 #include "render_path_util.h"

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "accel/naive.h"
-#include "render/light_sample.h"
-#include "render/tracer.h"
+#include "render/integrators/tracer.h"
+#include "render/lights/light_sample.h"
 #include "render_test_scenes.h"
 
 using namespace rt;

@@ -9,9 +9,9 @@
 #include <cmath>
 
 #include "core/random.h"
-#include "render/light_distribution.h"
-#include "render/light_sample.h"
-#include "render/light_tree.h"
+#include "render/lights/light_distribution.h"
+#include "render/lights/light_sample.h"
+#include "render/lights/light_tree.h"
 #include "render_path_util.h"
 #include "render_test_scenes.h"
 

@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "core/error.h"
-#include "render/noise_threshold.h"
+#include "render/film/noise_threshold.h"
 #include "render_path_util.h"
 #include "test_util.h"
 

@@ -8,8 +8,8 @@
 #include <cstring>
 
 #include "accel/build.h"
+#include "render/integrators/tracer.h"
 #include "render/renderer.h"
-#include "render/tracer.h"
 #include "render_test_scenes.h"
 #include "scene/thesis_scenes.h"
 #include "simd_lanes.h"

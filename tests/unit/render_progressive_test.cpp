@@ -6,9 +6,9 @@
 
 #include "accel/naive.h"
 #include "core/error.h"
+#include "render/film/pixel_estimate.h"
+#include "render/integrators/path_tracer.h"
 #include "render/memory_estimate.h"
-#include "render/path_tracer.h"
-#include "render/pixel_estimate.h"
 #include "render/renderer.h"
 #include "render_test_scenes.h"
 #include "test_util.h"

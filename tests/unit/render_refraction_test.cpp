@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "accel/naive.h"
+#include "render/integrators/tracer.h"
 #include "render/texture.h"
-#include "render/tracer.h"
 #include "render_test_scenes.h"
 #include "test_util.h"
 

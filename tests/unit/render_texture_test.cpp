@@ -1,7 +1,7 @@
 #include "render/texture.h"
 
 #include "accel/naive.h"
-#include "render/tracer.h"
+#include "render/integrators/tracer.h"
 #include "render_test_scenes.h"
 #include "test_util.h"
 

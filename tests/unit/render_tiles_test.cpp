@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "render/tiles.h"
+#include "render/film/tiles.h"
 
 using namespace rt;
 

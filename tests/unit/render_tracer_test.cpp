@@ -1,4 +1,4 @@
-#include "render/tracer.h"
+#include "render/integrators/tracer.h"
 
 #include <climits>
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "image/color_pipeline.h"
-#include "render/framebuffer.h"
+#include "render/film/framebuffer.h"
 #include "render/renderer.h"
 
 namespace rt::tool::render {

@@ -8,7 +8,7 @@
 
 #include "core/json_writer.h"
 #include "os/peak_memory.h"
-#include "render/noise_threshold.h"
+#include "render/film/noise_threshold.h"
 #include "version.h"
 
 namespace rt::tool::render {

@@ -1,9 +1,9 @@
-#include "render/light_distribution.h"
+#include "render/lights/light_distribution.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "render/light_sample.h"
+#include "render/lights/light_sample.h"
 
 namespace rt {
 

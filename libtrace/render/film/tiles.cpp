@@ -1,4 +1,4 @@
-#include "render/tiles.h"
+#include "render/film/tiles.h"
 
 #include <string>
 

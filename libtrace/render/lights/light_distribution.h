@@ -18,8 +18,8 @@
 
 #include "core/color.h"
 #include "core/vec3.h"
-#include "render/environment_light.h"
-#include "render/light_tree.h"
+#include "render/lights/environment_light.h"
+#include "render/lights/light_tree.h"
 #include "render/render_settings.h"
 #include "scene/scene.h"
 

@@ -9,9 +9,9 @@
 #pragma once
 
 #include "accel/accelerator.h"
-#include "render/aov.h"
 #include "render/camera_rays.h"
-#include "render/environment_light.h"
+#include "render/film/aov.h"
+#include "render/lights/environment_light.h"
 #include "render/refraction.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"

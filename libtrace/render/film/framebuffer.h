@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/color.h"
-#include "render/aov.h"
+#include "render/film/aov.h"
 
 namespace rt {
 

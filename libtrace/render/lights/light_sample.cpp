@@ -1,4 +1,4 @@
-#include "render/light_sample.h"
+#include "render/lights/light_sample.h"
 
 #include <algorithm>
 #include <cmath>

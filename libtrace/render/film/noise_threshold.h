@@ -15,7 +15,7 @@
 // keeps small.
 #pragma once
 
-#include "render/pixel_estimate.h"
+#include "render/film/pixel_estimate.h"
 #include "render/render_settings.h"
 
 namespace rt {

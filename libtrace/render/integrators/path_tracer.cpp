@@ -1,13 +1,13 @@
-#include "render/path_tracer.h"
+#include "render/integrators/path_tracer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
-#include "render/light_sample.h"
+#include "render/film/pixel_estimate.h"
+#include "render/lights/light_sample.h"
 #include "render/materials/material.h"
 #include "render/normal_map.h"
-#include "render/pixel_estimate.h"
 #include "render/refraction.h"
 
 namespace rt {

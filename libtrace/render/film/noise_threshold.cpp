@@ -1,4 +1,4 @@
-#include "render/noise_threshold.h"
+#include "render/film/noise_threshold.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,9 +9,9 @@
 #pragma once
 
 #include "accel/accelerator.h"
-#include "render/aov.h"
 #include "render/camera_rays.h"
-#include "render/light_distribution.h"
+#include "render/film/aov.h"
+#include "render/lights/light_distribution.h"
 #include "render/materials/bsdf.h"
 #include "render/render_settings.h"
 #include "render/render_stats.h"

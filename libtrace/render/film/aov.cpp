@@ -1,4 +1,4 @@
-#include "render/aov.h"
+#include "render/film/aov.h"
 
 #include <algorithm>
 #include <sstream>

@@ -1,15 +1,15 @@
-#include "render/tracer.h"
+#include "render/integrators/tracer.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
 
-#include "render/light_sample.h"
+#include "render/film/pixel_estimate.h"
+#include "render/lights/light_sample.h"
 #include "render/materials/material.h"
 #include "render/materials/phong.h"
 #include "render/normal_map.h"
-#include "render/pixel_estimate.h"
 
 namespace rt {
 

@@ -1,4 +1,4 @@
-#include "render/environment_light.h"
+#include "render/lights/environment_light.h"
 
 #include <algorithm>
 #include <cmath>

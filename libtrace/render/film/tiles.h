@@ -4,7 +4,7 @@
 // size; tile sizes differ by at most one pixel.
 #pragma once
 
-#include "render/framebuffer.h"
+#include "render/film/framebuffer.h"
 
 namespace rt {
 
