@@ -62,7 +62,7 @@ struct ImageOutputSettings {
     // RGBA: alpha is the pixel's coverage (0 where every camera ray missed); EXR colours are
     // premultiplied by it, PNG and TGA colours straight. Without it, RGB over the background.
     bool alpha = false;
-    std::vector<Aov> aovs;  // EXR only: these AOVs' channels after the colour (render/aov.h)
+    std::vector<Aov> aovs;  // EXR only: these AOVs' channels after the colour (render/film/aov.h)
     ColorSettings color;
 };
 

@@ -16,11 +16,11 @@ namespace rt {
 // A pixel: the framebuffer's float RGB and alpha and the output's converted copies (4096 x 4096
 // to PNG peaked 1.24 GB above the tool's start, 75.5 bytes a pixel).
 constexpr std::uint64_t kRenderBytesPerPixel = 80;
-// With --aov, a pixel's PixelAovs (render/aov.h) and their channels in the EXR (not measured).
+// With --aov, a pixel's PixelAovs (render/film/aov.h) and their channels in the EXR (not measured).
 constexpr std::uint64_t kAovBytesPerPixel = 160;
 // With the path tracer, which renders in passes (render/renderer.h): each pixel's running
-// estimate (render/pixel_estimate.h) twice, as the finished passes left it and with the pass
-// under way; with --aov also its AovSums (render/aov.h) twice.
+// estimate (render/film/pixel_estimate.h) twice, as the finished passes left it and with the pass
+// under way; with --aov also its AovSums (render/film/aov.h) twice.
 constexpr std::uint64_t kPathPassBytesPerPixel = 104;
 constexpr std::uint64_t kPathAovPassBytesPerPixel = 272;
 // A primitive: the scene's geometry and the KD tree's build at its peak (boxes, events of three

@@ -20,14 +20,14 @@ inline constexpr int kMaxBounces = 1000;      // --max-bounces
 inline constexpr int kMaxAdaptiveGrid = 256;  // --adaptive: the coarsest corner spacing
 inline constexpr double kMaxTimeLimit = 1e9;  // --time-limit, seconds: about 32 years
 
-// --integrator: the thesis's Whitted ray tracer (render/tracer.h) or the path tracer
-// (render/path_tracer.h, docs/path-tracing.md).
+// --integrator: the thesis's Whitted ray tracer (render/integrators/tracer.h) or the path tracer
+// (render/integrators/path_tracer.h, docs/path-tracing.md).
 enum class Integrator { Whitted, Path };
 inline constexpr NamedValues<Integrator, 2> kIntegratorNames{
     {{"whitted", Integrator::Whitted}, {"path", Integrator::Path}}};
 
 // --light-sampler: how the path tracer's next-event estimation picks a light
-// (render/light_distribution.h): a light tree over the local lights (the default), or in
+// (render/lights/light_distribution.h): a light tree over the local lights (the default), or in
 // proportion to power alone.
 enum class LightSampler { Tree, Power };
 inline constexpr NamedValues<LightSampler, 2> kLightSamplerNames{
@@ -56,7 +56,7 @@ struct RenderSettings {
     int distributedSamples = 128;  // -r
     int threads = 0;               // --threads; 0 lets OpenMP use every core
     std::uint32_t seed = 0;        // --seed: another seed gives independent noise, as deterministic
-    std::vector<Aov> aovs;         // --aov: fill each pixel's PixelAovs (render/aov.h) too, for these layers
+    std::vector<Aov> aovs;         // --aov: fill each pixel's PixelAovs (render/film/aov.h) too, for these layers
     Integrator integrator = Integrator::Whitted;
     int maxBounces = 8;       // --max-bounces: the path tracer's surface interactions after the camera ray
     float clampRadiance = 0;  // --clamp: the path tracer's indirect samples capped at this value; 0 is off
@@ -66,7 +66,7 @@ struct RenderSettings {
     // adaptiveThreshold (linear colour and alpha) and see the same object is interpolated.
     int adaptiveGrid = 0;
     float adaptiveThreshold = 0.02f;  // --adaptive-threshold
-    // --noise-threshold (render/noise_threshold.h): the path tracer stops sampling a pixel once
+    // --noise-threshold (render/film/noise_threshold.h): the path tracer stops sampling a pixel once
     // the relative standard error of its mean luminance is below this, judged first after
     // adaptiveMinSamples samples (0: Cycles' rule from the threshold); 0 is off, every pixel -S.
     float noiseThreshold = 0;
@@ -75,7 +75,7 @@ struct RenderSettings {
     // last whole pass (render/renderer.h); a render with no whole pass yet keeps nothing.
     double timeLimitSeconds = 0;
     // --packets: the Whitted tracer finds the first hits of one-sample pixels' camera rays eight
-    // at a time with Accelerator::intersectPacket (render/tracer.h); the same bits either way.
+    // at a time with Accelerator::intersectPacket (render/integrators/tracer.h); the same bits either way.
     bool packets = true;
 
     PixelWindow window() const { return region.value_or(PixelWindow{0, 0, width, height}); }

@@ -213,7 +213,7 @@ void writePixel(const PassState& state, std::size_t i, int x, int y, Framebuffer
 // short by --time-limit or the watcher's stop can be dropped whole: the picture goes back to
 // `done`, the passes that finished. The watcher sees the picture after every pass, and may end
 // the render there (endAfterPass). With --noise-threshold a pixel whose own samples say it has
-// converged is skipped (render/noise_threshold.h), and the passes end once every pixel has.
+// converged is skipped (render/film/noise_threshold.h), and the passes end once every pixel has.
 Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
                        const RenderProgress& progress, const RenderWatch& watch) {
     const PixelWindow w = settings.window();

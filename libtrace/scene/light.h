@@ -28,7 +28,7 @@ struct Light {
     // rt extension: a point light that belongs to the camera rendered, at its origin wherever
     // --look-from, --frame or --orbit put it (Scene::placeHeadlights): the light a model without
     // lights gets. The path tracer leaves it out of a scene with emissive materials, which light
-    // it themselves (render/light_distribution.h).
+    // it themselves (render/lights/light_distribution.h).
     bool headlight = false;
 };
 

@@ -121,7 +121,7 @@ struct Model {
     std::size_t sphereCount() const { return sphereData.size() / 4; }
 };
 
-// rt extension: the path tracer's sky as an equirectangular image (render/environment_light.h,
+// rt extension: the path tracer's sky as an equirectangular image (render/lights/environment_light.h,
 // <environment> in docs/scene-format.md).
 struct Environment {
     std::uint32_t texture = 0;  // an image texture

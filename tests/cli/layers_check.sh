@@ -31,16 +31,28 @@ expect_one_error check-layers "libtrace/scene/scene.cpp:$line: scene/ may not in
 
 # A third-party library outside the layer that links it.
 fresh_copy
-line=$(add_line "$WORK/libtrace/render/tracer.cpp" '#include <assimp/scene.h>')
+line=$(add_line "$WORK/libtrace/render/renderer.cpp" '#include <assimp/scene.h>')
 expect_exit 1 "$check" "$WORK/libtrace"
-expect_one_error check-layers "libtrace/render/tracer.cpp:$line: render/ may not include <assimp/scene.h> (only io/ may)"
+expect_one_error check-layers "libtrace/render/renderer.cpp:$line: render/ may not include <assimp/scene.h> (only io/ may)"
 
 # A sub-folder below the rest of its layer including a header of the layer it may not use: the
 # BSDFs (render/materials/) know nothing of the integrators.
 fresh_copy
-line=$(add_line "$WORK/libtrace/render/materials/bsdf.cpp" '#include "render/path_tracer.h"')
+line=$(add_line "$WORK/libtrace/render/materials/bsdf.cpp" '#include "render/integrators/path_tracer.h"')
 expect_exit 1 "$check" "$WORK/libtrace"
-expect_one_error check-layers "libtrace/render/materials/bsdf.cpp:$line: render/materials/ may not include \"render/path_tracer.h\""
+expect_one_error check-layers "libtrace/render/materials/bsdf.cpp:$line: render/materials/ may not include \"render/integrators/path_tracer.h\""
+
+# Such sub-folders including each other: the lights know nothing of the film, nor the materials of
+# the lights (that the integrators may use all three, whole folders in their row, the clean copy
+# above shows).
+fresh_copy
+lights=$(add_line "$WORK/libtrace/render/lights/light_tree.cpp" '#include "render/film/aov.h"')
+materials=$(add_line "$WORK/libtrace/render/materials/bsdf.cpp" '#include "render/lights/light_sample.h"')
+expect_exit 1 "$check" "$WORK/libtrace"
+[ "$(wc -l <"$WORK/stderr")" = 2 ] &&
+    grep -q "light_tree.cpp:$lights: render/lights/ may not include \"render/film/aov.h\"" "$WORK/stderr" &&
+    grep -q "bsdf.cpp:$materials: render/materials/ may not include \"render/lights/light_sample.h\"" "$WORK/stderr" ||
+    fail "expected the two forbidden includes between sub-folders, got: $(cat "$WORK/stderr")"
 
 # A folder the table does not know.
 fresh_copy

@@ -1,4 +1,4 @@
-// The path tracer's sky (render/environment_light.h): the equirectangular mapping, an image of
+// The path tracer's sky (render/lights/environment_light.h): the equirectangular mapping, an image of
 // one colour lighting as the same background colour does, and importance sampling of a small
 // bright spot: the same mean as uniform sampling, with far less variance.
 #include <cmath>

@@ -1,5 +1,5 @@
-// The light tree (render/light_tree.h) and the light distribution that uses it
-// (render/light_distribution.h): next-event estimation of the direct light at a point, through
+// The light tree (render/lights/light_tree.h) and the light distribution that uses it
+// (render/lights/light_distribution.h): next-event estimation of the direct light at a point, through
 // the tree or in proportion to power, agrees with the sum over every light computed without
 // sampling; the tree's choice is noticeably less noisy among many small lights; densities for
 // MIS agree with the samples; a diffuse sphere inside an enclosure of emissive triangles shows

@@ -1,4 +1,4 @@
-// Noise-adaptive sampling, --noise-threshold (render/noise_threshold.h): where a pixel stops, that
+// Noise-adaptive sampling, --noise-threshold (render/film/noise_threshold.h): where a pixel stops, that
 // it stops after the same sample for any thread count or region split, and that the samples it
 // saves are worth it: at the same total of samples, the error against a converged reference is no
 // larger than uniform sampling's.

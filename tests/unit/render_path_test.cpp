@@ -1,4 +1,4 @@
-// The path tracer (render/path_tracer.h) against what can be computed: energy in a white
+// The path tracer (render/integrators/path_tracer.h) against what can be computed: energy in a white
 // furnace, a plane under a uniform sky, a sphere under a point light, the GGX lobe's albedo by
 // two independent estimators, and the same bits for any thread count and region split.
 #include <cmath>

@@ -1,5 +1,5 @@
 // The renderer's passes, --time-limit, the variance AOV and the estimate -p prints
-// (render/renderer.h, render/pixel_estimate.h).
+// (render/renderer.h, render/film/pixel_estimate.h).
 #include <atomic>
 #include <cmath>
 #include <cstring>

@@ -51,7 +51,7 @@ struct RenderOptions {
     bool preprocessOnly = false;                 // -p
     std::optional<std::string> statsJson;        // --stats-json FILE ("-" is standard output)
     std::optional<bool> alpha;                   // --alpha on|off; default on where the format has alpha
-    std::optional<std::string> aovs;             // --aov LIST: AOV layers in the EXR (render/aov.h)
+    std::optional<std::string> aovs;             // --aov LIST: AOV layers in the EXR (render/film/aov.h)
     // The camera: --camera NAME|INDEX, then --look-from, --look-at, --up (X,Y,Z), --fov, --frame.
     std::optional<std::string> camera;
     std::optional<std::string> lookFrom, lookAt, up;

@@ -6,9 +6,9 @@
 // intersection tests of the pixel's camera rays, and of every ray they spawned (a whole path
 // with the path tracer). Both integrators sum them in AovSums, sample by sample. The variance
 // layer is a noise figure: the variance of the pixel's mean colour, per channel, estimated from
-// its samples (render/pixel_estimate.h); it falls as 1/N with N samples, and is 0 with one. The
+// its samples (render/film/pixel_estimate.h); it falls as 1/N with N samples, and is 0 with one. The
 // samples layer is the pixel's count of camera samples: -S everywhere, except where the path
-// tracer's --noise-threshold stopped a pixel early (render/noise_threshold.h).
+// tracer's --noise-threshold stopped a pixel early (render/film/noise_threshold.h).
 #pragma once
 
 #include <cstdint>

@@ -27,7 +27,7 @@ struct PixelWindow {
 
 class Framebuffer {
 public:
-    // With `aovs`, each pixel also has its PixelAovs (render/aov.h).
+    // With `aovs`, each pixel also has its PixelAovs (render/film/aov.h).
     Framebuffer(int fullWidth, int fullHeight, const PixelWindow& window, const Color& background = {},
                 bool aovs = false)
         : fullWidth_(fullWidth),

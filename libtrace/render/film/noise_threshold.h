@@ -2,7 +2,7 @@
 // tracer stops sampling a pixel once its estimated error is below the threshold, so that the
 // samples go where the noise is. The error is the relative standard error of the pixel's mean
 // luminance, sqrt(Var[Y] / n) / (mean Y + kDarkLuminance), from the running statistics of its
-// own samples (render/pixel_estimate.h); kDarkLuminance keeps nearly black pixels, whose
+// own samples (render/film/pixel_estimate.h); kDarkLuminance keeps nearly black pixels, whose
 // relative error is undefined, from taking every sample for noise no one sees.
 //
 // A pixel is judged only at fixed sample counts, the multiples of kNoiseCheckInterval from

@@ -5,7 +5,7 @@
 // in render/renderer.cpp): K passes give the bits of -S K. The variance follows Welford's
 // running update (Welford 1962; Knuth TAOCP 2, 4.2.2), stable where sum-of-squares is not; the
 // luminance's own variance (not the channels' weighted sum, which leaves out their covariance) is
-// what --noise-threshold stops a pixel on (render/noise_threshold.h).
+// what --noise-threshold stops a pixel on (render/film/noise_threshold.h).
 #pragma once
 
 #include "core/color.h"

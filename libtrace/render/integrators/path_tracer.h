@@ -3,9 +3,9 @@
 // next-event estimation, combined with the BSDF's own samples by multiple importance sampling
 // with the power heuristic (Veach 1997, ch. 9); Russian roulette after three bounces; the BSDFs of
 // render/materials/ (bsdfAt: the glTF metallic-roughness BRDF, glass) with Beer-Lambert absorption; the sky a colour or
-// an image (render/environment_light.h); per-pixel Owen-scrambled Sobol samples (render/sobol_sampler.h), so the image
-// has the same bits for any thread count or region split. docs/path-tracing.md describes the model, the rule for thesis
-// materials and the validation.
+// an image (render/lights/environment_light.h); per-pixel Owen-scrambled Sobol samples (render/sobol_sampler.h), so the
+// image has the same bits for any thread count or region split. docs/path-tracing.md describes the model, the rule for
+// thesis materials and the validation.
 #pragma once
 
 #include "accel/accelerator.h"
@@ -30,7 +30,7 @@ public:
                const ImageTextures* images = nullptr);
 
     // The mean of the pixel's -S paths; coverage is the fraction whose camera ray hit something;
-    // `aovs`, if given, receives the pixel's AOVs (render/aov.h). Non-finite samples count as
+    // `aovs`, if given, receives the pixel's AOVs (render/film/aov.h). Non-finite samples count as
     // black and are recorded in counters.nonFinite.
     Color pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs = nullptr) const;
 

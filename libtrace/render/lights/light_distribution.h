@@ -1,14 +1,14 @@
 // What the path tracer's next-event estimation samples: the scene's lights (point, spot and
 // directional, each a delta light), its emissive triangles as area lights (emitting from their
 // front, the side their winding faces), and the environment (a non-black background, or an image:
-// render/environment_light.h). Emissive spheres, cylinders and cones are not sampled: they light the
+// render/lights/environment_light.h). Emissive spheres, cylinders and cones are not sampled: they light the
 // scene through the paths that hit them (docs/path-tracing.md).
 //
 // LightSampler::Power picks each light in proportion to an estimate of the power it sends into the
 // scene (pbrt-v4's power light sampler). LightSampler::Tree (the default) does so between the lights
 // that are everywhere alike (the environment, directional lights, the thesis's point lights without
 // falloff) and the local lights as one group, and picks within that group by a light tree
-// (render/light_tree.h), by what each light can send to the shading point.
+// (render/lights/light_tree.h), by what each light can send to the shading point.
 #pragma once
 
 #include <cstdint>
