@@ -26,7 +26,8 @@
 # relative error of what noise is left. Each against its own reference, so that the differences of
 # modelling the table's first columns measure do not count as noise (the reference's own noise adds
 # a little to both). The set holds a textured model (the Duck) and a generated terrain of 1,002,528
-# triangles (an OBJ written into the work folder).
+# triangles (an OBJ written into the work folder), and the clear coat: KHR_materials_clearcoat's
+# factors of the Khronos ClearCoatTest model on generated spheres (a glTF written there too).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -137,6 +138,101 @@ with open(path, "w") as obj:
 EOF
 }
 
+# ClearCoatTest's factors (glTF-Sample-Assets, Models/ClearCoatTest; its textures and coat normals
+# left out) on spheres, as docs/images/clearcoat-scene.sh places them for rt, written as a glTF that
+# both renderers import: the red base (0.5, 0.02, 0.01; roughness 0.44) under clearcoat 0, 0.5 and 1
+# (coat roughness 0.03), the blue base (0.013, 0.022, 0.109; roughness 0.6) under a full coat of
+# roughness 0 to 1, a grey floor and an emissive panel above the camera: makeClearcoat OUT.gltf
+makeClearcoat() {
+    "$python" - "$1" <<'EOF'
+import base64, json, math, struct, sys
+
+path = sys.argv[1]
+positions, normals, indices = [], [], []
+primitives = []  # (first index, index count, material)
+
+def add(verts, norms, tris, material):
+    base = len(positions)
+    first = len(indices)
+    positions.extend(verts)
+    normals.extend(norms)
+    for t in tris:
+        indices.extend(i + base for i in t)
+    primitives.append((first, len(indices) - first, material))
+
+def sphere(cx, cy, cz, r, material, rings=24, segments=48):
+    verts, norms, tris = [], [], []
+    for i in range(rings + 1):
+        theta = math.pi * i / rings
+        for j in range(segments + 1):
+            phi = 2 * math.pi * j / segments
+            n = (math.sin(theta) * math.cos(phi), math.cos(theta), math.sin(theta) * math.sin(phi))
+            norms.append(n)
+            verts.append((cx + r * n[0], cy + r * n[1], cz + r * n[2]))
+    for i in range(rings):
+        for j in range(segments):
+            a = i * (segments + 1) + j
+            b = a + segments + 1
+            if i > 0: tris.append((a, a + 1, b))
+            if i < rings - 1: tris.append((a + 1, b + 1, b))
+    add(verts, norms, tris, material)
+
+# A horizontal quad at height y, its corners counter-clockwise seen from its front (glTF's rule).
+def quad(y, corners, normal, material):
+    add([(x, y, z) for x, z in corners], [normal] * 4, [(0, 1, 2), (0, 2, 3)], material)
+
+materials = [
+    {"name": "panel", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
+     "emissiveFactor": [1, 1, 1], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 6}}},
+    {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0,
+                                               "roughnessFactor": 0.9}},
+]
+def coated(name, color, roughness, coat, coat_roughness):
+    m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": color + [1], "metallicFactor": 0,
+                                                "roughnessFactor": roughness}}
+    if coat > 0:
+        m["extensions"] = {"KHR_materials_clearcoat": {"clearcoatFactor": coat,
+                                                       "clearcoatRoughnessFactor": coat_roughness}}
+    materials.append(m)
+    return len(materials) - 1
+
+# The camera looks along +z: +x is on the picture's left.
+quad(6, [(3, -8), (3, -5), (-3, -5), (-3, -8)], (0, -1, 0), 0)       # facing down, above the camera
+quad(-2.1, [(-30, 30), (30, 30), (30, -30), (-30, -30)], (0, 1, 0), 1)  # facing up
+for x, coat in ((2.4, 0), (0, 0.5), (-2.4, 1)):
+    sphere(x, 1.1, 0, 1, coated("red%g" % coat, [0.5, 0.02, 0.01], 0.44, coat, 0.03))
+for k, rough in enumerate((0, 0.25, 0.5, 0.75, 1)):
+    sphere(4 - 2 * k, -1.1, 0, 0.9, coated("blue%g" % rough, [0.013, 0.022, 0.109], 0.6, 1, rough))
+
+blob = b"".join(struct.pack("<I", i) for i in indices)
+index_bytes = len(blob)
+blob += b"".join(struct.pack("<3f", *p) for p in positions)
+blob += b"".join(struct.pack("<3f", *n) for n in normals)
+n = len(positions)
+lo = [min(p[a] for p in positions) for a in range(3)]
+hi = [max(p[a] for p in positions) for a in range(3)]
+views = [{"buffer": 0, "byteOffset": 0, "byteLength": index_bytes, "target": 34963},
+         {"buffer": 0, "byteOffset": index_bytes, "byteLength": 12 * n, "target": 34962},
+         {"buffer": 0, "byteOffset": index_bytes + 12 * n, "byteLength": 12 * n, "target": 34962}]
+accessors = [{"bufferView": 1, "componentType": 5126, "count": n, "type": "VEC3", "min": lo, "max": hi},
+             {"bufferView": 2, "componentType": 5126, "count": n, "type": "VEC3"}]
+meshes = []
+for first, count, material in primitives:
+    accessors.append({"bufferView": 0, "byteOffset": 4 * first, "componentType": 5125, "count": count,
+                      "type": "SCALAR"})
+    meshes.append({"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": len(accessors) - 1,
+                                   "material": material}]})
+doc = {"asset": {"version": "2.0", "generator": "rt bench/compare_cycles.sh (ClearCoatTest's factors)"},
+       "extensionsUsed": ["KHR_materials_clearcoat", "KHR_materials_emissive_strength"],
+       "scene": 0, "scenes": [{"nodes": list(range(len(meshes)))}],
+       "nodes": [{"mesh": i} for i in range(len(meshes))], "meshes": meshes, "materials": materials,
+       "accessors": accessors, "bufferViews": views,
+       "buffers": [{"byteLength": len(blob),
+                    "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}]}
+json.dump(doc, open(path, "w"))
+EOF
+}
+
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, $samples paths per pixel in both"
 equal_head="" equal_rule=""
 if [[ "$equal_time" != 0 ]]; then
@@ -210,4 +306,8 @@ compare Duck "$models/glb/Duck/Duck.glb" 320 240 0.5 no
 if [[ -z "$only" || "$only" == Terrain1M ]]; then
     makeTerrain "$work/terrain1m.obj"
     compare Terrain1M "$work/terrain1m.obj" 320 240 0.5 no 0,0.9,1.7 0,-0.1,0 50
+fi
+if [[ -z "$only" || "$only" == ClearCoat ]]; then
+    makeClearcoat "$work/clearcoat.gltf"
+    compare ClearCoat "$work/clearcoat.gltf" 200 150 0.25 no 0,0.3,-13 0,0,0 52
 fi
