@@ -1,4 +1,4 @@
-// Light types (render/light_sample.*, scene/light.h): each matches its formula at measured
+// Light types (render/lights/light_sample.*, scene/light.h): each matches its formula at measured
 // points of a white diffuse floor, with the cosine, the inverse-square falloff, the range
 // window and the spot cone written out here independently of the renderer's code.
 #include <gtest/gtest.h>
@@ -9,6 +9,7 @@
 #include "render/integrators/tracer.h"
 #include "render/lights/light_sample.h"
 #include "render_test_scenes.h"
+#include "scene/spot_cone.h"
 
 using namespace rt;
 
@@ -102,6 +103,26 @@ TEST(Lights, SpotConeFallsOffAsKhrLightsPunctualSays) {
         EXPECT_NEAR(floorAt(s, 0, x), 2 / d2 * c * t * t, 1e-5) << angle;
     }
     EXPECT_EQ(floorAt(s, 0, 3 * std::tan(31 * kDegree)), 0.0f);
+}
+
+// The one conversion of a spot's angles (scene/spot_cone.h), which the sampler, the
+// light tree and the power estimate share: radians, the inner angle no wider than the outer, and
+// the sampler's falloff reaching 1 and 0 at the cone's two cosines.
+TEST(Lights, SpotConeOfConvertsTheAnglesOnceForEveryUser) {
+    Light light;
+    light.type = Light::Type::Spot;
+    light.innerConeDegrees = 10;
+    light.outerConeDegrees = 30;
+    const SpotCone cone = spotConeOf(light);
+    EXPECT_NEAR(cone.inner, 10 * kDegree, 1e-6);
+    EXPECT_NEAR(cone.outer, 30 * kDegree, 1e-6);
+    EXPECT_EQ(cone.cosInner, std::cos(cone.inner));
+    EXPECT_EQ(cone.cosOuter, std::cos(cone.outer));
+    EXPECT_NEAR(spotCone(light, cone.cosInner), 1, 1e-6);
+    EXPECT_EQ(spotCone(light, cone.cosOuter), 0);
+
+    light.innerConeDegrees = 40;  // past the outer angle: a hard edge at the outer one
+    EXPECT_EQ(spotConeOf(light).inner, spotConeOf(light).outer);
 }
 
 // A directional light is infinitely far: an occluder 1000 units up its beam still shadows

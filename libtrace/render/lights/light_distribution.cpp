@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/lights/light_sample.h"
+#include "scene/spot_cone.h"
 
 namespace rt {
 
@@ -30,10 +31,8 @@ double powerOf(const Light& light, double sphereArea) {
     const double intensity = luminance(light.color);
     if (!local(light)) return sphereArea * intensity;
     if (light.type != Light::Type::Spot) return 4 * kPi * intensity;
-    constexpr double kDegrees = kPi / 180;
-    const double cosInner = std::cos(std::min(light.innerConeDegrees, light.outerConeDegrees) * kDegrees);
-    const double cosOuter = std::cos(light.outerConeDegrees * kDegrees);
-    return 2 * kPi * intensity * (1 - (cosInner + cosOuter) / 2);
+    const SpotCone cone = spotConeOf(light);
+    return 2 * kPi * intensity * (1 - (double(cone.cosInner) + double(cone.cosOuter)) / 2);
 }
 
 LightBounds boundsOf(const Light& light) {
@@ -41,11 +40,9 @@ LightBounds boundsOf(const Light& light) {
     b.box.extend(light.position);
     b.intensity = Real(luminance(light.color));  // the irradiance it gives at distance 1
     if (light.type == Light::Type::Spot) {
-        constexpr Real kDegrees = kPi / 180;
-        const Real inner = Real(std::min(light.innerConeDegrees, light.outerConeDegrees)) * kDegrees;
-        const Real outer = Real(light.outerConeDegrees) * kDegrees;
-        b.normals = {light.direction, std::cos(inner)};
-        b.cosEmission = std::cos(std::max(outer - inner, kMinSpotFalloff));
+        const SpotCone cone = spotConeOf(light);
+        b.normals = {light.direction, cone.cosInner};
+        b.cosEmission = std::cos(std::max(cone.outer - cone.inner, kMinSpotFalloff));
     } else {
         b.normals.cosSpread = -1;  // every way alike
     }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/spot_cone.h"
+
 namespace rt {
 
 Real inverseSquareFalloff(Real distance, Real range) {
@@ -13,10 +15,9 @@ Real inverseSquareFalloff(Real distance, Real range) {
 }
 
 Real spotCone(const Light& light, Real cosineToAxis) {
-    constexpr Real kDegrees = kPi / 180;
-    const Real cosOuter = std::cos(Real(light.outerConeDegrees) * kDegrees);
-    const Real scale = 1 / std::max(Real(0.001), std::cos(Real(light.innerConeDegrees) * kDegrees) - cosOuter);
-    const Real a = std::clamp((cosineToAxis - cosOuter) * scale, Real(0), Real(1));
+    const SpotCone cone = spotConeOf(light);
+    const Real scale = 1 / std::max(Real(0.001), cone.cosInner - cone.cosOuter);
+    const Real a = std::clamp((cosineToAxis - cone.cosOuter) * scale, Real(0), Real(1));
     return a * a;
 }
 
