@@ -26,12 +26,13 @@ inspect    | core geometry accel scene render     |
 # them that they may include (besides their own folder and the layers of their layer's row; an
 # entry ending in / is a whole sub-folder), lowest first: the BSDFs and material evaluation
 # (materials/), the lights and how a light is picked (lights/) and the pixels' store and
-# statistics (film/) know nothing of the integrators nor of each other; the integrators
-# (integrators/) use all three. What is left in render/ is what they share (surfaces, textures,
+# statistics (film/) know nothing of the integrators; of each other, only lights/ reads
+# materials/ (an emissive surface is a light, weighed by its material's emission); the
+# integrators (integrators/) use all three. What is left in render/ is what they share (surfaces, textures,
 # sampling, camera rays, the settings) and what drives them (the renderer, adaptive subsampling).
 readonly INNER='
 render/materials   | render/refraction.h render/sampling.h render/sobol_sampler.h render/surface.h render/texture.h
-render/lights      | render/render_settings.h render/texture.h
+render/lights      | render/materials/ render/render_settings.h render/texture.h
 render/film        | render/render_settings.h render/render_stats.h render/surface.h
 render/integrators | render/film/ render/lights/ render/materials/ render/camera_rays.h render/normal_map.h render/refraction.h render/render_settings.h render/render_stats.h render/sampling.h render/sobol_sampler.h render/surface.h render/texture.h
 '

@@ -3,9 +3,9 @@
 // bright spot: the same mean as uniform sampling, with far less variance.
 #include <cmath>
 #include <cstdio>
-#include <functional>
 
 #include "render/lights/environment_light.h"
+#include "render/lights/light_distribution.h"
 #include "render/sampling.h"
 #include "render/sobol_sampler.h"
 #include "render_path_util.h"
@@ -15,20 +15,6 @@
 using namespace rt;
 
 namespace {
-
-// Every image texture is the function `value` of the texture coordinates.
-class FunctionTextures : public ImageTextures {
-public:
-    FunctionTextures(const Scene& scene, std::function<Color(float, float)> value)
-        : ImageTextures(scene), value_(std::move(value)) {}
-    Color lookup(std::uint32_t, const TexCoord& at) const override { return value_(at.s, at.t); }
-    Color data(std::uint32_t, const TexCoord& at) const override { return value_(at.s, at.t); }
-    float alpha(std::uint32_t, float, float, bool) const override { return 1; }
-    bool hasAlpha(std::uint32_t, bool) const override { return false; }
-
-private:
-    std::function<Color(float, float)> value_;
-};
 
 Scene withEnvironmentTexture(Scene s) {
     s.textures.push_back({.name = "environment", .file = "sky.exr"});
@@ -60,7 +46,7 @@ TEST(EnvironmentLight, ImageOfOneColourLightsAsTheSameBackground) {
     constant.flatten();
     Scene image = withEnvironmentTexture(constant);
     image.background = {0, 0, 0};
-    const FunctionTextures texture(image, [sky](float, float) { return sky; });
+    const test::FunctionTextures texture(image, [sky](float, float) { return sky; });
     RenderSettings settings = test::pathPicture(24, 64);
     settings.maxBounces = 200;
     const test::ImageMean a = test::meanOverHits(test::renderPath(constant, settings));
@@ -79,7 +65,7 @@ TEST(EnvironmentLight, ImageOfOneColourLightsAsTheSameBackground) {
 TEST(EnvironmentLight, ImportanceSamplingAgreesWithUniformSamplingWithLessVariance) {
     const Vec3 sun = normalize(Vec3{0.3, std::sin(Real(0.7)), -0.6});
     const Scene scene = withEnvironmentTexture(Scene{});
-    const FunctionTextures texture(scene, [sun](float s, float t) {
+    const test::FunctionTextures texture(scene, [sun](float s, float t) {
         const bool inSun = dot(equirectangularDirection(s, t), sun) > std::cos(Real(5.0 / 180 * kPi));
         return inSun ? Color{1000, 1000, 1000} : Color{0.1f, 0.1f, 0.1f};
     });
@@ -120,7 +106,7 @@ TEST(EnvironmentLight, RotationTurnsTheImageAndIntensityScalesIt) {
     scene.environment->intensity = 3;
     scene.environment->rotation = 90;
     const Vec3 imageSun{0, 0, -1};  // the image's centre
-    const FunctionTextures texture(scene, [imageSun](float s, float t) {
+    const test::FunctionTextures texture(scene, [imageSun](float s, float t) {
         const bool inSun = dot(equirectangularDirection(s, t), imageSun) > Real(0.99);
         return inSun ? Color{100, 100, 100} : Color{0.5f, 0.25f, 1};
     });
@@ -136,4 +122,81 @@ TEST(EnvironmentLight, RotationTurnsTheImageAndIntensityScalesIt) {
         EXPECT_NEAR(light.pdf(sample.direction), sample.pdf, 1e-3 * sample.pdf);
     }
     EXPECT_GT(towardsSun, 128) << "the sun holds 60 % of the light";
+}
+
+namespace {
+
+// A sky that is not uniform anywhere: a gradient above the horizon (0.2 + 0.8 y), a bright
+// ground below it (3, which a surface facing up never sees), and a sun of `sun` (5 degrees in
+// radius, 40 degrees above the horizon) added on top.
+struct GradientSkyWithSun {
+    static constexpr double kSunRadius = 5.0 / 180 * kPi;
+    Vec3 sunDirection = normalize(Vec3{0.4, std::sin(Real(0.7)), -0.5});
+    float sun = 100;
+
+    Color operator()(float s, float t) const {
+        const Vec3 d = equirectangularDirection(s, t);
+        const float sky = d.y > 0 ? 0.2f + 0.8f * float(d.y) : 3.0f;
+        const bool inSun = dot(d, sunDirection) > std::cos(Real(kSunRadius));
+        return Color{1, 1, 1} * (sky + (inSun ? sun : 0.0f));
+    }
+    // The irradiance on a surface facing +y: the integral of L cos over the upper hemisphere,
+    // 0.2 pi + 0.8 (2 pi / 3), and the sun's cap, pi sin^2(radius) times its axis' height.
+    double irradianceFacingUp() const {
+        return 0.2 * kPi + 0.8 * 2 * kPi / 3 + sun * kPi * std::pow(std::sin(kSunRadius), 2) * double(sunDirection.y);
+    }
+};
+
+}  // namespace
+
+// A furnace-style check of the environment's importance sampling in the path tracer: a Lambertian
+// floor of albedo 0.5 under the sky above, with nothing else in the scene, shows 0.5 E / pi on
+// every pixel (one bounce: nothing is reflected back onto it). The light samples follow the
+// image's distribution and the BSDF's hit the sky; multiple importance sampling weighs the two
+// by the densities sample() and pdf() give, so a density that is not the samples' own (a wrong
+// sin(theta) in either) shows as a brighter or darker floor.
+TEST(EnvironmentLight, LambertianFloorUnderANonUniformSkyShowsItsIrradianceTimesAlbedoOverPi) {
+    Scene scene;
+    scene.camera.origin = {0, 3, 2};
+    scene.camera.destination = {0, 0, 0};
+    scene.camera.fovDegrees = 30;
+    const auto floor = test::addMaterial(scene, test::pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0));
+    test::addQuad(scene, {-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}, floor);
+    scene.flatten();
+    scene = withEnvironmentTexture(scene);
+    const GradientSkyWithSun sky;
+    const test::FunctionTextures texture(scene, sky);
+    const test::ImageMean floorSeen = test::meanOverHits(test::renderPath(scene, test::pathPicture(16, 32), &texture));
+    const double expected = 0.5 * sky.irradianceFacingUp() / kPi;
+    std::printf("floor under the sky: %.4f +- %.4f, expected %.4f\n", floorSeen.mean, floorSeen.standardError,
+                expected);
+    EXPECT_NEAR(floorSeen.mean, expected, 4 * floorSeen.standardError + 1e-3 * expected);
+}
+
+// The density next-event estimation gives an environment sample is the one multiple importance
+// sampling asks for when a BSDF's ray finds the same direction (LightDistribution::pdfEnvironment:
+// the environment's share of the choices times EnvironmentLight::pdf), beside a point light that
+// takes its own share of the samples.
+TEST(EnvironmentLight, SampledDensityIsTheOneMultipleImportanceSamplingAsksFor) {
+    Scene scene;
+    const auto grey = test::addMaterial(scene, test::pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0));
+    test::addQuad(scene, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, grey);
+    scene.lights.push_back(Light{.position = {0, 2, 0}, .color = {5, 5, 5}, .falloff = Light::Falloff::InverseSquare});
+    scene.flatten();
+    scene = withEnvironmentTexture(scene);
+    const test::FunctionTextures texture(scene, GradientSkyWithSun{});
+    const LightDistribution lights(scene, &texture);
+    const Vec3 from{0.2, 0.5, 0.1}, normal{0, 1, 0};
+    int skySamples = 0;
+    for (int i = 0; i < 4096; ++i) {
+        SobolSampler sampler(5, 6, std::uint32_t(i), 0);
+        const Real pick = sampler.next1D();
+        const auto [u1, u2] = sampler.next2D();
+        const std::optional<LightSample> light = lights.sample(from, normal, pick, u1, u2);
+        if (!light || light->source != LightSample::Source::Environment) continue;
+        ++skySamples;
+        ASSERT_NEAR(lights.pdfEnvironment(light->direction), light->pdf, 1e-3 * light->pdf) << light->direction;
+    }
+    EXPECT_GT(skySamples, 1000);
+    EXPECT_LT(skySamples, 4096) << "the point light takes a share";
 }

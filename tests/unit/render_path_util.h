@@ -1,9 +1,11 @@
 // What the path tracer's tests share: materials by their metallic-roughness factors, a small
-// path-traced picture, the mean of what the camera rays that hit something saw, and a Cornell-like box.
+// path-traced picture, image textures given as functions, the mean of what the camera rays that hit something saw, and
+// a Cornell-like box.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "accel/naive.h"
 #include "render/renderer.h"
@@ -23,6 +25,20 @@ inline RenderSettings pathPicture(int size, int samples) {
     r.pixelSamples = samples;
     return r;
 }
+
+// Every image texture is the function `value` of the texture coordinates.
+class FunctionTextures : public ImageTextures {
+public:
+    FunctionTextures(const Scene& scene, std::function<Color(float, float)> value)
+        : ImageTextures(scene), value_(std::move(value)) {}
+    Color lookup(std::uint32_t, const TexCoord& at) const override { return value_(at.s, at.t); }
+    Color data(std::uint32_t, const TexCoord& at) const override { return value_(at.s, at.t); }
+    float alpha(std::uint32_t, float, float, bool) const override { return 1; }
+    bool hasAlpha(std::uint32_t, bool) const override { return false; }
+
+private:
+    std::function<Color(float, float)> value_;
+};
 
 struct ImageMean {
     double mean = 0;

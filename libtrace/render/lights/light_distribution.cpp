@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/lights/light_sample.h"
+#include "render/materials/material.h"
 #include "scene/spot_cone.h"
 
 namespace rt {
@@ -58,6 +59,28 @@ LightBounds boundsOf(const Triangle& tri, double radiance) {
     return b;
 }
 
+// The radiance triangle `prim` emits, by luminance, for the light's share of the samples: its
+// material's emission times the mean of its emission texture over the triangle, read in one lookup
+// filtered over the triangle's footprint in the texture (its corners' coordinates as the
+// derivatives). A model whose emission texture is black but for a few lit windows then does not
+// count every triangle as bright as the windows: those would take nearly every light sample from
+// the point lights that light the model (LightsPunctualLamp: all its 6,000 triangles have an
+// emission factor of 1). A triangle whose estimate is 0 is not sampled as a light; what it does
+// emit is still found, in full, by the paths that hit it (docs/path-tracing.md).
+double emittedRadiance(const ShadingContext& context, std::uint32_t prim, const Triangle& tri, const Material& m) {
+    if (!m.emissionTexture) return luminance(m.emission);
+    const Vec3 normal = tri.normal();
+    const auto at = [&](Real b1, Real b2) {
+        const Vec3 p = tri.p0 + (tri.p1 - tri.p0) * b1 + (tri.p2 - tri.p0) * b2;
+        return surfaceAt(context.scene.primitives, Ray{p + normal, -normal}, Hit{1, prim, b1, b2});
+    };
+    const SurfacePoint corner0 = at(0, 0), corner1 = at(1, 0), corner2 = at(0, 1);
+    SurfacePoint centre = at(Real(1) / 3, Real(1) / 3);
+    centre.dudx = float(corner1.u - corner0.u), centre.dvdx = float(corner1.v - corner0.v);
+    centre.dudy = float(corner2.u - corner0.u), centre.dvdy = float(corner2.v - corner0.v);
+    return luminance(surfaceEmission(context, m, centre));
+}
+
 }  // namespace
 
 LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* images, LightSampler sampler)
@@ -93,10 +116,11 @@ LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* im
             [&] { return boundsOf(light); });
     }
     const auto triangles = scene.primitives.all<Triangle>();
+    const ShadingContext context{scene, images};
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         const std::uint32_t id = scene.primitives.material(std::uint32_t(i));
-        if (id >= scene.materials.size()) continue;
-        const double radiance = luminance(scene.materials[id].emission);
+        if (id >= scene.materials.size() || !(luminance(scene.materials[id].emission) > kNoPower)) continue;
+        const double radiance = emittedRadiance(context, std::uint32_t(i), triangles[i], scene.materials[id]);
         if (!(radiance > kNoPower)) continue;
         triangleEntry_[std::uint32_t(i)] = std::uint32_t(entries_.size());
         add(LightSample::Source::Triangle, std::uint32_t(i), kPi * radiance * double(triangles[i].area()), true,
@@ -162,7 +186,7 @@ std::optional<LightSample> LightDistribution::sampleEntry(const Entry& entry, Re
     s.source = entry.source;
     s.index = entry.index;
     switch (s.source) {
-        case LightSample::Source::Point: {  // point, spot or directional: render/light_sample.h
+        case LightSample::Source::Point: {  // point, spot or directional: render/lights/light_sample.h
             const LightIncidence in = lightIncidence(scene_.lights[s.index], from);
             if (!(in.distance > 0) || in.color == Color{}) return std::nullopt;
             s.direction = in.toLight;

@@ -39,7 +39,8 @@ struct LightSample {
 class LightDistribution {
 public:
     // The emitters of a flattened scene: its lights, and materials with a non-black emission
-    // make their triangles area lights (the emission texture is not part of the estimate). A
+    // make their triangles area lights (their share of the samples follows the mean of the
+    // emission texture over each triangle, looked up through `images`). A
     // headlight is left out when there are such materials: they light the scene, as they do a
     // model in Blender or a glTF viewer, and its file renders as its converted XML does.
     // `images` looks up an environment image.
