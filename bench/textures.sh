@@ -5,6 +5,10 @@
 #   bench/textures.sh [rt-render [rt-convert]]   (default: build/release's; models from $RT_SHARED_DIR
 #                                                 or ../shared)
 #
+# Environment: RT_TEXTURES_MODELS, more model files to measure after the shared ones (paths
+# separated by spaces, e.g. a copy of Khronos' DamagedHelmet, whose five textures no shared model
+# has); RT_TEXTURES_MEMORY=off leaves out the memory measurement (the 12 generated pictures).
+#
 # Any rt-render may be measured (an older build, to compare); $RT_TX_CACHE points into the
 # script's own folder, so that a build with the old tx cache makes its copies there.
 #
@@ -40,23 +44,32 @@ process() {
     cat "$work/time"
 }
 
-printf '%-56s %-8s %9s %9s %6s %13s %7s\n' model tracer textured plain ratio first/second peak
+models=()
 for model in glb/Duck/Duck.glb gltf/Suzanne/Suzanne.gltf gltf/LightsPunctualLamp/LightsPunctualLamp.gltf \
     obj/scrub-pine/scrubPine.obj glb/NormalTangentMirrorTest/NormalTangentMirrorTest.glb; do
-    "$convert" "$shared/models/$model" -o "$work/scene.xml" 2>/dev/null
+    models+=("$shared/models/$model")
+done
+# shellcheck disable=SC2206
+models+=(${RT_TEXTURES_MODELS:-})
+
+printf '%-56s %-8s %9s %9s %6s %13s %7s\n' model tracer textured plain ratio first/second peak
+for file in "${models[@]}"; do
+    model=${file#"$shared/models/"}
+    "$convert" "$file" -o "$work/scene.xml" 2>/dev/null
     sed -E -i 's/ [a-z_]*texture="[^"]*"//g' "$work/scene.xml"
     rm -rf "$RT_TX_CACHE"
-    read -r first kb < <(process "$shared/models/$model" "${whitted[@]}")
-    read -r second _ < <(process "$shared/models/$model" "${whitted[@]}")
+    read -r first kb < <(process "$file" "${whitted[@]}")
+    read -r second _ < <(process "$file" "${whitted[@]}")
     for tracer in whitted path; do
         declare -n options=$tracer
-        textured=$(best_of_3 "$shared/models/$model" "${options[@]}")
+        textured=$(best_of_3 "$file" "${options[@]}")
         plain=$(best_of_3 "$work/scene.xml" "${options[@]}")
         awk -v m="$model" -v r="$tracer" -v t="$textured" -v p="$plain" -v f="$first" -v s="$second" -v k="$kb" \
             'BEGIN { printf "%-56s %-8s %8.3fs %8.3fs %5.2fx %5.2fs/%5.2fs %6.0fM\n", m, r, t, p, p / t, f, s, k / 1024 }'
     done
 done
 
+[ "${RT_TEXTURES_MEMORY:-on}" = off ] && exit 0
 mkdir -p "$work/big"
 : >"$work/big/quads.mtl"
 {

@@ -18,6 +18,10 @@
 //   hits the first found wins, in the first leaf along the ray and, in a leaf, the first primitive.
 // - A ray leaves the packet when its nearest hit lies before the node taken from the stack,
 //   where the single traversal stops.
+// - With a hit filter (cut-outs, single-sided surfaces: geometry/hit_filter.h) a ray's hit is
+//   asked of the filter with the ray and the Hit the single traversal asks it with, when that
+//   traversal would ask (a hit nearer than the ray's nearest, or before its tMax), and counts only
+//   if accepted: the same nearest hits, the same blockers, the same work counted.
 // Shadow rays (SplitTree::occludedPacket) walk the same way, each with its own tMax, and a ray
 // stops where SplitTree::occluded stops: its lane turns off after the first block of a leaf in
 // which one of its primitives lies in (0, tMax), or the first other primitive that does, and its
@@ -26,9 +30,9 @@
 // A ray left alone in a node, the others having gone elsewhere or ended, goes on from there with
 // the single traversal (SplitTree::searchNearest and searchBlocker, the same code the single
 // queries run): the same nodes, tests and counts, without the packet's work for its idle lanes.
-// Rays that do not share an octant, have a direction component that is zero or whose
+// Rays that do not share an octant, or have a direction component that is zero or whose
 // reciprocal overflows (their plane distances can be NaN, and the single traversal then orders
-// the children by the origin), and a tree with a hit filter are traced one by one. With the
+// the children by the origin), are traced one by one. With the
 // watertight triangle test (geometry/watertight_triangle.h) a triangle is tested against the rays
 // sheared, each with its own shear, so they must also share the axis they run most along (the
 // rays of a camera tile nearly always do); else they too are traced one by one.
@@ -72,12 +76,17 @@ LaneBits bitsOf(const Lanes& mask) {
     return bits;
 }
 
+// A group's lane mask from one bit per lane.
+RealLanes groupMaskOf(LaneBits bits) {
+    alignas(64) Real lanes[kLanes];
+    for (int i = 0; i < kLanes; ++i) lanes[i] = (bits >> i) & 1u ? Real(1) : Real(0);
+    return notEqual(loadLanes(lanes), broadcast(0));
+}
+
 // A lane mask from one bit per ray.
 Lanes maskOf(LaneBits bits) {
-    alignas(64) Real lanes[kPacketSize];
-    for (int i = 0; i < kPacketSize; ++i) lanes[i] = (bits >> i) & 1u ? Real(1) : Real(0);
     Lanes mask;
-    for (int g = 0; g < kGroups; ++g) mask.group[g] = notEqual(loadLanes(lanes + g * kLanes), broadcast(0));
+    for (int g = 0; g < kGroups; ++g) mask.group[g] = groupMaskOf((bits >> (g * kLanes)) & ((1u << kLanes) - 1));
     return mask;
 }
 
@@ -207,6 +216,51 @@ template <class Block>
     }
 }
 
+// Which hits count, as the packet asks it of its rays: every hit (AllHits), or those the scene's
+// hit filter accepts (FilteredHits, geometry/hit_filter.h). The traversals are compiled for each,
+// so that a tree without a filter runs the loops it ran before filters came to packets. Each has:
+// keep(g, hit, hits, id): group g's lanes `hit`, whose hits on primitive `id` are `hits`, less those
+// that do not count; nearest(prims, id, r, hit): primitive `id`'s hit of ray r, nearer than `hit`
+// and counting, into `hit`; occludes(prims, id, r, tMax): whether it blocks ray r before tMax.
+struct AllHits {
+    const Ray* rays;  // the packet's, ray i in lane i
+
+    RealLanes keep(int, RealLanes hit, const GroupHits&, std::uint32_t) const { return hit; }
+    void nearest(const PrimitiveView& prims, std::uint32_t id, int r, Hit& hit) const {
+        prims.intersect(id, rays[r], hit.t, hit);
+    }
+    bool occludes(const PrimitiveView& prims, std::uint32_t id, int r, Real tMax) const {
+        return prims.intersectsAny(id, rays[r], tMax);
+    }
+};
+
+// The filter is asked ray by ray, with the ray and the Hit that intersect() and occluded() ask it with.
+struct FilteredHits {
+    const Ray* rays;
+    const HitFilter& filter;
+
+    RealLanes keep(int g, RealLanes hit, const GroupHits& hits, std::uint32_t id) const {
+        const LaneBits bits = laneBits(hit);
+        if (bits == 0) return hit;
+        alignas(64) Real t[kLanes], u[kLanes], v[kLanes];
+        storeLanes(t, hits.t);
+        storeLanes(u, hits.u);
+        storeLanes(v, hits.v);
+        LaneBits kept = bits;
+        for (LaneBits lanes = bits; lanes != 0; lanes &= lanes - 1) {
+            const int lane = std::countr_zero(lanes);
+            if (!filter.accepts(rays[g * kLanes + lane], {t[lane], id, u[lane], v[lane]})) kept &= ~(1u << lane);
+        }
+        return kept == bits ? hit : groupMaskOf(kept);
+    }
+    void nearest(const PrimitiveView& prims, std::uint32_t id, int r, Hit& hit) const {
+        intersectFiltered(prims, id, rays[r], filter, hit);
+    }
+    bool occludes(const PrimitiveView& prims, std::uint32_t id, int r, Real tMax) const {
+        return occludesFiltered(prims, id, rays[r], tMax, filter);
+    }
+};
+
 // Primitive `lane` of a block against group g of the packet's rays: the block's test
 // (geometry/leaf_block.h) with the primitive in every lane and a ray per lane, so each ray gets
 // the bits its single traversal gets. Both queries test primitives with it: the nearest hit with
@@ -219,14 +273,15 @@ template <class Block>
 }
 
 // Primitive `id`'s hits on the `active` rays are taken where they are nearer than the ray's
-// nearest, as the single traversal takes its hits in order; hitGroup(g, limit) tests it against
-// group g of the rays.
-template <typename HitGroup>
-inline void takeNearer(std::uint32_t id, const Lanes& active, PacketHits& nearest, const HitGroup& hitGroup) {
+// nearest and the filter accepts them, as the single traversal takes its hits in order;
+// hitGroup(g, limit) tests it against group g of the rays.
+template <class Counting, typename HitGroup>
+inline void takeNearer(std::uint32_t id, const Lanes& active, const Counting& counting, PacketHits& nearest,
+                       const HitGroup& hitGroup) {
     LaneBits taken = 0;
     for (int g = 0; g < kGroups; ++g) {
         const GroupHits h = hitGroup(g, nearest.t.group[g]);
-        const RealLanes hit = active.group[g] & h.hit;
+        const RealLanes hit = counting.keep(g, active.group[g] & h.hit, h, id);
         const LaneBits bits = laneBits(hit);
         if (bits == 0) continue;
         nearest.t.group[g] = select(hit, h.t, nearest.t.group[g]);
@@ -238,18 +293,22 @@ inline void takeNearer(std::uint32_t id, const Lanes& active, PacketHits& neares
 }
 
 // Primitive `lane` of a block against the packet's nearest hits.
-template <class Block>
-inline void nearestIn(const Block& block, int lane, const PacketRays& rays, const Lanes& active, PacketHits& nearest) {
-    takeNearer(block.id[lane], active, nearest,
+template <class Block, class Counting>
+inline void nearestIn(const Block& block, int lane, const PacketRays& rays, const Lanes& active,
+                      const Counting& counting, PacketHits& nearest) {
+    takeNearer(block.id[lane], active, counting, nearest,
                [&](int g, RealLanes limit) { return hitLane(block, lane, rays, g, limit); });
 }
 
-// Adds to `blocked` the rays of `open` that primitive `lane` of the block hits before their tLimit.
-template <class Block>
+// Adds to `blocked` the rays of `open` that primitive `lane` of the block hits before their tLimit,
+// where the filter accepts the hit.
+template <class Block, class Counting>
 inline void blockingIn(const Block& block, int lane, const PacketRays& rays, const Lanes& open, const Lanes& tLimit,
-                       Lanes& blocked) {
-    for (int g = 0; g < kGroups; ++g)
-        blocked.group[g] = blocked.group[g] | (open.group[g] & hitLane(block, lane, rays, g, tLimit.group[g]).hit);
+                       const Counting& counting, Lanes& blocked) {
+    for (int g = 0; g < kGroups; ++g) {
+        const GroupHits h = hitLane(block, lane, rays, g, tLimit.group[g]);
+        blocked.group[g] = blocked.group[g] | counting.keep(g, open.group[g] & h.hit, h, block.id[lane]);
+    }
 }
 
 // The single traversal's decision at a node, ray by ray (split_tree.cpp, SplitTree::traverse),
@@ -385,12 +444,12 @@ void updateHits(PacketHits& nearest, LaneBits rays, const Update& update) {
     nearest.v = load(v);
 }
 
-// The leaf's primitives of kinds without blocks, ray by ray (the packet has no hit
-// filter).
-void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, LaneBits active,
+// The leaf's primitives of kinds without blocks, ray by ray, as the single traversal tests them.
+template <class Counting>
+void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const Counting& counting, LaneBits active,
                    PacketHits& nearest) {
     updateHits(nearest, active, [&](int r, Hit& hit) {
-        for (std::uint32_t i = 0; i < leaf.others; ++i) prims.intersect(leaf.otherIds()[i], rays[r], hit.t, hit);
+        for (std::uint32_t i = 0; i < leaf.others; ++i) counting.nearest(prims, leaf.otherIds()[i], r, hit);
     });
 }
 
@@ -398,15 +457,17 @@ void nearestOthers(const PrimitiveView& prims, const LeafPrimitives& leaf, const
 // kind) blocks before their tLimit, block by block, a block's kSimdWidth (fewer in the last)
 // tested and counted together, a ray stopping after the first block that blocks it. Updates `open`
 // and `active`.
-template <class Block>
+template <class Block, class Counting>
 LaneBits blockedInBlocks(const Block* blocks, std::uint32_t blockCount, std::uint32_t total, const PacketRays& packet,
-                         Lanes& open, LaneBits& active, const Lanes& tLimit, std::uint64_t& tests) {
+                         const Counting& counting, Lanes& open, LaneBits& active, const Lanes& tLimit,
+                         std::uint64_t& tests) {
     LaneBits blocked = 0;
     for (std::uint32_t b = 0; b < blockCount && active != 0; ++b) {
         const std::uint32_t size = std::min<std::uint32_t>(kSimdWidth, total - b * kSimdWidth);
         tests += std::uint64_t(std::popcount(active)) * size;
         Lanes hit = broadcastLanes(0);
-        for (std::uint32_t lane = 0; lane < size; ++lane) blockingIn(blocks[b], int(lane), packet, open, tLimit, hit);
+        for (std::uint32_t lane = 0; lane < size; ++lane)
+            blockingIn(blocks[b], int(lane), packet, open, tLimit, counting, hit);
         for (int g = 0; g < kGroups; ++g) open.group[g] = andNot(hit.group[g], open.group[g]);
         blocked |= bitsOf(hit);
         active &= ~blocked;
@@ -417,23 +478,23 @@ LaneBits blockedInBlocks(const Block* blocks, std::uint32_t blockCount, std::uin
 // The rays of `active` (lanes `open`) that something in `leaf` blocks before their tLimit (their
 // tMax), found and counted as SplitTree::occluded finds and counts them ray by ray: the blocks of
 // each kind with blocks block by block, kind after kind (blockedInBlocks), then the other
-// primitives one at a time, until one blocks (the packet has no hit filter). The triangles by the
-// test `test`.
-template <TriangleTest test>
-LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, const Ray* rays, const Real* tMax,
-                       const PacketRays& packet, Lanes open, LaneBits active, const Lanes& tLimit,
+// primitives one at a time, until one blocks (a hit the filter accepts). The triangles by the test
+// `test`.
+template <TriangleTest test, class Counting>
+LaneBits blockedInLeaf(const PrimitiveView& prims, const LeafPrimitives& leaf, const Counting& counting,
+                       const Real* tMax, const PacketRays& packet, Lanes open, LaneBits active, const Lanes& tLimit,
                        std::uint64_t& tests) {
     LaneBits blocked = 0;
     anyBlockKind([&](auto kind) {
-        blocked |= blockedInBlocks(leaf.blocks<test, kind>(), leaf.blockCount<kind>(), leaf.blocked[kind], packet, open,
-                                   active, tLimit, tests);
+        blocked |= blockedInBlocks(leaf.blocks<test, kind>(), leaf.blockCount<kind>(), leaf.blocked[kind], packet,
+                                   counting, open, active, tLimit, tests);
         return false;
     });
     for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
         const int r = std::countr_zero(bits);
         for (std::uint32_t i = 0; i < leaf.others; ++i) {
             ++tests;
-            if (prims.intersectsAny(leaf.otherIds()[i], rays[r], tMax[r])) {
+            if (counting.occludes(prims, leaf.otherIds()[i], r, tMax[r])) {
                 blocked |= 1u << r;
                 break;
             }
@@ -470,25 +531,29 @@ void SplitTree::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bo
     nearest.t = packet.tMax;
     std::uint64_t tests = 0;
     const PrimitiveView prims = view_;
-    counters.traversalSteps += walk(
-        nodes_.data(), packet, nearest.t,
-        [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
-            const LeafPrimitives& leaf = leafAt(unit);
-            tests += std::uint64_t(std::popcount(active)) * leaf.count();
-            // As SplitTree::intersect: each kind with blocks in leaf order, kind after kind, then the others.
-            anyBlockKind([&](auto kind) {
-                for (std::uint32_t k = 0; k < leaf.blocked[kind]; ++k)
-                    nearestIn(leaf.blocks<test, kind>()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf,
-                              nearest);
-                return false;
+    // The walk, for the hits that count (AllHits or FilteredHits).
+    const auto search = [&](const auto& counting) {
+        return walk(
+            nodes_.data(), packet, nearest.t,
+            [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
+                const LeafPrimitives& leaf = leafAt(unit);
+                tests += std::uint64_t(std::popcount(active)) * leaf.count();
+                // As SplitTree::intersect: each kind with blocks in leaf order, kind after kind, then the others.
+                anyBlockKind([&](auto kind) {
+                    for (std::uint32_t k = 0; k < leaf.blocked[kind]; ++k)
+                        nearestIn(leaf.blocks<test, kind>()[k / kSimdWidth], int(k % kSimdWidth), packet.rays, inLeaf,
+                                  counting, nearest);
+                    return false;
+                });
+                if (leaf.others != 0) nearestOthers(prims, leaf, counting, active, nearest);
+            },
+            [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
+                updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {
+                    searchNearest<level, test>(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
+                });
             });
-            if (leaf.others != 0) nearestOthers(prims, leaf, rays, active, nearest);
-        },
-        [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
-            updateHits(nearest, 1u << ray, [&](int r, Hit& hit) {
-                searchNearest<level, test>(rays[r], reciprocal(rays[r].direction), node, tMin, tEnd, hit, counters);
-            });
-        });
+    };
+    counters.traversalSteps += filter_ ? search(FilteredHits{rays, *filter_}) : search(AllHits{rays});
     counters.intersectionTests += tests;
     alignas(64) Real t[kPacketSize], u[kPacketSize], v[kPacketSize];
     store(nearest.t, t);
@@ -514,21 +579,24 @@ void SplitTree::traceShadowPacket(const Ray* rays, int count, const Real* tMax, 
     LaneBits found = 0;
     std::uint64_t tests = 0;
     const PrimitiveView prims = view_;
-    counters.traversalSteps += walk(
-        nodes_.data(), packet, tLimit,
-        [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
-            const LaneBits now =
-                blockedInLeaf<test>(prims, leafAt(unit), rays, tMax, packet.rays, inLeaf, active, tLimit, tests);
-            found |= now;
-            if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
-        },
-        [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
-            if (!searchBlocker<level, test>(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray],
-                                            counters))
-                return;
-            found |= 1u << ray;
-            closeRays(1u << ray, tLimit);
-        });
+    const auto search = [&](const auto& counting) {
+        return walk(
+            nodes_.data(), packet, tLimit,
+            [&](std::uint32_t unit, const Lanes& inLeaf, LaneBits active) {
+                const LaneBits now = blockedInLeaf<test>(prims, leafAt(unit), counting, tMax, packet.rays, inLeaf,
+                                                         active, tLimit, tests);
+                found |= now;
+                if (now != 0) closeRays(now, tLimit);  // where SplitTree::occluded stops
+            },
+            [&](int ray, std::uint32_t node, Real tMin, Real tEnd) {
+                if (!searchBlocker<level, test>(rays[ray], reciprocal(rays[ray].direction), node, tMin, tEnd, tMax[ray],
+                                                counters))
+                    return;
+                found |= 1u << ray;
+                closeRays(1u << ray, tLimit);
+            });
+    };
+    counters.traversalSteps += filter_ ? search(FilteredHits{rays, *filter_}) : search(AllHits{rays});
     counters.intersectionTests += tests;
     for (int i = 0; i < count; ++i) blocked[i] = (found >> i) & 1u;
 }

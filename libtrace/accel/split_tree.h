@@ -106,7 +106,7 @@ private:
     template <SimdLevel level, TriangleTest test>
     void traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const;
     // Whether `count` rays may walk the tree as a packet (kd_packet.cpp checks that they are coherent).
-    bool tracesTogether(int count) const { return !filter_ && count >= 2 && !nodes_.empty() && !bounds_.empty(); }
+    bool tracesTogether(int count) const { return count >= 2 && !nodes_.empty() && !bounds_.empty(); }
     // The part [tMin, tMax] of the ray inside the root voxel; false if it misses the voxel.
     bool enters(const Ray& ray, const Vec3& invDir, Real& tMin, Real& tMax) const {
         tMin = 0;

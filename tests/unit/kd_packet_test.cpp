@@ -96,7 +96,7 @@ std::string shadowDisagreements(const Accelerator& tree, const std::vector<Ray>&
 std::string packetDisagreements(const Accelerator& tree, const std::vector<Ray>& rays, int packetSize, Real tMax,
                                 const Accelerator* naive = nullptr) {
     std::ostringstream out;
-    RayCounters packetCounters, singleCounters;
+    RayCounters packetCounters, singleCounters, naiveCounters;
     int reported = 0;
     for (std::size_t first = 0; first < rays.size() && reported < 5; first += std::size_t(packetSize)) {
         const int count = int(std::min<std::size_t>(std::size_t(packetSize), rays.size() - first));
@@ -110,7 +110,7 @@ std::string packetDisagreements(const Accelerator& tree, const std::vector<Ray>&
             const bool packetAgrees = identical(found[i], hits[i], singleFound, single);
             bool naiveAgrees = true;
             if (naive) {
-                const bool naiveFound = naive->intersect(ray, tMax, expected, singleCounters);
+                const bool naiveFound = naive->intersect(ray, tMax, expected, naiveCounters);
                 naiveAgrees =
                     naiveFound == singleFound && (!naiveFound || expected.prim == single.prim ||
                                                   std::abs(expected.t - single.t) <= Real(1e-4) * std::abs(expected.t));
@@ -123,6 +123,11 @@ std::string packetDisagreements(const Accelerator& tree, const std::vector<Ray>&
             ++reported;
         }
     }
+    if (packetCounters.traversalSteps != singleCounters.traversalSteps ||
+        packetCounters.intersectionTests != singleCounters.intersectionTests)
+        out << tree.stats().name << " nearest hits: steps " << packetCounters.traversalSteps << " vs "
+            << singleCounters.traversalSteps << ", tests " << packetCounters.intersectionTests << " vs "
+            << singleCounters.intersectionTests << '\n';
     std::vector<Real> ends;
     for (std::size_t i = 0; i < rays.size(); ++i) ends.push_back(shadowEnd(tree, rays[i], i, tMax));
     out << shadowDisagreements(tree, rays, ends, packetSize);
@@ -189,12 +194,24 @@ std::vector<Ray> coneRays(int packets, std::uint64_t seed) {
     return rays;
 }
 
-std::vector<std::unique_ptr<Accelerator>> trees(const Primitives& prims) {
+std::vector<std::unique_ptr<Accelerator>> trees(const Primitives& prims,
+                                                TriangleTest triangles = TriangleTest::MollerTrumbore) {
     std::vector<std::unique_ptr<Accelerator>> all;
-    all.push_back(buildKdTree(prims, KdSettings{}));
-    all.push_back(buildBspTree(prims, BspSettings{}));
+    all.push_back(buildKdTree(prims, KdSettings{}, triangles));
+    all.push_back(buildBspTree(prims, BspSettings{}, triangles));
     return all;
 }
+
+// A hit filter that asks what a scene's does (render/material_filter.h): a cut-out pattern over
+// the hit's u and v, and, for some primitives, the side the ray comes from, the light's for a
+// shadow ray. About half the hits pass.
+struct CutOuts : HitFilter {
+    bool accepts(const Ray& ray, const Hit& hit) const override {
+        const Real pattern = hit.u * 13 + hit.v * 7;
+        if (pattern - std::floor(pattern) < Real(0.4)) return false;
+        return hit.prim % 5 != 0 || (ray.direction.z > 0) == ray.shadow;
+    }
+};
 
 // Runs each test once per set of lanes the packet traversal can use.
 class KdPacket : public test::SimdLanes {};
@@ -328,9 +345,40 @@ TEST_P(KdPacket, ShadowRaysOfThesisScenesAgreeWithSingleRays) {
     }
 }
 
+// A tree with a hit filter (cut-outs, single-sided surfaces): each ray of a packet gets what the
+// single ray gets, under the same filter, bit for bit, and the packet counts the same work, for
+// the nearest hit and as a shadow ray; on every kind of primitive (triangles in blocks, the
+// others one by one), with the watertight triangle test and without, and on the camera and
+// shadow rays of a thesis scene.
+TEST_P(KdPacket, HitFilterGivesSingleRaysBits) {
+    SceneRecipe recipe{600, 60, Placement::Clustered, 28, 60, 60};
+    recipe.disks = 60;
+    const Scene scene = generateScene(recipe);
+    const Scene ships = thesisScene("ships");
+    const CutOuts filter;
+    for (TriangleTest triangles : {TriangleTest::MollerTrumbore, TriangleTest::Watertight}) {
+        const char* test = triangles == TriangleTest::Watertight ? "watertight" : "Moller-Trumbore";
+        NaiveAccelerator naive(scene.primitives, triangles);
+        naive.setHitFilter(&filter);
+        for (const auto& tree : trees(scene.primitives, triangles)) {
+            tree->setHitFilter(&filter);
+            EXPECT_EQ(packetDisagreements(*tree, coneRays(400, 9), kPacketSize, kInfinity, &naive), "") << test;
+            EXPECT_EQ(packetDisagreements(*tree, coneRays(400, 10), 5, Real(1.2)), "") << test;
+        }
+        for (const auto& tree : trees(ships.primitives, triangles)) {
+            tree->setHitFilter(&filter);
+            EXPECT_EQ(packetDisagreements(*tree, cameraTiles(ships.camera, 80, 60), kPacketSize, kInfinity), "")
+                << test;
+            std::vector<Real> ends;
+            const std::vector<Ray> rays = shadowRaysOf(ships, *tree, 48, 36, ends);
+            EXPECT_EQ(shadowDisagreements(*tree, rays, ends, kPacketSize), "") << test;
+        }
+    }
+}
+
 // Shadow rays that end nowhere (tMax 0, negative, tiny), graze the triangles' planes, start on
-// them or have zero direction components (traced one by one), and a tree with a hit filter
-// (traced one by one too): the answers and counts of single rays.
+// them or have zero direction components (traced one by one), and a tree with a hit filter: the
+// answers and counts of single rays.
 TEST_P(KdPacket, DegenerateShadowRaysAgreeWithSingleRays) {
     Scene scene = generateScene({300, 20, Placement::Clustered, 25});
     for (int i = 0; i < 4; ++i) {  // a floor z = -1 split along its diagonal, and walls along x and y
