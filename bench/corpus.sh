@@ -43,40 +43,12 @@ read -r -a models <<<"${CORPUS_MODELS:-glb/Duck/Duck.glb glb/2CylinderEngine/2Cy
 glb/TransmissionRoughnessTest/TransmissionRoughnessTest.glb gltf/LightsPunctualLamp/LightsPunctualLamp.gltf \
 obj/teapot/teapot.obj obj/stanford-bunny/stanford-bunny.obj obj/CornellBox-Sphere/CornellBox-Sphere.obj \
 obj/spd-balls/balls_s2.obj 3ds/jeep1/jeep1.3ds}"
-for tool in bench/vs_embree tools/render/rt-render tools/convert/rt-convert tools/inspect/rt-inspect; do
-    [ -x "$build/$tool" ] || { echo "corpus.sh ERROR: $build/$tool is not built" >&2; exit 2; }
-done
+# shellcheck source=bench/corpus_views.bash
+source bench/corpus_views.bash
+require_built corpus.sh "$build/bench/vs_embree" "$build/tools/render/rt-render" "$build/tools/convert/rt-convert" \
+    "$build/tools/inspect/rt-inspect"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-# The camera options of view $2 for the bounds "minx miny minz maxx maxy maxz" in $1 (none for "file").
-# Up is +y, or the box's shortest axis where that is under a quarter of its longest (a landscape such as
-# tree, whose ground is the xy plane); the views are written in (first horizontal, up, second horizontal).
-view_options() {
-    awk -v view="$2" -v b="$1" 'BEGIN {
-        split(b, v, " "); for (i = 1; i <= 3; ++i) { lo[i] = v[i]; s[i] = v[i + 3] - v[i]; c[i] = (v[i] + v[i + 3]) / 2 }
-        short = 1; big = s[1]; for (i = 2; i <= 3; ++i) { if (s[i] < s[short]) short = i; if (s[i] > big) big = s[i] }
-        u = s[short] < big / 4 ? short : 2
-        h = u == 1 ? 2 : 1; k = 6 - u - h
-        wide = s[h] > s[k] ? s[h] : s[k]
-        if (view == "overview") { put(f, c[h] + .8 * s[h], c[u] + .5 * (s[u] > wide / 2 ? s[u] : wide / 2), c[k] + .9 * s[k]); put(a, c[h], c[u], c[k]); fov = 60 }
-        else if (view == "close") { put(f, c[h] + .2 * s[h], c[u] + .1 * s[u], c[k] + .2 * s[k]); put(a, c[h], c[u], c[k]); fov = 40 }
-        else if (view == "inside") { put(f, c[h], c[u], c[k]); put(a, c[h] + s[h] + 1, c[u], c[k]); fov = 90 }
-        else if (view == "inside-z") { put(f, c[h] - .25 * s[h], lo[u] + .3 * s[u], c[k] - .25 * s[k]); put(a, f[h], f[u], c[k] + s[k] + 1); fov = 90 }
-        else if (view == "grazing") { put(f, lo[h] - .05 * s[h], lo[u] + .02 * s[u], c[k]); put(a, lo[h] + s[h], lo[u] + .02 * s[u], c[k]); fov = 70 }
-        else if (view == "top") { put(f, c[h], c[u] + s[u] + wide, c[k]); put(a, c[h], c[u], c[k]); fov = 60; put(up, 0, 0, -1) }
-        else exit
-        if (!(1 in up)) put(up, 0, 1, 0)
-        printf "--look-from %g,%g,%g --look-at %g,%g,%g --up %g,%g,%g --fov %g\n", f[1], f[2], f[3], a[1], a[2], a[3],
-               up[1], up[2], up[3], fov
-    }
-    function put(p, x, y, z) { p[h] = x; p[u] = y; p[k] = z }'
-}
-
-bounds() {
-    "$build/tools/inspect/rt-inspect" "$1" --tree naive --json -q |
-        jq -r '.scene.bounds | "\(.min[0]) \(.min[1]) \(.min[2]) \(.max[0]) \(.max[1]) \(.max[2])"'
-}
 
 # "camera shadow reflection camera8 shadow8 tests" of a vs_embree table: rt single / Embree single per ray
 # kind, rt packets / Embree packets for camera and shadow rays, and rt's tests per camera ray; "-" for a
@@ -101,7 +73,7 @@ kd_tests() {
 
 measure() {  # group scene-name file
     local group=$1 name=$2 file=$3 box view
-    box=$(bounds "$file")
+    box=$(bounds "$build" "$file")
     for view in "${views[@]}"; do
         local -a options
         read -r -a options <<<"$(view_options "$box" "$view")"
