@@ -9,9 +9,9 @@
 // fetch of a node and one walk of the stack serve all the rays.
 //
 // A leaf is tested ray by ray with the single traversal's loops (accel/leaf_tests.h), hit filter
-// included, so each ray gets from it what it gets alone; a ray left alone in a node goes on there
-// by itself with the single traversal (Bvh::searchNearest and searchBlocker, the code the single
-// queries run), without the packet's work for idle lanes.
+// included, so each ray gets from it what it gets alone; a ray left alone in a node, or one of two
+// (kFewRays), goes on there by itself with the single traversal (Bvh::searchNearest and searchBlocker, the code the
+// single queries run), without the packet's work for idle lanes.
 //
 // Bit for bit the single-ray answer. Any hit: a ray is blocked if one of the leaves it enters
 // holds a blocker; it enters the same leaves as alone (the same tests against the same tMax), in
@@ -100,6 +100,12 @@ bool loadSlabPacket(const Ray* rays, int count, Real sceneMagnitude, SlabPacket&
     return bits;
 }
 
+// The most rays left in a node that go on from there one by one with the single traversal: the
+// packet tests a child against all its lanes whatever their number, the single traversal tests
+// all eight children against one ray in one register's work, so a few rays go faster alone (two:
+// bench/vs_embree at load 16, docs/benchmarks.md; one and three were within the noise of it).
+constexpr int kFewRays = 2;
+
 // A child waiting on the stack: the rays that enter it and where each does.
 struct PendingRays {
     BvhChild child;
@@ -183,10 +189,12 @@ void Bvh::tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* fo
     BvhChild current = BvhChild::inner(0);
     LaneBits active = (1u << count) - 1;
     for (;;) {
-        if (std::has_single_bit(active)) {
-            const int r = std::countr_zero(active);
-            searchNearest<level, test, true>(rays[r], current, nearest[r], counters, &tied[r]);
-            limits[r] = nearest[r].t;
+        if (std::popcount(active) <= kFewRays) {
+            for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
+                const int r = std::countr_zero(bits);
+                searchNearest<level, test, true>(rays[r], current, nearest[r], counters, &tied[r]);
+                limits[r] = nearest[r].t;
+            }
             tLimit = load(limits);
         } else if (current.isLeaf()) {
             steps += std::uint64_t(std::popcount(active));
@@ -258,9 +266,11 @@ void Bvh::traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* 
         const Pending next = stack[--size];
         const LaneBits active = next.rays & ~done;
         if (active == 0) continue;
-        if (std::has_single_bit(active)) {
-            const int r = std::countr_zero(active);
-            if (searchBlocker<level, test>(rays[r], next.child, tMax[r], counters)) done |= active;
+        if (std::popcount(active) <= kFewRays) {
+            for (LaneBits bits = active; bits != 0; bits &= bits - 1) {
+                const int r = std::countr_zero(bits);
+                if (searchBlocker<level, test>(rays[r], next.child, tMax[r], counters)) done |= 1u << r;
+            }
             continue;
         }
         steps += std::uint64_t(std::popcount(active));
