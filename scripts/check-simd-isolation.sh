@@ -35,7 +35,7 @@ for object in "$@"; do
         NF >= 2 && $2 ~ /%zmm|%k[0-7]|%[xy]mm(1[6-9]|2[0-9]|3[01])/ { avx512[fn]++ }
         NF >= 2 && $2 ~ /^vf(n)?m(add|sub)/ { fma[fn]++ }
         END {
-            own = "rt::simd_" level "::|(trace(Shadow)?Packet|search(Nearest|Blocker))<\\(rt::SimdLevel\\)" index_ "(, \\(rt::TriangleTest\\)[0-9])?>"
+            own = "rt::simd_" level "::|(trace(Shadow)?Packet|search(Nearest|Blocker))<\\(rt::SimdLevel\\)" index_ "(, \\(rt::TriangleTest\\)[0-9](, (true|false))?)?>"
             for (fn in vector)
                 if (fn !~ own)
                     printf "check-simd-isolation ERROR: %s: %s: %d vector instructions\n", object, fn, vector[fn]

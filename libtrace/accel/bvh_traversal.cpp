@@ -6,7 +6,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include "accel/bvh_tree.h"
 
@@ -17,9 +16,9 @@ namespace rt::RT_LEVEL_NAMESPACE {
 
 namespace {
 
-// How far along the ray a child's box is taken to reach beyond its computed slab interval, on
-// both ends, and so beyond the nearest hit so far too: a primitive's computed hit is rounded in
-// its position by some units in the last place of the ray's origin and of the scene's
+// The slack (kBvhSlackUlps, accel/bvh_tree.h): how far along the ray a child's box is taken to
+// reach beyond its computed slab interval, on both ends, and so beyond the nearest hit so far too: a primitive's
+// computed hit is rounded in its position by some units in the last place of the ray's origin and of the scene's
 // coordinates (a triangle's test subtracts its vertex from the origin), and may lie outside the
 // box of its primitive by that much, more than the builder's padding (accel/bvh_build.cpp, in
 // the scene's units only) when the origin lies far from the scene. A child that rounding would
@@ -32,18 +31,16 @@ namespace {
 // covers the slab distances' own rounding too (a subtraction and a product, a few ulps of t,
 // which for a box in the scene is within the two magnitudes' sum):
 // pbrt-v4's 1 + 2 gamma(3), Ize 2013.
-constexpr Real kSlackUlps = 64;
 
 // The ray as the slab tests read it: per axis, its origin and reciprocal direction in every lane,
 // and which of a node's planes it meets first (the lower when it runs towards higher values); and
-// its slack (kSlackUlps), for a scene whose largest coordinate has magnitude `sceneMagnitude`.
+// its slack (slabSlack), for a scene whose largest coordinate has magnitude `sceneMagnitude`.
 struct SlabRay {
     RealLanes origin[3], inverse[3];
     int nearIsHigh[3];
     Real slack;
 
-    SlabRay(const Ray& ray, Real sceneMagnitude)
-        : slack(kSlackUlps * std::numeric_limits<Real>::epsilon() * (largestMagnitude(ray.origin) + sceneMagnitude)) {
+    SlabRay(const Ray& ray, Real sceneMagnitude) : slack(slabSlack(ray, sceneMagnitude)) {
         const Vec3 inv = reciprocal(ray.direction);
         for (int axis = 0; axis < 3; ++axis) {
             origin[axis] = broadcast(ray.origin[axis]);
@@ -109,8 +106,8 @@ namespace rt {
 // child is taken from the stack only if it starts before the nearest hit so far (with the ray's
 // slack), which a leaf's tests (accel/leaf_tests.h) lower. A node with one child hit hands it on
 // without the stack.
-template <SimdLevel level, TriangleTest test>
-void Bvh::searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) const {
+template <SimdLevel level, TriangleTest test, bool noteTies>
+void Bvh::searchNearest(const Ray& ray, BvhChild start, Hit& nearest, RayCounters& counters, bool* tied) const {
     using namespace RT_LEVEL_LANES;
     static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
     const SlabRay slabs(ray, sceneMagnitude_);
@@ -121,11 +118,12 @@ void Bvh::searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) con
     Pending stack[kStackSize];
     int size = 0;
     Real tNear[kBvhWidth];
-    BvhChild current = BvhChild::inner(0);
+    BvhChild current = start;
     for (;;) {
         ++steps;
         if (current.isLeaf()) {
-            nearestInLeaf(testBlocks, prims, leaves_.at(current.index()), ray, filter, nearest, tests);
+            nearestInLeaf<test, noteTies>(testBlocks, prims, leaves_.at(current.index()), ray, filter, nearest, tests,
+                                          tied);
         } else {
             const BvhNode& node = nodes_[current.index()];
             const unsigned bits = childrenHit(node, slabs, nearest.t, tNear);
@@ -146,7 +144,7 @@ void Bvh::searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) con
 // Any hit: the children in slot order, the last hit first, and the search ends at the first leaf
 // that blocks.
 template <SimdLevel level, TriangleTest test>
-bool Bvh::searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const {
+bool Bvh::searchBlocker(const Ray& ray, BvhChild start, Real tMax, RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
     static_assert(level == RT_LEVEL, "each compilation of this file holds its own level's traversal");
     const SlabRay slabs(ray, sceneMagnitude_);
@@ -156,7 +154,7 @@ bool Bvh::searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const 
     std::uint64_t steps = 0, tests = 0;
     BvhChild stack[kStackSize];
     int size = 0;
-    stack[size++] = BvhChild::inner(0);
+    stack[size++] = start;
     Real tNear[kBvhWidth];
     bool blocked = false;
     while (size != 0 && !blocked) {
@@ -175,10 +173,17 @@ bool Bvh::searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const 
     return blocked;
 }
 
-template void Bvh::searchNearest<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray&, Hit&, RayCounters&) const;
-template void Bvh::searchNearest<RT_LEVEL, TriangleTest::Watertight>(const Ray&, Hit&, RayCounters&) const;
-template bool Bvh::searchBlocker<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray&, Real, RayCounters&) const;
-template bool Bvh::searchBlocker<RT_LEVEL, TriangleTest::Watertight>(const Ray&, Real, RayCounters&) const;
+template void Bvh::searchNearest<RT_LEVEL, TriangleTest::MollerTrumbore, false>(const Ray&, BvhChild, Hit&,
+                                                                                RayCounters&, bool*) const;
+template void Bvh::searchNearest<RT_LEVEL, TriangleTest::Watertight, false>(const Ray&, BvhChild, Hit&, RayCounters&,
+                                                                            bool*) const;
+template void Bvh::searchNearest<RT_LEVEL, TriangleTest::MollerTrumbore, true>(const Ray&, BvhChild, Hit&, RayCounters&,
+                                                                               bool*) const;
+template void Bvh::searchNearest<RT_LEVEL, TriangleTest::Watertight, true>(const Ray&, BvhChild, Hit&, RayCounters&,
+                                                                           bool*) const;
+template bool Bvh::searchBlocker<RT_LEVEL, TriangleTest::MollerTrumbore>(const Ray&, BvhChild, Real,
+                                                                         RayCounters&) const;
+template bool Bvh::searchBlocker<RT_LEVEL, TriangleTest::Watertight>(const Ray&, BvhChild, Real, RayCounters&) const;
 
 }  // namespace rt
 

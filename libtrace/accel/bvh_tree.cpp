@@ -49,7 +49,7 @@ bool Bvh::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) 
     nearest.t = tMax;
     if (!nodes_.empty())
         onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
-            searchNearest<decltype(level)::value, decltype(test)::value>(ray, nearest, counters);
+            searchNearest<decltype(level)::value, decltype(test)::value>(ray, BvhChild::inner(0), nearest, counters);
         });
     if (!(nearest.t < tMax)) return false;
     hit = nearest;
@@ -58,7 +58,19 @@ bool Bvh::intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) 
 
 bool Bvh::occluded(const Ray& ray, Real tMax, RayCounters& counters) const {
     return !nodes_.empty() && onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
-        return searchBlocker<decltype(level)::value, decltype(test)::value>(ray, tMax, counters);
+        return searchBlocker<decltype(level)::value, decltype(test)::value>(ray, BvhChild::inner(0), tMax, counters);
+    });
+}
+
+void Bvh::intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found, RayCounters& counters) const {
+    onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+        tracePacket<decltype(level)::value, decltype(test)::value>(rays, count, tMax, hits, found, counters);
+    });
+}
+
+void Bvh::occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const {
+    onChosenCopy(leaves_.triangleTest(), [&](auto level, auto test) {
+        traceShadowPacket<decltype(level)::value, decltype(test)::value>(rays, count, tMax, blocked, counters);
     });
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "accel/accelerator.h"
@@ -43,6 +44,14 @@ inline Real largestMagnitude(const Aabb& box) {
     return box.empty() ? 0 : std::max(largestMagnitude(box.lo), largestMagnitude(box.hi));
 }
 
+// How far along a ray a child's box is taken to reach beyond its computed slab interval
+// (accel/bvh_traversal.cpp says why): kBvhSlackUlps units in the last place of the larger of the
+// ray origin's and the scene's largest magnitudes, `sceneMagnitude`.
+inline constexpr Real kBvhSlackUlps = 64;
+inline Real slabSlack(const Ray& ray, Real sceneMagnitude) {
+    return kBvhSlackUlps * std::numeric_limits<Real>::epsilon() * (largestMagnitude(ray.origin) + sceneMagnitude);
+}
+
 // An unused slot has an empty box (lo = +inf, hi = -inf), which no ray enters.
 struct alignas(64) BvhNode {
     Real lo[3][kBvhWidth];
@@ -65,17 +74,29 @@ public:
 
     bool intersect(const Ray& ray, Real tMax, Hit& hit, RayCounters& counters) const override;
     bool occluded(const Ray& ray, Real tMax, RayCounters& counters) const override;
+    // Packets of coherent rays walk the nodes together (accel/bvh_packet.cpp).
+    void intersectPacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found,
+                         RayCounters& counters) const override;
+    void occludedPacket(const Ray* rays, int count, const Real* tMax, bool* blocked,
+                        RayCounters& counters) const override;
     AccelStats stats() const override { return stats_; }
     // Inner nodes and leaves in pre-order, the children of a node in slot order.
     void forEachNode(const std::function<void(const TreeNodeInfo&)>& visit) const override;
 
 private:
-    // The queries on one level's lanes with one triangle test: accel/bvh_traversal.cpp, compiled
-    // once per level.
+    // The queries on one level's lanes with one triangle test, below `start` (the root, or the node
+    // where a packet left a ray alone): accel/bvh_traversal.cpp, compiled once per level. With
+    // `noteTies`, searchNearest sets `*tied` where a leaf meets a hit as near as the nearest
+    // (nearestInLeaf, accel/leaf_tests.h).
+    template <SimdLevel level, TriangleTest test, bool noteTies = false>
+    void searchNearest(const Ray& ray, BvhChild start, Hit& nearest, RayCounters& counters, bool* tied = nullptr) const;
     template <SimdLevel level, TriangleTest test>
-    void searchNearest(const Ray& ray, Hit& nearest, RayCounters& counters) const;
+    bool searchBlocker(const Ray& ray, BvhChild start, Real tMax, RayCounters& counters) const;
+    // The packet queries: accel/bvh_packet.cpp, compiled once per level.
     template <SimdLevel level, TriangleTest test>
-    bool searchBlocker(const Ray& ray, Real tMax, RayCounters& counters) const;
+    void tracePacket(const Ray* rays, int count, Real tMax, Hit* hits, bool* found, RayCounters& counters) const;
+    template <SimdLevel level, TriangleTest test>
+    void traceShadowPacket(const Ray* rays, int count, const Real* tMax, bool* blocked, RayCounters& counters) const;
     AccelStats computeStats(const BvhSettings& settings) const;
 
     const Primitives& prims_;

@@ -50,61 +50,13 @@
 #include "geometry/watertight_triangle.h"
 
 // Last, in a block of its own (clang-format sorts a block): the level's region starts in it
-// (accel/simd_level.h), with the leaves' loops.
+// (accel/simd_level.h), with the leaves' loops and the packet's lanes.
 #include "accel/leaf_tests.h"
+#include "accel/packet_lanes.h"
 
 namespace rt::RT_LEVEL_NAMESPACE {
 
 namespace {
-
-// The packet in groups of one register's lanes (core/simd.h): SSE2 takes four groups of two
-// doubles or two of four floats, AVX2 two of four doubles or one of eight floats, AVX-512 one of
-// eight doubles or eight floats.
-constexpr int kGroups = kPacketSize / kLanes;
-static_assert(kGroups * kLanes == kPacketSize);
-
-// Masks are all-ones lanes (core/simd.h); bit i of a LaneBits is ray i.
-using LaneBits = unsigned;
-
-struct Lanes {
-    RealLanes group[kGroups];
-};
-
-LaneBits bitsOf(const Lanes& mask) {
-    LaneBits bits = 0;
-    for (int g = 0; g < kGroups; ++g) bits |= laneBits(mask.group[g]) << (g * kLanes);
-    return bits;
-}
-
-// A group's lane mask from one bit per lane.
-RealLanes groupMaskOf(LaneBits bits) {
-    alignas(64) Real lanes[kLanes];
-    for (int i = 0; i < kLanes; ++i) lanes[i] = (bits >> i) & 1u ? Real(1) : Real(0);
-    return notEqual(loadLanes(lanes), broadcast(0));
-}
-
-// A lane mask from one bit per ray.
-Lanes maskOf(LaneBits bits) {
-    Lanes mask;
-    for (int g = 0; g < kGroups; ++g) mask.group[g] = groupMaskOf((bits >> (g * kLanes)) & ((1u << kLanes) - 1));
-    return mask;
-}
-
-Lanes load(const Real (&values)[kPacketSize]) {
-    Lanes l;
-    for (int g = 0; g < kGroups; ++g) l.group[g] = loadLanes(values + g * kLanes);
-    return l;
-}
-
-Lanes broadcastLanes(Real value) {
-    Lanes l;
-    for (int g = 0; g < kGroups; ++g) l.group[g] = broadcast(value);
-    return l;
-}
-
-void store(const Lanes& l, Real (&values)[kPacketSize]) {
-    for (int g = 0; g < kGroups; ++g) storeLanes(values + g * kLanes, l.group[g]);
-}
 
 // The rays' per-axis data, and the interval of each inside a node with the rays inside it. For the
 // watertight test also each ray's shear (ShearedRay), along the axes all of them share.
@@ -346,13 +298,6 @@ Lanes stillOpen(const Span& span, const Lanes& tLimit) {
     for (int g = 0; g < kGroups; ++g)
         open.group[g] = andNot(lessThan(tLimit.group[g], span.tMin.group[g]), span.active.group[g]);
     return open;
-}
-
-// Lane `ray` of `lanes`.
-Real laneOf(const Lanes& lanes, int ray) {
-    alignas(64) Real values[kPacketSize];
-    store(lanes, values);
-    return values[ray];
 }
 
 // The packet's walk through the tree's `nodes`, both queries': front to back, each ray visiting

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -146,30 +147,54 @@ Hit laneHit(const Block* first, const LaneHits<N>& hits, int lane) {
 // and, in a scene with a hit filter (cut-outs, single-sided materials), only if it accepts it.
 // A pair of blocks is the same: its second block is tested with the nearest t from before the
 // first's hits, and its hits that the first's then beat are dropped here. Adds its tests to `tests`.
-template <TriangleTest test>
+// With `noteTies` (the BVH's packets, accel/bvh_packet.cpp, whose rays meet their leaves in another
+// order than alone) the leaf also looks for hits exactly as near as the nearest so far, which the
+// tie rule gives to the one found first, and sets `*tied` when it meets one: the nearest is then
+// what this order found, not necessarily what the ray's own order finds. A hit at exactly the
+// ray's tMax sets it too (no harm: the caller traces a tied ray again alone).
+template <TriangleTest test, bool noteTies = false>
 [[gnu::always_inline]] inline void nearestInLeaf(const BlockTests<test>& testBlocks, const PrimitiveView& prims,
                                                  const LeafPrimitives& leaf, const Ray& ray, const HitFilter* filter,
-                                                 Hit& nearest, std::uint64_t& tests) {
+                                                 Hit& nearest, std::uint64_t& tests, bool* tied = nullptr) {
     tests += leaf.count();
+    // The blocks' limit: the nearest t, or with noteTies the next value up, so that a hit at the
+    // nearest t is found too.
+    Real tieLimit = noteTies ? std::nextafter(nearest.t, kInfinity) : 0;
+    const Real& limit = noteTies ? tieLimit : nearest.t;
+    const auto take = [&](const Hit& candidate) {
+        nearest = candidate;
+        if constexpr (noteTies) tieLimit = std::nextafter(nearest.t, kInfinity);
+    };
     const auto takeNearest = [&](const auto* first, std::uint32_t, const auto& hits, int) {
         for (unsigned bits = hits.lanes; bits != 0; bits &= bits - 1) {
             const int lane = std::countr_zero(bits);
-            if (!(hits.t[lane] < nearest.t)) continue;
+            if (!(hits.t[lane] < nearest.t)) {
+                if constexpr (noteTies) *tied |= hits.t[lane] == nearest.t;
+                continue;
+            }
             const Hit candidate = laneHit(first, hits, lane);
             if (filter && !filter->accepts(ray, candidate)) continue;
-            nearest = candidate;
+            take(candidate);
         }
         return false;
     };
     anyBlockKind([&](auto kind) __attribute__((always_inline)) {
-        return testBlocks(leaf.blocks<test, kind>(), leaf.blockCount<kind>(), nearest.t, takeNearest);
+        return testBlocks(leaf.blocks<test, kind>(), leaf.blockCount<kind>(), limit, takeNearest);
     });
     const std::uint32_t* otherIds = leaf.otherIds();
     for (std::uint32_t i = 0; i < leaf.others; ++i) {
-        if (filter)
+        if constexpr (noteTies) {
+            Hit candidate;
+            if (!prims.intersect(otherIds[i], ray, tieLimit, candidate)) continue;
+            if (candidate.t == nearest.t)
+                *tied = true;
+            else if (!filter || filter->accepts(ray, candidate))
+                take(candidate);
+        } else if (filter) {
             intersectFiltered(prims, otherIds[i], ray, *filter, nearest);
-        else
+        } else {
             prims.intersect(otherIds[i], ray, nearest.t, nearest);
+        }
     }
 }
 
