@@ -21,6 +21,7 @@
 #include "accel/bvh.h"
 #include "accel/bvh_tree.h"
 #include "core/parallel_errors.h"
+#include "core/simd.h"
 #include "core/stopwatch.h"
 
 namespace rt {
@@ -32,10 +33,57 @@ constexpr int kBins = 16;
 // longest axis, which halves a node at each level and so bounds the depth by kMaxBvhDepth.
 constexpr int kMedianDepth = kMaxBvhDepth - 40;
 
+// A box in float, as the build bins and partitions boxes: half the bytes of one in double, and
+// each corner four lanes (the fourth unused) that the compiler grows with one min or max
+// instruction, as Embree's builders keep their boxes. A primitive's box is rounded outward (see
+// makeRefs), so a node's box, the union of its references', still holds its primitives; it is at
+// most a float's rounding larger than the exact one, which costs the traversal nothing measurable.
+struct BuildBox {
+    alignas(16) float lo[4] = {kFloatInf, kFloatInf, kFloatInf, kFloatInf};
+    alignas(16) float hi[4] = {-kFloatInf, -kFloatInf, -kFloatInf, -kFloatInf};
+
+    static constexpr float kFloatInf = std::numeric_limits<float>::infinity();
+
+    void extend(const BuildBox& b) {
+#if RT_SIMD_SSE2
+        _mm_store_ps(lo, _mm_min_ps(_mm_load_ps(lo), _mm_load_ps(b.lo)));
+        _mm_store_ps(hi, _mm_max_ps(_mm_load_ps(hi), _mm_load_ps(b.hi)));
+#else
+        for (int k = 0; k < 4; ++k) {
+            lo[k] = std::min(lo[k], b.lo[k]);
+            hi[k] = std::max(hi[k], b.hi[k]);
+        }
+#endif
+    }
+    bool empty() const { return lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]; }
+    float surfaceArea() const {
+        if (empty()) return 0;
+        const float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+        return 2 * (dx * dy + dy * dz + dz * dx);
+    }
+    int longestAxis() const {
+        const float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+        return dx >= dy && dx >= dz ? 0 : (dy >= dz ? 1 : 2);
+    }
+    Aabb aabb() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+};
+
+// The float nearest x on the side of -inf (down) or +inf (up): a box rounded outward.
+float roundDown(Real x) {
+    const auto f = float(x);
+    return Real(f) > x ? std::nextafter(f, -BuildBox::kFloatInf) : f;
+}
+float roundUp(Real x) {
+    const auto f = float(x);
+    return Real(f) < x ? std::nextafter(f, BuildBox::kFloatInf) : f;
+}
+
+// A primitive as the build sees it: its box, the box's centre (lane 3 holds nothing) and its index
+// in the Primitives. 48 bytes.
 struct PrimRef {
-    Aabb box;
+    BuildBox box;
+    float centre[3];
     std::uint32_t id;
-    Real centre(int axis) const { return (box.lo[axis] + box.hi[axis]) * Real(0.5); }
 };
 
 // What a leaf of `n` primitives costs to test in the SAH: its pairs of blocks of kSimdWidth, which
@@ -46,11 +94,14 @@ double blocks(std::uint32_t n) { return double((n + 2 * kSimdWidth - 1) / (2 * k
 
 // The bounds of some references and the bounds of their centres.
 struct Extent {
-    Aabb bounds, centres;
+    BuildBox bounds, centres;
 
     void add(const PrimRef& ref) {
         bounds.extend(ref.box);
-        centres.extend(Vec3{ref.centre(0), ref.centre(1), ref.centre(2)});
+        for (int a = 0; a < 3; ++a) {
+            centres.lo[a] = std::min(centres.lo[a], ref.centre[a]);
+            centres.hi[a] = std::max(centres.hi[a], ref.centre[a]);
+        }
     }
     void merge(const Extent& o) {
         bounds.extend(o.bounds);
@@ -61,14 +112,14 @@ struct Extent {
 // The references [begin, end) of the build's array, their bounds and the bounds of their centres.
 struct Range {
     std::uint32_t begin = 0, end = 0;
-    Aabb bounds, centres;
+    BuildBox bounds, centres;
     std::uint32_t size() const { return end - begin; }
 };
 
 // The references of a range counted and bounded per bin of each axis, as the SAH sweep needs them.
 struct Bins {
     std::uint32_t counts[3][kBins] = {};
-    Aabb boxes[3][kBins];
+    BuildBox boxes[3][kBins];
 
     void merge(const Bins& o) {
         for (int a = 0; a < 3; ++a)
@@ -137,10 +188,14 @@ private:
         const Real pad = padding(prims.bounds());
 #pragma omp parallel for schedule(static) if (n >= kTaskPrimitives)
         for (std::int64_t i = 0; i < std::int64_t(n); ++i) {
-            Aabb box = prims.bounds(std::uint32_t(i));
-            box.lo = box.lo - Vec3{pad, pad, pad};
-            box.hi = box.hi + Vec3{pad, pad, pad};
-            refs_[std::size_t(i)] = {box, std::uint32_t(i)};
+            const Aabb box = prims.bounds(std::uint32_t(i));
+            PrimRef& ref = refs_[std::size_t(i)];
+            for (int a = 0; a < 3; ++a) {
+                ref.box.lo[a] = roundDown(box.lo[a] - pad);
+                ref.box.hi[a] = roundUp(box.hi[a] + pad);
+                ref.centre[a] = (ref.box.lo[a] + ref.box.hi[a]) * 0.5f;
+            }
+            ref.id = std::uint32_t(i);
         }
     }
 
@@ -164,17 +219,18 @@ private:
     // The bins of a range: kBins over its centres' extent along each axis. The binning and the
     // partition both place references through binOf, so that they agree on every one.
     struct Binning {
-        Vec3 lo;
-        Real scale[3];  // bins per unit; 0 along an axis the centres do not spread over
+        float lo[3];
+        float scale[3];  // bins per unit; 0 along an axis the centres do not spread over
 
-        explicit Binning(const Range& r) : lo(r.centres.lo) {
+        explicit Binning(const Range& r) {
             for (int a = 0; a < 3; ++a) {
-                const Real extent = r.centres.hi[a] - r.centres.lo[a];
-                scale[a] = extent > 0 ? Real(kBins) / extent : 0;
+                lo[a] = r.centres.lo[a];
+                const float extent = r.centres.hi[a] - r.centres.lo[a];
+                scale[a] = extent > 0 ? float(kBins) / extent : 0;
             }
         }
         int binOf(int axis, const PrimRef& ref) const {
-            return std::clamp(int((ref.centre(axis) - lo[axis]) * scale[axis]), 0, kBins - 1);
+            return std::clamp(int((ref.centre[axis] - lo[axis]) * scale[axis]), 0, kBins - 1);
         }
     };
 
@@ -224,25 +280,32 @@ private:
 
     // The bin boundary of `axis` with the least area-weighted blocks (the SAH's sum, unscaled), for a
     // range of n references.
+    // An empty bin changes neither side, so the boundary after it splits as the one before it does
+    // and cannot cost less: both sweeps skip empty bins (in a small node, most are).
     static std::pair<double, int> bestBinOf(const Bins& bins, int axis, std::uint32_t n) {
         const std::uint32_t* counts = bins.counts[axis];
-        const Aabb* boxes = bins.boxes[axis];
-        double aboveCost[kBins] = {};  // aboveCost[b]: bins b.. together
-        Aabb above;
+        const BuildBox* boxes = bins.boxes[axis];
+        double aboveCost[kBins];  // aboveCost[b]: bins b.. together
+        BuildBox above;
         std::uint32_t aboveCount = 0;
+        double cost = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            above.extend(boxes[b]);
-            aboveCount += counts[b];
-            aboveCost[b] = double(above.surfaceArea()) * blocks(aboveCount);
+            if (counts[b] != 0) {
+                above.extend(boxes[b]);
+                aboveCount += counts[b];
+                cost = double(above.surfaceArea()) * blocks(aboveCount);
+            }
+            aboveCost[b] = cost;
         }
         std::pair<double, int> best{std::numeric_limits<double>::infinity(), 1};
-        Aabb below;
+        BuildBox below;
         std::uint32_t belowCount = 0;
         for (int b = 1; b < kBins; ++b) {
+            if (counts[b - 1] == 0) continue;
             below.extend(boxes[b - 1]);
             belowCount += counts[b - 1];
-            if (belowCount == 0 || belowCount == n) continue;
-            const double cost = double(below.surfaceArea()) * blocks(belowCount) + aboveCost[b];
+            if (belowCount == n) break;
+            cost = double(below.surfaceArea()) * blocks(belowCount) + aboveCost[b];
             if (cost < best.first) best = {cost, b};
         }
         return best;
@@ -260,7 +323,7 @@ private:
                          : partitionInChunks(r, below);
         } else if (s.kind == Split::Median) {
             const auto before = [&](const PrimRef& a, const PrimRef& b) {
-                const Real ca = a.centre(s.axis), cb = b.centre(s.axis);
+                const float ca = a.centre[s.axis], cb = b.centre[s.axis];
                 return ca < cb || (ca == cb && a.id < b.id);  // a total order: the same halves every time
             };
             std::nth_element(first, refs_.begin() + middle, last, before);
@@ -397,13 +460,13 @@ private:
     void addChild(std::uint32_t parent, const BuildNode& child) {
         if (!child.children.empty()) {
             const std::uint32_t index = addNode(child);
-            nodes_[parent].add(child.range.bounds, BvhChild::inner(index));
+            nodes_[parent].add(child.range.bounds.aabb(), BvhChild::inner(index));
             return;
         }
         const LeafPrimitives sizes = LeafStore::sizesOf(prims_, &ids_[child.range.begin], child.range.size());
         if (units_ + sizes.units() >= (std::size_t(1) << 31)) throw std::length_error("BVH leaves beyond 32 GB");
         leaves_.push_back({child.range, sizes, units_});
-        nodes_[parent].add(child.range.bounds, BvhChild::leaf(std::uint32_t(units_)));
+        nodes_[parent].add(child.range.bounds.aabb(), BvhChild::leaf(std::uint32_t(units_)));
         units_ += sizes.units();
     }
 
