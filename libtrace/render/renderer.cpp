@@ -206,19 +206,31 @@ void writePixel(const PassState& state, std::size_t i, int x, int y, Framebuffer
     if (PixelAovs* aovs = image.aovsAt(x, y)) *aovs = state.aovs[i].mean(e.varianceOfMean());
 }
 
+// Writes every pixel of window `w` of `state` into the picture, a row per thread at a time.
+void writePicture(const PassState& state, const PixelWindow& w, int threads, Framebuffer& image) {
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (int y = w.y0; y < w.y1; ++y) {
+        std::size_t i = std::size_t(y - w.y0) * std::size_t(w.width());
+        for (int x = w.x0; x < w.x1; ++x, ++i) writePixel(state, i, x, y, image);
+    }
+}
+
 // The path tracer in passes: pass k takes sample k of every pixel, so the picture after K
 // passes holds the same bits as a render with -S K (PixelEstimate and AovSums add in the same
 // order), for any thread count or region split. Each pixel's new sample is added where it is
 // traced, in the parallel loop, to a copy of the pixel's state (`next`), so that a pass cut
-// short by --time-limit or the watcher's stop can be dropped whole: the picture goes back to
-// `done`, the passes that finished. The watcher sees the picture after every pass, and may end
-// the render there (endAfterPass). With --noise-threshold a pixel whose own samples say it has
-// converged is skipped (render/film/noise_threshold.h), and the passes end once every pixel has.
+// short by --time-limit or the watcher's stop can be dropped whole: the picture is made from
+// `done`, the passes that finished, once at the end and, for a watcher, after every pass (not
+// per sample: a pixel's mean, coverage and AOVs cost as much as its bookkeeping). The watcher
+// may end the render after a pass (endAfterPass). With --noise-threshold a pixel whose own
+// samples say it has converged is skipped (render/film/noise_threshold.h), and the passes end once
+// every pixel has.
 Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const RenderSettings& settings, RenderStats& stats,
                        const RenderProgress& progress, const RenderWatch& watch) {
     const PixelWindow w = settings.window();
     const bool withAovs = !settings.aovs.empty();
     const NoiseThreshold noise(settings);
+    const bool withVariance = withAovs || noise.enabled();  // the variance AOV or the noise threshold reads it
     Framebuffer image(settings.width, settings.height, w, scene.background, withAovs);
     BlockLoop loop(settings, blocksOf(w, kBlockSize), progress, watch);
     PassState done(image.pixels().size(), withAovs), next = done;
@@ -227,41 +239,38 @@ Framebuffer renderPath(const PathTracer& tracer, const Scene& scene, const Rende
     std::vector<std::uint64_t> stillSampling(std::size_t(loop.threads()));  // pixels not stopped after the pass
     NonFiniteSamples nonFinite;
     int passes = 0;
-    bool whole = true;
     for (; passes < settings.pixelSamples; ++passes) {
         std::fill(passNonFinite.begin(), passNonFinite.end(), NonFiniteSamples{});
         std::fill(stillSampling.begin(), stillSampling.end(), 0);
-        whole = loop.run(
+        const bool whole = loop.run(
             [&](const PixelWindow& b, RenderCounters& counters) {
+                const std::size_t thread = std::size_t(omp_get_thread_num());
                 return loop.eachPixel(b, [&](int x, int y) {
                     const std::size_t i = std::size_t(y - w.y0) * std::size_t(w.width()) + std::size_t(x - w.x0);
                     next.estimates[i] = done.estimates[i];
                     AovSums* aovs = withAovs ? &(next.aovs[i] = done.aovs[i]) : nullptr;
                     if (noise.stopped(done.estimates[i])) return;
-                    const std::size_t thread = std::size_t(omp_get_thread_num());
                     bool seen = false;
                     const Color c = tracer.sample(x, y, passes, counters, seen, aovs);  // before add() reads `seen`
-                    if (!next.estimates[i].add(c, seen)) passNonFinite[thread].add(x, y);
+                    if (!next.estimates[i].add(c, seen, withVariance)) passNonFinite[thread].add(x, y);
                     stillSampling[thread] += !noise.stopped(next.estimates[i]);
-                    writePixel(next, i, x, y, image);
                 });
             },
             1, nullptr);
-        if (!whole) break;
+        if (!whole) break;  // the pass cut short is dropped: `done` holds the whole ones
         std::swap(done, next);
         for (const NonFiniteSamples& n : passNonFinite) nonFinite += n;
-        if (watch.blockDone) watch.blockDone(image, w);
+        if (watch.blockDone) {
+            writePicture(done, w, loop.threads(), image);
+            watch.blockDone(image, w);
+        }
         const bool converged = std::accumulate(stillSampling.begin(), stillSampling.end(), std::uint64_t(0)) == 0;
         if (converged || (watch.endAfterPass && passes + 1 < settings.pixelSamples && watch.endAfterPass())) {
             ++passes;  // this one is whole, and the picture holds it
             break;
         }
     }
-    if (!whole) {  // the last pass was cut short: back to the whole ones
-        std::size_t i = 0;
-        for (int y = w.y0; y < w.y1; ++y)
-            for (int x = w.x0; x < w.x1; ++x, ++i) writePixel(done, i, x, y, image);
-    }
+    writePicture(done, w, loop.threads(), image);
     loop.finish(scene, passes, stats);
     stats.counters.nonFinite += nonFinite;
     stats.samplesTaken = 0;

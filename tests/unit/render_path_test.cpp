@@ -149,8 +149,8 @@ TEST(SobolSampler, EachPairIsStratifiedForPowerOfTwoCounts) {
     }
 }
 
-// The byte tables of Sobol's dimension 1 give what its definition does: the XOR of the direction
-// numbers v_k = v_{k-1} ^ (v_{k-1} >> 1), v_0 = 2^31, over the index's set bits.
+// The byte tables of Sobol's dimension 1 give what its definition does, bit-reversed: the XOR of
+// the direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1), v_0 = 2^31, over the index's set bits.
 TEST(SobolSampler, Dimension1TablesAgreeWithTheDirectionNumbers) {
     const auto byDefinition = [](std::uint32_t index) {
         std::uint32_t x = 0;
@@ -161,9 +161,10 @@ TEST(SobolSampler, Dimension1TablesAgreeWithTheDirectionNumbers) {
     SplitMix64 rng{5};
     for (int i = 0; i < 10000; ++i) {
         const auto index = i < 300 ? std::uint32_t(i) : std::uint32_t(rng.next());
-        ASSERT_EQ(sobol_detail::sobolDimension1(index), byDefinition(index)) << index;
+        ASSERT_EQ(sobol_detail::reversedSobolDimension1(index), sobol_detail::reverseBits(byDefinition(index)))
+            << index;
     }
-    ASSERT_EQ(sobol_detail::sobolDimension1(~0u), byDefinition(~0u));
+    ASSERT_EQ(sobol_detail::reversedSobolDimension1(~0u), sobol_detail::reverseBits(byDefinition(~0u)));
 }
 
 // next1D is the first of the pair next2D gives, and moves on to the next pair as it does.

@@ -185,6 +185,20 @@ TEST(PixelEstimate, WelfordGivesTheSampleVarianceOverN) {
     EXPECT_EQ(e.samples, 5);
 }
 
+// The renderer's passes leave the variance out when nothing reads it; the mean and coverage
+// must not notice.
+TEST(PixelEstimate, WithoutTheVarianceTheMeanAndCoverageKeepTheirBits) {
+    PixelEstimate with, without;
+    for (const float v : {0.1f, 2.3f, 1e30f, 0.7f, std::nanf(""), 3.9f}) {
+        const Color c{v, 0.5f * v, 1 / v};
+        EXPECT_EQ(with.add(c, v > 1), without.add(c, v > 1, false)) << v;
+    }
+    EXPECT_TRUE(sameBits(with.mean(), without.mean()));
+    EXPECT_EQ(with.coverage(), without.coverage());
+    EXPECT_EQ(without.samples, 6);
+    EXPECT_EQ(without.varianceOfMean(), Color{});  // not tracked
+}
+
 TEST(RenderVariance, AConstantPictureHasNone) {
     for (const Integrator integrator : {Integrator::Path, Integrator::Whitted}) {
         Scene s = test::spheresOnFloor();

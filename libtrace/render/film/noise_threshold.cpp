@@ -12,11 +12,6 @@ NoiseThreshold::NoiseThreshold(const RenderSettings& settings)
       minSamples_(settings.adaptiveMinSamples > 0 || !enabled() ? settings.adaptiveMinSamples
                                                                 : automaticMinSamples(threshold_)) {}
 
-bool NoiseThreshold::stopped(const PixelEstimate& pixel) const {
-    if (!enabled() || pixel.samples < minSamples_) return false;
-    return pixel.samples % kNoiseCheckInterval == 0 && relativeError(pixel) < threshold_;
-}
-
 float NoiseThreshold::relativeError(const PixelEstimate& pixel) {
     return std::sqrt(pixel.luminanceVarianceOfMean()) / (std::max(pixel.luminanceMean, 0.0f) + kDarkLuminance);
 }

@@ -39,7 +39,11 @@ public:
 
     // True when the pixel takes no further sample: its count is one it is judged at and its error
     // is below the threshold there. Once true it stays so (the pixel's estimate no longer changes).
-    bool stopped(const PixelEstimate& pixel) const;
+    // Inline, as the renderer asks twice per path, mostly with the threshold off.
+    bool stopped(const PixelEstimate& pixel) const {
+        if (!enabled() || pixel.samples < minSamples_) return false;
+        return pixel.samples % kNoiseCheckInterval == 0 && relativeError(pixel) < threshold_;
+    }
 
     // The relative standard error of the pixel's mean luminance (0 before two samples).
     static float relativeError(const PixelEstimate& pixel);

@@ -24,13 +24,17 @@ struct PixelEstimate {
     // Adds one sample; a non-finite one counts as black and the call returns false, so that
     // the caller can record it (RenderCounters::nonFinite). A finite one beyond kMaxColorValue
     // (products of bright lights, emitters and factors) is held to it, so that the sums stay finite.
-    bool add(const Color& sample, bool hit) {
+    // Without `withVariance` the variance's running sums are left alone (and the variances mean
+    // nothing): the mean and coverage keep their bits at half the cost, for a caller that never
+    // asks for a variance (the path tracer's passes without --aov or --noise-threshold).
+    bool add(const Color& sample, bool hit, bool withVariance = true) {
         const bool finite = isFinite(sample);
         const Color x = finite ? clampedToMaxColorValue(sample) : Color{};
         const Color before = runningMean;
         sum += x;
         ++samples;
         hits += hit;
+        if (!withVariance) return finite;
         const Color delta = x + before * -1.0f;
         runningMean += delta * (1.0f / float(samples));
         squaredDeviations += delta * (x + runningMean * -1.0f);
