@@ -73,11 +73,14 @@ print_table() {
     done
 }
 
-# inner_folder FILE: the sub-folder of INNER that the libtrace path FILE lies in, if any.
+# inner_folder FILE: sets INNER_OF to the sub-folder of INNER that the libtrace path FILE lies in,
+# or empty. (It and guarded_header set a variable rather than print: a $(...) for every file and
+# header forks a shell, which made the check take half a minute.)
 inner_folder() {
     local inner
+    INNER_OF=
     for inner in "${INNER_FOLDERS[@]}"; do
-        [[ $1 == "$inner"/* ]] && echo "$inner" && return
+        [[ $1 == "$inner"/* ]] && INNER_OF=$inner && return
     done
     return 0
 }
@@ -101,12 +104,14 @@ listed() {
     return 1
 }
 
-# guarded_header HEADER: the table's entry HEADER falls under (assimp/ for assimp/scene.h), if any.
+# guarded_header HEADER: sets GUARD to the table's entry HEADER falls under (assimp/ for
+# assimp/scene.h), or empty.
 guarded_header() {
     local entry
+    GUARD=
     for entry in "${GUARDED[@]}"; do
         if [[ $entry == */ && $1 == "$entry"* ]] || [ "$1" = "$entry" ]; then
-            echo "$entry"
+            GUARD=$entry
             return
         fi
     done
@@ -147,30 +152,31 @@ check_include() {
         contains "$layer" ${MAY_USE[$folder]} ||
             error "$file:$line: $folder/ may not include \"$header\" ($folder/ may use: ${MAY_USE[$folder]:-nothing})"
     elif [[ $text =~ \#[[:space:]]*include[[:space:]]*\<([^\>]+)\> ]]; then
-        local entry
-        entry=$(guarded_header "${BASH_REMATCH[1]}")
-        [ -z "$entry" ] || contains "$entry" ${THIRD_PARTY[$folder]} ||
-            error "$file:$line: $folder/ may not include <${BASH_REMATCH[1]}> (only $(owners "$entry") may)"
+        guarded_header "${BASH_REMATCH[1]}"
+        [ -z "$GUARD" ] || contains "$GUARD" ${THIRD_PARTY[$folder]} ||
+            error "$file:$line: $folder/ may not include <${BASH_REMATCH[1]}> (only $(owners "$GUARD") may)"
     fi
 }
 
 check_tree() {
-    local root=${1%/} file
-    while IFS= read -r file; do
-        local relative=${file#"$root"/}
-        local folder=${relative%%/*}
+    local root=${1%/} file relative folder line text
+    local -a files
+    mapfile -t files < <(find "$root" -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.h.in' \) | sort)
+    for file in "${files[@]}"; do
+        relative=${file#"$root"/}
         [[ $relative == */* ]] || continue  # CMakeLists.txt, version.h.in
-        if ! contains "$folder" "${FOLDERS[@]}"; then
-            error "$file:1: folder $folder/ is not in the layer table of scripts/check-layers.sh"
-            continue
-        fi
-        local line text inner
-        inner=$(inner_folder "$relative")
-        # grep picks the #include lines, so that bash's slow loop reads only those.
-        while IFS=: read -r line text; do
-            check_include "$file" "$line" "$folder" "$inner" "$text"
-        done < <(grep -n '^[[:space:]]*#[[:space:]]*include' "$file" || true)
-    done < <(find "$root" -type f \( -name '*.h' -o -name '*.cpp' -o -name '*.h.in' \) | sort)
+        contains "${relative%%/*}" "${FOLDERS[@]}" ||
+            error "$file:1: folder ${relative%%/*}/ is not in the layer table of scripts/check-layers.sh"
+    done
+    # One grep picks every file's #include lines ("file:line:text"), so that bash's slow loop
+    # reads only those.
+    while IFS=: read -r file line text; do
+        relative=${file#"$root"/}
+        folder=${relative%%/*}
+        [[ $relative == */* ]] && contains "$folder" "${FOLDERS[@]}" || continue
+        inner_folder "$relative"
+        check_include "$file" "$line" "$folder" "$INNER_OF" "$text"
+    done < <(grep -n -H '^[[:space:]]*#[[:space:]]*include' "${files[@]}" || true)
 }
 
 check_docs() {
