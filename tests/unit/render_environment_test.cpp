@@ -3,6 +3,7 @@
 // bright spot: the same mean as uniform sampling, with far less variance.
 #include <cmath>
 #include <cstdio>
+#include <type_traits>
 
 #include "render/lights/environment_light.h"
 #include "render/lights/light_distribution.h"
@@ -187,7 +188,10 @@ TEST(EnvironmentLight, SampledDensityIsTheOneMultipleImportanceSamplingAsksFor) 
     const test::FunctionTextures texture(scene, GradientSkyWithSun{});
     const LightDistribution lights(scene, &texture);
     const Vec3 from{0.2, 0.5, 0.1}, normal{0, 1, 0};
-    int skySamples = 0;
+    // In float a sampled direction, rounded, can fall into the image's next cell, of another
+    // density (seen once in 4096, next to a pole); a density without its Jacobian differs nearly
+    // everywhere.
+    int skySamples = 0, differing = 0;
     for (int i = 0; i < 4096; ++i) {
         SobolSampler sampler(5, 6, std::uint32_t(i), 0);
         const Real pick = sampler.next1D();
@@ -195,8 +199,10 @@ TEST(EnvironmentLight, SampledDensityIsTheOneMultipleImportanceSamplingAsksFor) 
         const std::optional<LightSample> light = lights.sample(from, normal, pick, u1, u2);
         if (!light || light->source != LightSample::Source::Environment) continue;
         ++skySamples;
-        ASSERT_NEAR(lights.pdfEnvironment(light->direction), light->pdf, 1e-3 * light->pdf) << light->direction;
+        if (std::abs(lights.pdfEnvironment(light->direction) - light->pdf) > 1e-3 * light->pdf) ++differing;
     }
+    const int allowed = std::is_same_v<Real, double> ? 0 : skySamples / 200;
+    EXPECT_LE(differing, allowed);
     EXPECT_GT(skySamples, 1000);
     EXPECT_LT(skySamples, 4096) << "the point light takes a share";
 }
