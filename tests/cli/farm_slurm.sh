@@ -78,7 +78,6 @@ wait_for() {
     for _ in $(seq "$tenths"); do "$@" && return 0; sleep 0.1; done
     return 1
 }
-task_is_running() { [ "$(squeue -h -j "$1" -o %T 2>/dev/null)" = RUNNING ]; }
 jobs_gone() { [ -z "$(squeue -h -j "$1" 2>/dev/null)" ]; }
 
 # ---- the render --------------------------------------------------------------------------
@@ -86,12 +85,23 @@ jobs_gone() { [ -z "$(squeue -h -j "$1" 2>/dev/null)" ]; }
 opts=(-K -s -d 3 -x 96 -y 64 -S 2 -D b -r 4)
 "$RT_RENDER" "$WORK/balls.xml" "${opts[@]}" -q --exr-pixels float -f "$WORK/direct.exr"
 
-# Every write is held 1 s (the test hook of os/atomic_file.h, passed to the tasks by sbatch's
-# --export=ALL), so that a task is caught running.
-RT_TEST_WRITE_DELAY_MS=1000 "$farm" submit "$WORK/balls.xml" "${opts[@]}" --tiles 4x4 -o "$WORK/out" \
+# Task 5's first run holds its finished picture 60 s before renaming it (the test hook of
+# os/atomic_file.h), through a wrapper given to rt-farm as $RT_RENDER; the test cancels it once
+# that temporary exists, so the task is caught mid-write however slow the machine is. (A hold
+# on every task's writes left a window that a loaded CI machine missed.)
+cat >"$WORK/render-holding-task-5" <<EOF
+#!/bin/bash
+if [ "\${SLURM_ARRAY_TASK_ID:-}" = 5 ] && mkdir "$WORK/task-5-held" 2>/dev/null; then
+    export RT_TEST_WRITE_DELAY_MS=60000
+fi
+exec $(printf '%q' "$(readlink -f "$RT_RENDER")") "\$@"
+EOF
+chmod +x "$WORK/render-holding-task-5"
+RT_RENDER="$WORK/render-holding-task-5" "$farm" submit "$WORK/balls.xml" "${opts[@]}" --tiles 4x4 -o "$WORK/out" \
     --cpus-per-task 1 >"$WORK/ids" 2>"$WORK/submit.log" || fail "submit failed: $(cat "$WORK/submit.log")"
 read -r array merge_job <"$WORK/ids"
-wait_for 60 task_is_running "${array}_5" || fail "task 5 never ran: $(squeue 2>&1)"
+part_5_being_written() { compgen -G "$WORK/out/parts/.part_5.rt-tmp-*.exr" >/dev/null; }
+wait_for 60 part_5_being_written || fail "task 5 never wrote its part: $(squeue 2>&1)"
 scancel "${array}_5"
 wait_for 90 jobs_gone "$array" || fail "the array did not finish: $(squeue 2>&1)"
 
