@@ -319,24 +319,25 @@ RenderEstimate estimateWith(const Integrator& probe, const RenderSettings& setti
 
 }  // namespace
 
-RenderEstimate estimateRender(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-                              const ImageTextures* images, int probePixels, double maxProbeSeconds) {
+RenderEstimate estimateRender(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings,
+                              int probePixels, double maxProbeSeconds) {
     validate(settings);
     RenderSettings probe = settings;
     probe.pixelSamples = 1;
     probe.adaptiveGrid = 0;
     probe.aovs.clear();
     if (settings.integrator == Integrator::Path)
-        return estimateWith(PathTracer(scene, accel, probe, images), settings, probePixels, maxProbeSeconds);
-    return estimateWith(Tracer(scene, accel, probe, images), settings, probePixels, maxProbeSeconds);
+        return estimateWith(PathTracer(context, accel, probe), settings, probePixels, maxProbeSeconds);
+    return estimateWith(Tracer(context, accel, probe), settings, probePixels, maxProbeSeconds);
 }
 
-Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
-                   const RenderProgress& progress, const ImageTextures* images, const RenderWatch& watch) {
+Framebuffer render(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings,
+                   RenderStats& stats, const RenderProgress& progress, const RenderWatch& watch) {
+    const Scene& scene = context.scene;
     validate(settings);
     if (settings.integrator == Integrator::Path)
-        return renderPath(PathTracer(scene, accel, settings, images), scene, settings, stats, progress, watch);
-    return renderWhitted(Tracer(scene, accel, settings, images), scene, settings, stats, progress, watch);
+        return renderPath(PathTracer(context, accel, settings), scene, settings, stats, progress, watch);
+    return renderWhitted(Tracer(context, accel, settings), scene, settings, stats, progress, watch);
 }
 
 }  // namespace rt

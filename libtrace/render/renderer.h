@@ -46,10 +46,9 @@ struct RenderWatch {
 // settings.timeLimitSeconds stops it at the last whole pass, watch.endAfterPass after the pass
 // under way (stats.samplesPerPixel says how many). The Whitted tracer takes all -S samples of a pixel at once: a render
 // it cuts short has stats.samplesPerPixel 0, and the picture must not be used. Image textures are looked up through
-// `images` (none: they are white). Throws rt::InputError for bad settings or a degenerate camera.
-Framebuffer render(const Scene& scene, const Accelerator& accel, const RenderSettings& settings, RenderStats& stats,
-                   const RenderProgress& progress = {}, const ImageTextures* images = nullptr,
-                   const RenderWatch& watch = {});
+// the context's lookups (none: they are white). Throws rt::InputError for bad settings or a degenerate camera.
+Framebuffer render(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings,
+                   RenderStats& stats, const RenderProgress& progress = {}, const RenderWatch& watch = {});
 
 // What a render will cost, predicted before it starts (rt-render -p): a fixed, even spread of
 // the window's pixels (a grid of about `probePixels`, taken in a fixed order) is traced with one
@@ -68,8 +67,7 @@ struct RenderEstimate {
     double seconds = 0;  // predicted wall-clock time of the render on `threads` threads
     int threads = 0;
 };
-RenderEstimate estimateRender(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-                              const ImageTextures* images = nullptr, int probePixels = 256,
-                              double maxProbeSeconds = 0.5);
+RenderEstimate estimateRender(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings,
+                              int probePixels = 256, double maxProbeSeconds = 0.5);
 
 }  // namespace rt

@@ -63,9 +63,11 @@ private:
 // What shading reads besides the material and the surface point: the scene (its textures) and
 // the lookups of its image textures (none: an image texture gives white, the material's own
 // colour). Both outlive the context; it is passed where a scene and its lookups go together.
+// A scene alone converts to a context without lookups, for code that has no images.
 struct ShadingContext {
+    ShadingContext(const Scene& s, const ImageTextures* i = nullptr) : scene(s), images(i) {}  // NOLINT: implicit
     const Scene& scene;
-    const ImageTextures* images = nullptr;
+    const ImageTextures* images;
 };
 
 // The colour of texture `index` of the scene at the surface point.

@@ -105,7 +105,7 @@ TEST(Cutout, TheShadowOfACutoutQuadHasTheMasksShape) {
     std::vector<Framebuffer> pictures;
     for (const std::unique_ptr<Accelerator>& accel : test::everyAccelerator(scene.primitives, filter.get())) {
         RenderStats stats;
-        pictures.push_back(render(scene, *accel, settings, stats, {}, &images));
+        pictures.push_back(render({scene, &images}, *accel, settings, stats));
     }
     const Framebuffer& image = pictures[0];
     for (int y = 0; y < settings.height; ++y)

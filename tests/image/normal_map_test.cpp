@@ -76,7 +76,7 @@ float worstError(const Scene& scene, const ImageTextures& images, const Vec3& no
     const NaiveAccelerator accel(scene.primitives);
     const RenderSettings settings = test::picture(kPixels, kPixels);
     RenderStats stats;
-    const Framebuffer image = render(scene, accel, settings, stats, {}, &images);
+    const Framebuffer image = render({scene, &images}, accel, settings, stats);
     const CameraRays camera(scene.camera, kPixels, kPixels);
     float worst = 0;
     for (int y = 0; y < kPixels; ++y)
@@ -144,7 +144,7 @@ TEST(NormalMap, SteepBumpsOnAMirrorReflectTheSkyNotBlack) {
     settings.integrator = Integrator::Path;
     settings.pixelSamples = 4;
     RenderStats stats;
-    const Framebuffer image = render(scene, *accel, settings, stats, {}, &images);
+    const Framebuffer image = render({scene, &images}, *accel, settings, stats);
     int hits = 0, black = 0;
     for (std::size_t i = 0; i < image.pixels().size(); ++i) {
         if (image.alphas()[i] < 1) continue;

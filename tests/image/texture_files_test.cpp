@@ -74,7 +74,7 @@ double quadPsnr(const Scene& scene, const ImageTextures& images, const std::vect
     const NaiveAccelerator accel(scene.primitives);
     RenderSettings settings = test::picture(kSize, kSize);
     RenderStats stats;
-    const Framebuffer image = render(scene, accel, settings, stats, {}, &images);
+    const Framebuffer image = render({scene, &images}, accel, settings, stats);
     double squaredError = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
@@ -159,10 +159,10 @@ ThreeRenders renderThreeWays(const Scene& scene, const ImageTextures& filtered) 
     RenderStats stats;
     RenderSettings settings = test::picture(96, 64);
     settings.pixelSamples = 64;
-    Framebuffer reference = render(scene, accel, settings, stats, {}, &unfiltered);
+    Framebuffer reference = render({scene, &unfiltered}, accel, settings, stats);
     settings.pixelSamples = 1;
-    Framebuffer withFootprints = render(scene, accel, settings, stats, {}, &filtered);
-    Framebuffer pointSampled = render(scene, accel, settings, stats, {}, &unfiltered);
+    Framebuffer withFootprints = render({scene, &filtered}, accel, settings, stats);
+    Framebuffer pointSampled = render({scene, &unfiltered}, accel, settings, stats);
     return {std::move(reference), std::move(withFootprints), std::move(pointSampled)};
 }
 
@@ -186,7 +186,7 @@ TEST(TextureFiles, RayDifferentialsFilterADistantCheckerFloor) {
     RenderSettings settings = test::picture(96, 64);
     settings.threads = 1;
     settings.region = PixelWindow{10, 5, 70, 50};
-    const Framebuffer oneThread = render(scene, accel, settings, stats, {}, &filtered);
+    const Framebuffer oneThread = render({scene, &filtered}, accel, settings, stats);
     for (int y = 5; y < 50; ++y)
         for (int x = 10; x < 70; ++x) ASSERT_EQ(oneThread.at(x, y), three.filtered.at(x, y)) << x << "," << y;
     std::filesystem::remove(path);
@@ -242,7 +242,7 @@ TEST(TextureFiles, RoughGlassWidensTheFootprintOfWhatIsSeenThroughIt) {
         const TextureFiles images(scene, warnings);
         const NaiveAccelerator accel(scene.primitives);
         RenderStats stats;
-        const Framebuffer image = render(scene, accel, test::picture(96, 64), stats, {}, &images);
+        const Framebuffer image = render({scene, &images}, accel, test::picture(96, 64), stats);
         double sum = 0, squares = 0;
         int n = 0;
         for (int y = 35; y < 44; ++y)  // inside the ball

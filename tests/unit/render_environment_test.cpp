@@ -70,7 +70,7 @@ TEST(EnvironmentLight, ImportanceSamplingAgreesWithUniformSamplingWithLessVarian
         const bool inSun = dot(equirectangularDirection(s, t), sun) > std::cos(Real(5.0 / 180 * kPi));
         return inSun ? Color{1000, 1000, 1000} : Color{0.1f, 0.1f, 0.1f};
     });
-    const EnvironmentLight light(scene, &texture);
+    const EnvironmentLight light(ShadingContext{scene, &texture});
     constexpr int kSamples = 1 << 16;
     double sum[2] = {}, sumSq[2] = {};
     for (int i = 0; i < kSamples; ++i) {
@@ -111,7 +111,7 @@ TEST(EnvironmentLight, RotationTurnsTheImageAndIntensityScalesIt) {
         const bool inSun = dot(equirectangularDirection(s, t), imageSun) > Real(0.99);
         return inSun ? Color{100, 100, 100} : Color{0.5f, 0.25f, 1};
     });
-    const EnvironmentLight light(scene, &texture);
+    const EnvironmentLight light(ShadingContext{scene, &texture});
     EXPECT_EQ(light.radiance({-1, 0, 0}), (Color{300, 300, 300}));
     EXPECT_EQ(light.radiance({0, 0, -1}), (Color{1.5f, 0.75f, 3}));
     int towardsSun = 0;
@@ -186,7 +186,7 @@ TEST(EnvironmentLight, SampledDensityIsTheOneMultipleImportanceSamplingAsksFor) 
     scene.flatten();
     scene = withEnvironmentTexture(scene);
     const test::FunctionTextures texture(scene, GradientSkyWithSun{});
-    const LightDistribution lights(scene, &texture);
+    const LightDistribution lights({scene, &texture});
     const Vec3 from{0.2, 0.5, 0.1}, normal{0, 1, 0};
     // In float a sampled direction, rounded, can fall into the image's next cell, of another
     // density (seen once in 4096, next to a pole); a density without its Jacobian differs nearly

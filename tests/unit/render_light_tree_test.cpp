@@ -123,7 +123,7 @@ std::vector<Place> places() {
 
 TEST(LightTree, NextEventEstimationAgreesWithTheSumOverEveryLight) {
     const Scene s = manyLights();
-    const LightDistribution tree(s, nullptr, LightSampler::Tree), power(s, nullptr, LightSampler::Power);
+    const LightDistribution tree(s, LightSampler::Tree), power(s, LightSampler::Power);
     double treeVariance = 0, powerVariance = 0;
     for (const Place& at : places()) {
         const double expected = irradiance(s, at.point, at.normal);
@@ -141,7 +141,7 @@ TEST(LightTree, NextEventEstimationAgreesWithTheSumOverEveryLight) {
 
 TEST(LightTree, TheDensityForMisIsTheSamplesOwn) {
     const Scene s = manyLights();
-    const LightDistribution lights(s, nullptr, LightSampler::Tree);
+    const LightDistribution lights(s, LightSampler::Tree);
     SplitMix64 rng{3};
     const auto u = [&] { return Real(rng.next() >> 40) * Real(0x1p-24); };
     int triangles = 0;
@@ -272,7 +272,7 @@ TEST(LightDistribution, EmissiveTrianglesWeighTheirEmissionTexture) {
     const test::FunctionTextures texture(whole, window);
     const Vec3 from{0.3, -0.2, 1}, normal{0, 0, -1};
     for (const LightSampler sampler : {LightSampler::Tree, LightSampler::Power}) {
-        const LightDistribution wholePanel(whole, &texture, sampler), litCells(lit, &texture, sampler);
+        const LightDistribution wholePanel({whole, &texture}, sampler), litCells({lit, &texture}, sampler);
         for (int i = 0; i < 1024; ++i) {
             SobolSampler numbers(1, 2, std::uint32_t(i), 0);
             const Real pick = numbers.next1D();

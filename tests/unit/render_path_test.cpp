@@ -249,7 +249,7 @@ TEST(PathTracer, MetallicRoughnessTextureScalesTheFactors) {
     const RenderSettings settings = test::pathPicture(12, 4);
     const NaiveAccelerator accelA(a.primitives), accelB(b.primitives);
     RenderStats stats;
-    const Framebuffer viaTexture = render(a, accelA, settings, stats, {}, &texture);
+    const Framebuffer viaTexture = render({a, &texture}, accelA, settings, stats);
     const Framebuffer viaFactors = render(b, accelB, settings, stats);
     EXPECT_EQ(viaTexture.pixels(), viaFactors.pixels());
     EXPECT_NE(viaTexture.pixels(), test::renderPath(a, settings).pixels())

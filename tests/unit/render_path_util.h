@@ -62,7 +62,7 @@ inline ImageMean meanOverHits(const Framebuffer& image) {
 inline Framebuffer renderPath(const Scene& s, const RenderSettings& settings, const ImageTextures* images = nullptr) {
     const NaiveAccelerator accel(s.primitives);
     RenderStats stats;
-    return render(s, accel, settings, stats, {}, images);
+    return render({s, images}, accel, settings, stats);
 }
 
 // A closed box of five diffuse walls (red left, green right) with a light panel under its

@@ -91,7 +91,7 @@ TEST(RenderProgressive, AStoppedPassIsDroppedWhole) {
     RenderStats stats;
     const Framebuffer stopped = render(
         s, accel, settings, stats, [&](std::uint64_t done, std::uint64_t) { stop = stop || done > 2 * pixels + 100; },
-        nullptr, RenderWatch{{}, &stop, {}});
+        RenderWatch{{}, &stop, {}});
     EXPECT_EQ(stats.samplesPerPixel, 2);
     settings.pixelSamples = 2;
     const Framebuffer twoPasses = test::renderNaive(s, settings).image;
@@ -119,7 +119,7 @@ TEST(RenderProgressive, AnEndAskedForKeepsThePassUnderWay) {
     RenderStats stats;
     const Framebuffer ended = render(
         s, accel, settings, stats, [&](std::uint64_t done, std::uint64_t) { asked = asked || done > 2 * pixels + 100; },
-        nullptr, watch);
+        watch);
     EXPECT_EQ(stats.samplesPerPixel, 3);
     EXPECT_EQ(questions, 3);
     EXPECT_FALSE(stats.timeLimitReached);
@@ -129,7 +129,7 @@ TEST(RenderProgressive, AnEndAskedForKeepsThePassUnderWay) {
     asked = true;
     questions = 0;
     settings.integrator = Integrator::Whitted;
-    render(s, accel, settings, stats, {}, nullptr, watch);
+    render(s, accel, settings, stats, {}, watch);
     EXPECT_EQ(stats.samplesPerPixel, 3) << "the Whitted tracer takes every sample";
     EXPECT_EQ(questions, 0);
 }
@@ -243,7 +243,7 @@ TEST(RenderEstimate, GrowsWithLightsPixelsAndSamples) {
     settings.threads = 3;
     const auto estimate = [&](const Scene& s, const RenderSettings& r) {
         const NaiveAccelerator accel(s.primitives);
-        return estimateRender(s, accel, r, nullptr, 64, 1e9);
+        return estimateRender(s, accel, r, 64, 1e9);
     };
     const Scene one = lights(1), eight = lights(8);
     const RenderEstimate e1 = estimate(one, settings), e8 = estimate(eight, settings);
@@ -272,7 +272,7 @@ TEST(RenderEstimate, GrowsWithLightsPixelsAndSamples) {
 TEST(RenderEstimate, AProbeOutOfTimeTakesOnePixel) {
     const Scene s = test::spheresOnFloor();
     const NaiveAccelerator accel(s.primitives);
-    const RenderEstimate e = estimateRender(s, accel, test::picture(40, 30), nullptr, 256, 0);
+    const RenderEstimate e = estimateRender(s, accel, test::picture(40, 30), 256, 0);
     EXPECT_EQ(e.probePixels, 1u);
     EXPECT_GT(e.rays, 0);
 }

@@ -96,7 +96,7 @@ public:
 CountingTextures countLookups(const Scene& scene) {
     const NaiveAccelerator accel(scene.primitives);
     CountingTextures images(scene);
-    const Tracer tracer(scene, accel, test::picture(4, 4), &images);
+    const Tracer tracer({scene, &images}, accel, test::picture(4, 4));
     RenderCounters c;
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 4; ++x) tracer.pixel(x, y, c);

@@ -249,12 +249,12 @@ Framebuffer renderShowingProgress(const Scene& scene, const Accelerator& accel, 
     RenderWatch endable = watch;
     endable.endAfterPass = [] { return workEndRequested() != 0; };
     Framebuffer image = rt::render(
-        scene, accel, settings, stats,
+        {scene, &images}, accel, settings, stats,
         [&progress](std::uint64_t done, std::uint64_t total) {
             progress.update(done, total);
             noteWorkInProgress("rt-render", "samples", done, total);
         },
-        &images, endable);
+        endable);
     noteWorkInProgress("rt-render", "samples", 0, 0);  // rendered: a signal now interrupts the writing
     return image;
 }
@@ -295,7 +295,7 @@ void renderFrame(const RenderOptions& o, const Scene& scene, const Accelerator& 
     for (ImageOutputSettings& out : frameOutputs) out.path = framePath(out.path, frame);
     std::optional<RenderEstimate> estimate;
     if (o.preprocessOnly) {
-        estimate = estimateRender(scene, accel, o.render, &images);
+        estimate = estimateRender({scene, &images}, accel, o.render);
         if (!o.quiet) std::cerr << estimateSummary(o.render, *estimate);
     } else {
         const Framebuffer image = renderShowingProgress(scene, accel, o.render, progress, stats, images, watch);

@@ -35,15 +35,14 @@ ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
 
 }  // namespace
 
-PathTracer::PathTracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-                       const ImageTextures* images)
-    : scene_(scene),
-      context_{scene, images},
+PathTracer::PathTracer(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings)
+    : scene_(context.scene),
+      context_(context),
       accel_(accel),
       settings_(settings),
-      camera_(scene.camera, settings.width, settings.height),
-      lights_(scene, images, settings.lightSampler),
-      epsilon_(secondaryRayOffset(scene.primitives)) {}
+      camera_(context.scene.camera, settings.width, settings.height),
+      lights_(context, settings.lightSampler),
+      epsilon_(secondaryRayOffset(context.scene.primitives)) {}
 
 Color PathTracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {
     PixelEstimate estimate;

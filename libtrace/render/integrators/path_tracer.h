@@ -26,8 +26,7 @@ namespace rt {
 class PathTracer {
 public:
     // As Tracer: the scene flattened, `accel` built over it; all three outlive the tracer.
-    PathTracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-               const ImageTextures* images = nullptr);
+    PathTracer(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings);
 
     // The mean of the pixel's -S paths; coverage is the fraction whose camera ray hit something;
     // `aovs`, if given, receives the pixel's AOVs (render/film/aov.h). Non-finite samples count as

@@ -37,23 +37,23 @@ Color passed(bool blocked) { return blocked ? Color{} : Color{1, 1, 1}; }
 
 }  // namespace
 
-Tracer::Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-               const ImageTextures* images)
-    : scene_(scene),
-      context_{scene, images},
+Tracer::Tracer(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings)
+    : scene_(context.scene),
+      context_(context),
       accel_(accel),
       settings_(settings),
-      camera_(scene.camera, settings.width, settings.height),
-      environment_(scene, images, false),
-      epsilon_(secondaryRayOffset(scene.primitives)),
+      camera_(context.scene.camera, settings.width, settings.height),
+      environment_(context, false),
+      epsilon_(secondaryRayOffset(context.scene.primitives)),
       differentialScale_(std::max(Real(0.125), 1 / std::sqrt(Real(settings.pixelSamples)))),
       coneSpread_(camera_.pixelAngle() * differentialScale_) {
     // Thesis 2.1.3: i_a is the sum of the lights' intensities. The colour of a light with the
     // inverse-square falloff is what it gives at distance 1, no irradiance: it adds nothing.
-    for (const Light& light : scene.lights)
+    for (const Light& light : scene_.lights)
         if (light.falloff == Light::Falloff::None) ambientLight_ += light.color;
-    for (const Material& m : scene.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
-    for (const Texture& t : scene.textures) filtered_ = filtered_ || (images && t.kind == Texture::Kind::Image);
+    for (const Material& m : scene_.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
+    for (const Texture& t : scene_.textures)
+        filtered_ = filtered_ || (context.images && t.kind == Texture::Kind::Image);
 }
 
 Color Tracer::pixel(int x, int y, RenderCounters& counters, float& coverage, PixelAovs* aovs) const {

@@ -24,10 +24,9 @@ namespace rt {
 
 class Tracer {
 public:
-    // The scene must be flattened and `accel` built over scene.primitives; both, and `images`
-    // (the lookups of image textures, none: white), must outlive the tracer.
-    Tracer(const Scene& scene, const Accelerator& accel, const RenderSettings& settings,
-           const ImageTextures* images = nullptr);
+    // The context's scene must be flattened and `accel` built over its primitives; both, and the
+    // context's image lookups (none: image textures are white), must outlive the tracer.
+    Tracer(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings);
 
     // The linear colour of pixel (x, y): the mean of its camera samples. A sample that comes
     // out NaN or infinite counts as black and is recorded in counters.nonFinite. `coverage`

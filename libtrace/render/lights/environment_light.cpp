@@ -58,8 +58,9 @@ Vec3 equirectangularDirection(Real s, Real t) {
     return {sinTheta * std::sin(phi), std::cos(theta), -sinTheta * std::cos(phi)};
 }
 
-EnvironmentLight::EnvironmentLight(const Scene& scene, const ImageTextures* images, bool sampled)
-    : scene_(scene), images_(images) {
+EnvironmentLight::EnvironmentLight(const ShadingContext& context, bool sampled)
+    : scene_(context.scene), images_(context.images) {
+    const Scene& scene = context.scene;
     if (scene.environment) {
         texture_ = scene.environment->texture;
         intensity_ = scene.environment->intensity;

@@ -40,10 +40,10 @@ struct EnvironmentSample {
 class EnvironmentLight {
 public:
     // The scene's environment image if it has one, else its background colour everywhere.
-    // `images` looks the image up (none: it is white, as every image texture without lookups).
+    // The context's lookups read the image (none: it is white, as every image texture without them).
     // Without `sampled` only radiance() may be asked (the Whitted tracer's background): the
     // distribution over the image, a million lookups, is not built.
-    EnvironmentLight(const Scene& scene, const ImageTextures* images, bool sampled = true);
+    explicit EnvironmentLight(const ShadingContext& context, bool sampled = true);
 
     Color radiance(const Vec3& direction) const;
     // The mean luminance over the sphere, for the light's share of next-event samples.

@@ -83,8 +83,9 @@ double emittedRadiance(const ShadingContext& context, std::uint32_t prim, const 
 
 }  // namespace
 
-LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* images, LightSampler sampler)
-    : scene_(scene), environment_(scene, images) {
+LightDistribution::LightDistribution(const ShadingContext& context, LightSampler sampler)
+    : scene_(context.scene), environment_(context) {
+    const Scene& scene = context.scene;
     // The scene's bounding sphere: the thesis's unattenuated point lights, directional lights and
     // the environment send their light over it.
     const Aabb box = scene.primitives.bounds();
@@ -116,7 +117,6 @@ LightDistribution::LightDistribution(const Scene& scene, const ImageTextures* im
             [&] { return boundsOf(light); });
     }
     const auto triangles = scene.primitives.all<Triangle>();
-    const ShadingContext context{scene, images};
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         const std::uint32_t id = scene.primitives.material(std::uint32_t(i));
         if (id >= scene.materials.size() || !(luminance(scene.materials[id].emission) > kNoPower)) continue;

@@ -40,12 +40,11 @@ class LightDistribution {
 public:
     // The emitters of a flattened scene: its lights, and materials with a non-black emission
     // make their triangles area lights (their share of the samples follows the mean of the
-    // emission texture over each triangle, looked up through `images`). A
+    // emission texture over each triangle, looked up through the context's lookups). A
     // headlight is left out when there are such materials: they light the scene, as they do a
     // model in Blender or a glTF viewer, and its file renders as its converted XML does.
-    // `images` looks up an environment image.
-    explicit LightDistribution(const Scene& scene, const ImageTextures* images = nullptr,
-                               LightSampler sampler = LightSampler::Tree);
+    // The context's lookups also read an environment image.
+    explicit LightDistribution(const ShadingContext& context, LightSampler sampler = LightSampler::Tree);
 
     bool empty() const { return cdf_.empty(); }
     // One light for the point `from` on a surface of unit normal `normal` (facing the side light
