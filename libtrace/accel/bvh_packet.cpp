@@ -102,8 +102,11 @@ bool loadSlabPacket(const Ray* rays, int count, Real sceneMagnitude, SlabPacket&
 
 // The most rays left in a node that go on from there one by one with the single traversal: the
 // packet tests a child against all its lanes whatever their number, the single traversal tests
-// all eight children against one ray in one register's work, so a few rays go faster alone (two:
-// bench/vs_embree at load 16, docs/benchmarks.md; one and three were within the noise of it).
+// all eight children against one ray in one register's work, so a few rays go faster alone. Two,
+// by bench/vs_embree on all nine scenes (docs/benchmarks.md, "The BVH's shadow rays"): for shadow
+// packets one was within the noise of it; three was slower on five scenes of nine (the packet's
+// nodes are shared fetches, and each ray handed on sets up the single traversal again), and so was
+// handing every ray on where the rays part (no child entered by more than half of them) on eight.
 constexpr int kFewRays = 2;
 
 // A child waiting on the stack: the rays that enter it and where each does.

@@ -141,8 +141,10 @@ void Bvh::searchNearest(const Ray& ray, BvhChild start, Hit& nearest, RayCounter
     counters.intersectionTests += tests;
 }
 
-// Any hit: the children in slot order, the last hit first, and the search ends at the first leaf
-// that blocks.
+// Any hit, as Embree's occluded1: no order by distance (any blocker ends the search), the last
+// child hit taken at once and the others pushed in slot order, so that the next popped is the
+// one before it; the search ends at the first leaf that blocks. The child taken goes on in a
+// register rather than through the stack.
 template <SimdLevel level, TriangleTest test>
 bool Bvh::searchBlocker(const Ray& ray, BvhChild start, Real tMax, RayCounters& counters) const {
     using namespace RT_LEVEL_LANES;
@@ -154,19 +156,25 @@ bool Bvh::searchBlocker(const Ray& ray, BvhChild start, Real tMax, RayCounters& 
     std::uint64_t steps = 0, tests = 0;
     BvhChild stack[kStackSize];
     int size = 0;
-    stack[size++] = start;
     Real tNear[kBvhWidth];
     bool blocked = false;
-    while (size != 0 && !blocked) {
-        const BvhChild next = stack[--size];
+    BvhChild current = start;
+    for (;;) {
         ++steps;
-        if (next.isLeaf()) {
-            blocked = blockerInLeaf(testBlocks, prims, leaves_.at(next.index()), ray, tMax, filter, tests);
-            continue;
+        if (current.isLeaf()) {
+            blocked = blockerInLeaf(testBlocks, prims, leaves_.at(current.index()), ray, tMax, filter, tests);
+            if (blocked) break;
+        } else {
+            const BvhNode& node = nodes_[current.index()];
+            unsigned bits = childrenHit(node, slabs, tMax, tNear);
+            if (bits != 0) {
+                for (; (bits & (bits - 1)) != 0; bits &= bits - 1) stack[size++] = node.child[std::countr_zero(bits)];
+                current = node.child[std::countr_zero(bits)];
+                continue;
+            }
         }
-        const BvhNode& node = nodes_[next.index()];
-        for (unsigned bits = childrenHit(node, slabs, tMax, tNear); bits != 0; bits &= bits - 1)
-            stack[size++] = node.child[std::countr_zero(bits)];
+        if (size == 0) break;
+        current = stack[--size];
     }
     counters.traversalSteps += steps;
     counters.intersectionTests += tests;
