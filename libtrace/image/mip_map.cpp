@@ -17,6 +17,19 @@ float decode(std::uint16_t v, const TexelDecoding&) { return float(v) / 65535; }
 float decode(half v, const TexelDecoding&) { return float(v); }
 float decode(float v, const TexelDecoding&) { return v; }
 
+// Four floats in one SSE register (GCC's and clang's vector extension): a texel's channels, or a
+// bilinear probe's four weights. Each lane adds and multiplies as a float does, so sums over lanes
+// have the bits of the same sums channel after channel.
+using Lanes = float __attribute__((vector_size(16)));
+
+// Channels [0, N) of the texel at `values`, decoded; the lanes beyond N zero. Built in one
+// expression, which the compiler makes two or three shuffles (lanes set one by one go through memory).
+template <int N, class T>
+Lanes decoded(const T* values, const TexelDecoding& d) {
+    const auto channel = [&](int c) { return c < N ? decode(values[c], d) : 0.0f; };
+    return Lanes{channel(0), channel(1), channel(2), channel(3)};
+}
+
 // A box-filtered value back in the stored type (integers rounded to the nearest).
 template <class T>
 T stored(float v) {
@@ -108,24 +121,31 @@ MipLevel<T> tiled(const MipLevel<T>& level, int channels) {
 
 // ---- Lookups ---------------------------------------------------------------------------------
 
+// floor(v) as an integer, for |v| < 2^31: the truncation, one less where it went up. x86-64's
+// baseline (SSE2) has no rounding instruction, and std::floor without one is a dozen.
+inline int floorToInt(float v) {
+    const int i = int(v);
+    return i - int(float(i) > v);
+}
+
 // A coordinate brought into the range its wrap mode repeats in (a period of 1, or 2 mirrored),
 // so that texel indices stay small; NaN and infinities read the first texel.
-float reduced(float s, Texture::Wrap wrap) {
+[[gnu::always_inline]] inline float reduced(float s, Texture::Wrap wrap) {
     if (!(std::abs(s) < 1e7f)) return 0;
     switch (wrap) {
         case Texture::Wrap::Clamp:
             return std::clamp(s, -1.0f, 2.0f);
         case Texture::Wrap::Mirror:
-            return s - 2 * std::floor(s * 0.5f);
+            return s - 2 * float(floorToInt(s * 0.5f));
         case Texture::Wrap::Repeat:
             break;
     }
-    return s - std::floor(s);
+    return s - float(floorToInt(s));
 }
 
-// Texel index i of a side of n texels, outside [0, n), wrapped; i within a period of `reduced`'s
-// range and one beyond.
-[[gnu::noinline]] int wrappedOutside(int i, int n, Texture::Wrap wrap) {
+// Texel index i of a side of n texels wrapped into [0, n); i within a period of `reduced`'s range
+// and one beyond.
+[[gnu::noinline]] int wrappedIndex(int i, int n, Texture::Wrap wrap) {
     switch (wrap) {
         case Texture::Wrap::Clamp:
             return std::clamp(i, 0, n - 1);
@@ -143,7 +163,18 @@ float reduced(float s, Texture::Wrap wrap) {
 
 // The same, the texels inside inline (nearly every one), the wrapping of those outside called.
 inline int wrapped(int i, int n, Texture::Wrap wrap) {
-    return unsigned(i) < unsigned(n) ? i : wrappedOutside(i, n, wrap);
+    return unsigned(i) < unsigned(n) ? i : wrappedIndex(i, n, wrap);
+}
+
+// Texels i and i + 1 of a side of n texels, wrapped: the two columns (or rows) a bilinear probe
+// reads. One test for the pair: both inside for every probe but those at the picture's edges.
+struct TexelPair {
+    int first, second;
+};
+
+inline TexelPair texelPair(int i, int n, Texture::Wrap wrap) {
+    if (unsigned(i) < unsigned(n - 1)) return {i, i + 1};
+    return {wrappedIndex(i, n, wrap), wrappedIndex(i + 1, n, wrap)};
 }
 
 // The footprint of a lookup in level 0's texels: its two axes (one pixel's step right and down).
@@ -171,73 +202,93 @@ bool oneColour(const MipLevels<T>& levels) {
 
 // The filters of one lookup, over the levels of one picture: N channels (1 to 4) from
 // how.firstChannel of texels `channels` values wide. Filtered values are summed texel after
-// texel in a fixed order (the same bits whatever the layout of the texels), in registers: the
-// sums are not written through a pointer that may alias the texels.
+// texel in a fixed order (the same bits whatever the layout of the texels), the N channels in the
+// lanes of one register (Lanes), which stays in a register from the first probe to the last.
 template <class T, int N>
 class Sampler {
 public:
     Sampler(const MipLevels<T>& levels, int channels, const MipLookup& how)
         : levels_(levels), stride_(std::size_t(channels)), how_(how) {}
 
-    void filtered(const TexCoord& at, float* sum) const {
-        if (oneColour(levels_)) return add(levels_[0], 0, 1, sum);
-        switch (how_.filter) {
-            case TextureFilter::Nearest:
-                return nearest(at.s, at.t, sum);
-            case TextureFilter::Bilinear:
-                return bilinear(levels_[0], at.s, at.t, 1, sum);
-            case TextureFilter::Trilinear:
-                return trilinear(at, sum);
-            case TextureFilter::Anisotropic:
-                break;
-        }
-        anisotropic(at, sum);
+    // The filtered channels into out[0..N).
+    void filtered(const TexCoord& at, float* out) const {
+        const Lanes sum = filtered(at);
+        for (int c = 0; c < N; ++c) out[c] = sum[c];
     }
 
     // Level 0 bilinear, or the one texel of a picture of one colour.
-    void finest(float s, float t, float* sum) const {
-        if (oneColour(levels_)) return add(levels_[0], 0, 1, sum);
-        bilinear(levels_[0], s, t, 1, sum);
+    Lanes finest(float s, float t) const {
+        Lanes sum{};
+        if (oneColour(levels_))
+            add(levels_[0], 0, 1, sum);
+        else
+            bilinear(levels_[0], s, t, 1, sum);
+        return sum;
     }
 
 private:
-    void nearest(float s, float t, float* sum) const {
+    Lanes filtered(const TexCoord& at) const {
+        if (oneColour(levels_) || how_.filter == TextureFilter::Bilinear) return finest(at.s, at.t);
+        Lanes sum{};
+        if (how_.filter == TextureFilter::Nearest) {
+            nearest(at.s, at.t, sum);
+            return sum;
+        }
+        const Footprint f = footprint(at, levels_[0].width, levels_[0].height);
+        // A footprint of at most a texel (none at all: the path tracer's rays after the camera)
+        // puts both filters that take one on level 0 or finer, in one probe: level 0 bilinear, as
+        // they would give it, without their square roots and logarithm.
+        if (f.a2 <= 1 && f.b2 <= 1) return finest(at.s, at.t);
+        if (how_.filter == TextureFilter::Trilinear)
+            trilinear(at.s, at.t, levelOf(std::sqrt(std::max(f.a2, f.b2))), 1, sum);
+        else
+            anisotropic(at, f, sum);
+        return sum;
+    }
+
+    void nearest(float s, float t, Lanes& sum) const {
         const MipLevel<T>& level = levels_[0];
-        const int x = wrapped(int(std::floor(reduced(s, how_.wrapS) * float(level.width))), level.width, how_.wrapS);
-        const int y = wrapped(int(std::floor(reduced(t, how_.wrapT) * float(level.height))), level.height, how_.wrapT);
+        const int x = wrapped(floorToInt(reduced(s, how_.wrapS) * float(level.width)), level.width, how_.wrapS);
+        const int y = wrapped(floorToInt(reduced(t, how_.wrapT) * float(level.height)), level.height, how_.wrapT);
         add(level, level.texel(x, y), 1, sum);
     }
 
     // The four texels around (s, t) on `level`, weighted by distance, times `weight`, added to `sum`.
-    void bilinear(const MipLevel<T>& level, float s, float t, float weight, float* sum) const {
+    void bilinear(const MipLevel<T>& level, float s, float t, float weight, Lanes& sum) const {
         bilinearReduced(level, reduced(s, how_.wrapS), reduced(t, how_.wrapT), weight, sum);
     }
 
     // The same at (s, t) reduced by each axis' wrap mode (`reduced`), as a trilinear probe reduces
-    // them once for its two levels.
-    void bilinearReduced(const MipLevel<T>& level, float s, float t, float weight, float* sum) const {
+    // them once for its two levels. The four texels' places and weights are computed once for all
+    // channels (two rows and two columns; the four weights in one register), each texel's channels
+    // decoded into one register and added, weighted, in one multiply and one add.
+    void bilinearReduced(const MipLevel<T>& level, float s, float t, float weight, Lanes& sum) const {
         const float x = s * float(level.width) - 0.5f;
         const float y = t * float(level.height) - 0.5f;
-        const float x0 = std::floor(x), y0 = std::floor(y);
-        const float fx = x - x0, fy = y - y0;
-        const int xa = wrapped(int(x0), level.width, how_.wrapS), xb = wrapped(int(x0) + 1, level.width, how_.wrapS);
-        const int ya = wrapped(int(y0), level.height, how_.wrapT), yb = wrapped(int(y0) + 1, level.height, how_.wrapT);
-        const std::size_t ra = level.row(ya), rb = level.row(yb), ca = level.column(xa), cb = level.column(xb);
-        const std::size_t texels[4] = {ra + ca, ra + cb, rb + ca, rb + cb};
-        const float weights[4] = {weight * (1 - fx) * (1 - fy), weight * fx * (1 - fy), weight * (1 - fx) * fy,
-                                  weight * fx * fy};
-        float v[N];
-        for (int c = 0; c < N; ++c) v[c] = sum[c];
-        for (int k = 0; k < 4; ++k) {
-            const T* texel = level.texels.data() + texels[k] * stride_ + std::size_t(how_.firstChannel);
-            for (int c = 0; c < N; ++c) v[c] += weights[k] * decode(texel[c], how_.decoding);
-        }
-        for (int c = 0; c < N; ++c) sum[c] = v[c];
+        const int x0 = floorToInt(x), y0 = floorToInt(y);
+        const float fx = x - float(x0), fy = y - float(y0);
+        const TexelPair xs = texelPair(x0, level.width, how_.wrapS), ys = texelPair(y0, level.height, how_.wrapT);
+        const Corners at = level.tileShift ? corners<kTileShift>(level, xs, ys) : corners<0>(level, xs, ys);
+        const Lanes w = weight * Lanes{1 - fx, fx, 1 - fx, fx} * Lanes{1 - fy, 1 - fy, fy, fy};
+        const T* texels = level.texels.data() + std::size_t(how_.firstChannel);
+        Lanes v = sum;  // in a register: 8-bit texels may alias `sum`, so each add would store it
+        for (int k = 0; k < 4; ++k) v += w[k] * decoded<N>(texels + at[std::size_t(k)] * stride_, how_.decoding);
+        sum = v;
+    }
+
+    // Where the four texels of a probe start in a level of tiles of 1 << Shift texels a side,
+    // in texels: (first, first), (second, first), (first, second), (second, second).
+    using Corners = std::array<std::size_t, 4>;
+    template <int Shift>
+    static Corners corners(const MipLevel<T>& level, TexelPair xs, TexelPair ys) {
+        const std::size_t ra = level.template row<Shift>(ys.first), rb = level.template row<Shift>(ys.second);
+        const std::size_t ca = level.template column<Shift>(xs.first), cb = level.template column<Shift>(xs.second);
+        return {ra + ca, ra + cb, rb + ca, rb + cb};
     }
 
     // Bilinear on the two levels around `level` (fractional: 0 the finest), blended; at or beyond
-    // either end, the one level there.
-    void trilinear(float s, float t, float level, float weight, float* sum) const {
+    // either end, the one level there. The two probes share the coordinates' wrapping and the sum.
+    void trilinear(float s, float t, float level, float weight, Lanes& sum) const {
         const int last = int(levels_.size()) - 1;
         if (!(level > 0)) return bilinear(levels_[0], s, t, weight, sum);  // NaN too
         if (level >= float(last)) return bilinear(levels_[std::size_t(last)], s, t, weight, sum);
@@ -248,17 +299,11 @@ private:
         bilinearReduced(levels_[std::size_t(fine) + 1], rs, rt, weight * f, sum);
     }
 
-    void trilinear(const TexCoord& at, float* sum) const {
-        const Footprint f = footprint(at, levels_[0].width, levels_[0].height);
-        trilinear(at.s, at.t, levelOf(std::sqrt(std::max(f.a2, f.b2))), 1, sum);
-    }
-
     // Up to how.maxProbes trilinear probes spread evenly along the footprint's longer axis, on the
     // level its length over the probes sets (not finer than the shorter axis calls for when the
     // probes do not reach it: the footprint is then widened across, as a GPU's anisotropic filter
     // does).
-    void anisotropic(const TexCoord& at, float* sum) const {
-        const Footprint f = footprint(at, levels_[0].width, levels_[0].height);
+    void anisotropic(const TexCoord& at, const Footprint& f, Lanes& sum) const {
         const bool aLonger = f.a2 >= f.b2;
         const float major = std::sqrt(aLonger ? f.a2 : f.b2), minor = std::sqrt(aLonger ? f.b2 : f.a2);
         // As many probes as the footprint is longer than wide, and no more than it is texels long
@@ -278,9 +323,9 @@ private:
     }
 
     // The channels of texel number `texel` of `level`, times `weight`, added to `sum`.
-    void add(const MipLevel<T>& level, std::size_t texel, float weight, float* sum) const {
-        const T* values = level.texels.data() + texel * stride_ + std::size_t(how_.firstChannel);
-        for (int c = 0; c < N; ++c) sum[c] += weight * decode(values[c], how_.decoding);
+    void add(const MipLevel<T>& level, std::size_t texel, float weight, Lanes& sum) const {
+        sum +=
+            weight * decoded<N>(level.texels.data() + texel * stride_ + std::size_t(how_.firstChannel), how_.decoding);
     }
 
     const MipLevels<T>& levels_;
@@ -352,20 +397,17 @@ void MipMap::build(int width, int height, std::vector<T> texels) {
 }
 
 void MipMap::lookup(const TexCoord& at, const MipLookup& how, float* out) const {
-    std::fill_n(out, how.channels, 0.0f);
     std::visit([&](const auto& levels) { withSampler(levels, channels_, how, [&](auto f) { f.filtered(at, out); }); },
                levels_);
 }
 
 float MipMap::bilinear(float s, float t, const MipLookup& how) const {
-    float value = 0;
-    std::visit(
+    return std::visit(
         [&](const auto& levels) {
             using T = typename std::decay_t<decltype(levels)>::value_type::Value;
-            Sampler<T, 1>(levels, channels_, how).finest(s, t, &value);
+            return Sampler<T, 1>(levels, channels_, how).finest(s, t)[0];
         },
         levels_);
-    return value;
 }
 
 std::vector<std::array<int, 2>> MipMap::levelSizes() const {

@@ -38,6 +38,10 @@ enum class TextureFilter {
     Anisotropic,  // trilinear probes along the footprint's longer side, the level set by its shorter
 };
 
+// The side from which levels are stored in tiles, and the tiles' side, 1 << kTileShift texels.
+constexpr int kTiledSide = 256;
+constexpr int kTileShift = 2;
+
 // Stored texels of one level: width x height texels of `channels` values each. A level of at
 // least kTiledSide texels a side is stored in tiles of 4 x 4 texels, tile after tile along a row
 // of tiles, row of tiles after row, its sides rounded up to whole tiles (the padding is never
@@ -48,25 +52,27 @@ template <class T>
 struct MipLevel {
     using Value = T;
     int width = 0, height = 0;
-    int tileShift = 0;    // log2 of the tiles' side: 0 (row after row) or 2 (tiles of 4 x 4)
+    int tileShift = 0;    // log2 of the tiles' side: 0 (row after row) or kTileShift
     int tilesAcross = 0;  // tiles in a row of tiles (the width, row after row)
     std::vector<T> texels;
 
     // Where texel (x, y) starts in `texels`, in texels (times the channels for values): the sum of
     // a part for its row and one for its column, so that a probe computes two of each for its four.
     std::size_t texel(int x, int y) const { return row(y) + column(x); }
+    std::size_t row(int y) const { return tileShift ? row<kTileShift>(y) : row<0>(y); }
+    std::size_t column(int x) const { return tileShift ? column<kTileShift>(x) : column<0>(x); }
+
+    // The same for a known tileShift (Shift): shifts by constants, for the lookups' inner loop.
+    template <int Shift>
     std::size_t row(int y) const {
-        return (std::size_t(y >> tileShift) * std::size_t(tilesAcross) << (2 * tileShift)) +
-               std::size_t((y & ((1 << tileShift) - 1)) << tileShift);
+        return (std::size_t(y >> Shift) * std::size_t(tilesAcross) << (2 * Shift)) +
+               std::size_t((y & ((1 << Shift) - 1)) << Shift);
     }
+    template <int Shift>
     std::size_t column(int x) const {
-        return (std::size_t(x >> tileShift) << (2 * tileShift)) + std::size_t(x & ((1 << tileShift) - 1));
+        return (std::size_t(x >> Shift) << (2 * Shift)) + std::size_t(x & ((1 << Shift) - 1));
     }
 };
-
-// The side from which levels are stored in tiles, and the tiles' side, 1 << kTileShift texels.
-constexpr int kTiledSide = 256;
-constexpr int kTileShift = 2;
 
 // A picture's levels in its stored type.
 template <class T>

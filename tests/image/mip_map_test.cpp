@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -25,6 +26,104 @@ float at(const MipMap& map, const TexCoord& c, TextureFilter filter, Texture::Wr
     float v = -1;
     map.lookup(c, {.filter = filter, .wrapS = wrap, .wrapT = wrap}, &v);
     return v;
+}
+
+// A row-major picture and the bilinear filter on it written out as its definition reads, one
+// texel and one channel at a time: the reference the sampler's probe (texels in tiles, channels in
+// SIMD lanes, the wrapping tested once per pair of texels) must give to the last bit.
+template <class T>
+struct ReferencePicture {
+    int width, height, channels;
+    std::vector<T> texels;
+    const float* table;  // 8-bit values' decoding; others as they are
+
+    float decoded(int x, int y, int channel) const {
+        const T v = texels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) +
+                           std::size_t(channel)];
+        if constexpr (std::is_same_v<T, std::uint8_t>)
+            return table[v];
+        else
+            return float(v);
+    }
+
+    // The channels [first, first + n) at (s, t), bilinear on level 0.
+    std::vector<float> bilinear(float s, float t, Texture::Wrap wrapS, Texture::Wrap wrapT, int first, int n) const {
+        const float x = reduced(s, wrapS) * float(width) - 0.5f, y = reduced(t, wrapT) * float(height) - 0.5f;
+        const float x0 = std::floor(x), y0 = std::floor(y);
+        const float fx = x - x0, fy = y - y0;
+        const int xs[2] = {wrappedIndex(int(x0), width, wrapS), wrappedIndex(int(x0) + 1, width, wrapS)};
+        const int ys[2] = {wrappedIndex(int(y0), height, wrapT), wrappedIndex(int(y0) + 1, height, wrapT)};
+        const float wx[2] = {1 - fx, fx}, wy[2] = {1 - fy, fy};
+        std::vector<float> sum(std::size_t(n), 0.0f);
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                for (int c = 0; c < n; ++c)
+                    sum[std::size_t(c)] += 1.0f * wx[i] * wy[j] * decoded(xs[i], ys[j], first + c);
+        return sum;
+    }
+
+    // A coordinate in the range its wrap mode repeats in (MipMap's reduction: a period of 1, or 2
+    // mirrored; clamped to [-1, 2]); NaN and beyond 1e7 read 0.
+    static float reduced(float s, Texture::Wrap wrap) {
+        if (!(std::abs(s) < 1e7f)) return 0;
+        if (wrap == Texture::Wrap::Clamp) return std::clamp(s, -1.0f, 2.0f);
+        if (wrap == Texture::Wrap::Mirror) return s - 2 * std::floor(s * 0.5f);
+        return s - std::floor(s);
+    }
+
+    static int wrappedIndex(int i, int n, Texture::Wrap wrap) {
+        if (wrap == Texture::Wrap::Clamp) return std::clamp(i, 0, n - 1);
+        const int period = wrap == Texture::Wrap::Mirror ? 2 * n : n;
+        const int m = (i % period + period) % period;
+        return m < n ? m : 2 * n - 1 - m;
+    }
+};
+
+// Every way to read a picture of `channels` channels: each run of channels [first, first + n),
+// every wrap mode on each axis, at random points in and beyond [0, 1] (and on texel edges), by
+// MipMap::lookup (bilinear; trilinear and anisotropic with footprints under a texel, which read
+// level 0 bilinear) and MipMap::bilinear (one channel, the cut-outs' alpha): each equal to the
+// reference's bits.
+template <class T>
+void expectReferenceBits(const ReferencePicture<T>& picture, std::mt19937& random) {
+    const MipMap map(picture.width, picture.height, picture.channels, picture.texels);
+    std::uniform_real_distribution<float> coordinate(-2.5f, 3.5f), footprint(-0.6f, 0.6f);
+    std::uniform_int_distribution<int> edge(-picture.width, 2 * picture.width);
+    using W = Texture::Wrap;
+    for (int n = 1; n <= picture.channels; ++n)
+        for (int first = 0; first + n <= picture.channels; ++first)
+            for (const W wrapS : {W::Repeat, W::Clamp, W::Mirror})
+                for (const W wrapT : {W::Repeat, W::Clamp, W::Mirror})
+                    for (int k = 0; k < 24; ++k) {
+                        // Every fourth point on a column of texel edges, where the pair of texels wraps.
+                        const float s = k % 4 ? coordinate(random) : float(edge(random)) / float(picture.width);
+                        const float t = coordinate(random);
+                        const float w = float(picture.width), h = float(picture.height);
+                        const TexCoord under{s,
+                                             t,
+                                             footprint(random) / w,
+                                             footprint(random) / h,
+                                             footprint(random) / w,
+                                             footprint(random) / h};
+                        const std::vector<float> expected = picture.bilinear(s, t, wrapS, wrapT, first, n);
+                        MipLookup how{.wrapS = wrapS, .wrapT = wrapT, .firstChannel = first, .channels = n};
+                        how.decoding.table = picture.table;
+                        for (const TextureFilter filter :
+                             {TextureFilter::Bilinear, TextureFilter::Trilinear, TextureFilter::Anisotropic}) {
+                            how.filter = filter;
+                            float out[4] = {-1, -1, -1, -1};
+                            map.lookup(filter == TextureFilter::Bilinear ? TexCoord{s, t} : under, how, out);
+                            for (int c = 0; c < n; ++c)
+                                ASSERT_EQ(out[c], expected[std::size_t(c)])
+                                    << picture.width << "x" << picture.height << "x" << picture.channels << " channel "
+                                    << first + c << " filter " << int(filter) << " wrap " << int(wrapS) << ","
+                                    << int(wrapT) << " at " << s << "," << t;
+                            for (int c = n; c < 4; ++c) ASSERT_EQ(out[c], -1) << "written beyond the channels asked";
+                        }
+                        if (n == 1) {
+                            ASSERT_EQ(map.bilinear(s, t, how), expected[0]) << "alpha, channel " << first;
+                        }
+                    }
 }
 
 }  // namespace
@@ -175,4 +274,26 @@ TEST(MipMap, EightBitTexelsAreDecodedByTheLookupsTable) {
     how.filter = TextureFilter::Trilinear;
     map.lookup({0.5f, 0.5f, 1, 0, 0, 1}, how, &linear);
     EXPECT_FLOAT_EQ(linear, 64.0f / 255);
+}
+
+// The bilinear probe (the texels' places and weights computed once, the channels in SIMD lanes,
+// one wrap test per pair of texels) gives the bits of the filter written out texel by texel and
+// channel by channel, for 8-bit pictures read as sRGB colour and as data, and float ones, of 1 to
+// 4 channels, sides that are not powers of two, one texel wide, and large enough for tiles.
+TEST(MipMap, BilinearProbeHasTheBitsOfTheReferenceFilter) {
+    std::mt19937 random(11);
+    std::uniform_int_distribution<int> byte(0, 255);
+    std::uniform_real_distribution<float> real(-1, 4);
+    for (const auto& [w, h] : std::vector<std::array<int, 2>>{{7, 5}, {1, 6}, {5, 1}, {kTiledSide + 3, kTiledSide + 1}})
+        for (int channels = 1; channels <= 4; ++channels) {
+            const std::size_t count = std::size_t(w) * std::size_t(h) * std::size_t(channels);
+            // sRGB colour for odd channel counts, data for even ones.
+            ReferencePicture<std::uint8_t> bytes{
+                w, h, channels, {}, channels % 2 ? srgbByteTable() : linearByteTable()};
+            for (std::size_t i = 0; i < count; ++i) bytes.texels.push_back(std::uint8_t(byte(random)));
+            expectReferenceBits(bytes, random);
+            ReferencePicture<float> floats{w, h, channels, {}, nullptr};
+            for (std::size_t i = 0; i < count; ++i) floats.texels.push_back(real(random));
+            expectReferenceBits(floats, random);
+        }
 }
