@@ -576,8 +576,8 @@ private:
         const auto factor = [&](const char* key) {
             return std::clamp(extensionNumber(ext->second, key, 0, what), 0.0f, 1.0f);
         };
-        m.clearcoat = factor("clearcoatFactor");
-        m.clearcoatRoughness = factor("clearcoatRoughnessFactor");
+        m.clearcoat.weight = factor("clearcoatFactor");
+        m.clearcoat.roughness = factor("clearcoatRoughnessFactor");
     }
 
     // The number `key` of a material extension's object, `fallback` without one.

@@ -295,8 +295,8 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
     m.emission = e.color("emission", m.emission);
     readMetallicRoughness(e, m);
-    m.clearcoat = unitFactor(e, "clearcoat", m.clearcoat);
-    m.clearcoatRoughness = unitFactor(e, "clearcoat_roughness", m.clearcoatRoughness);
+    m.clearcoat.weight = unitFactor(e, "clearcoat", m.clearcoat.weight);
+    m.clearcoat.roughness = unitFactor(e, "clearcoat_roughness", m.clearcoat.roughness);
     m.transmission = readTransmission(e);
     const auto index = std::uint32_t(scene_.materials.size());
     if (const auto name = e.optionalString("texture"))

@@ -266,9 +266,9 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             setNumber(node, "roughness", f->roughness);
             setNumber(node, "specular_factor", f->specular);
         }
-        if (m.clearcoat > 0) {
-            setNumber(node, "clearcoat", m.clearcoat);
-            setNumber(node, "clearcoat_roughness", m.clearcoatRoughness);
+        if (m.clearcoat.weight > 0) {
+            setNumber(node, "clearcoat", m.clearcoat.weight);
+            setNumber(node, "clearcoat_roughness", m.clearcoat.roughness);
         }
         if (m.metallicRoughnessTexture)
             node.append_attribute("metallic_roughness_texture")

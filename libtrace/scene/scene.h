@@ -55,6 +55,13 @@ inline constexpr double kMaxTextureTransform = 1e6;
 // fits a float.
 inline constexpr double kMaxCoordinate = 1e15;
 
+// KHR_materials_clearcoat: a clear layer of ior 1.5 over the material (render/materials/clearcoat_bsdf.h;
+// the path tracer only). Weight 0: no coat.
+struct Clearcoat {
+    float weight = 0;     // clearcoatFactor, 0-1
+    float roughness = 0;  // clearcoatRoughnessFactor, the coat's GGX roughness, 0-1
+};
+
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -74,11 +81,7 @@ struct Material {
     std::optional<MetallicRoughness> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
-    // KHR_materials_clearcoat: a clear layer of ior 1.5 over the material, of weight `clearcoat`
-    // and GGX roughness clearcoatRoughness, both 0-1 (render/materials/clearcoat_bsdf.h; the path
-    // tracer only).
-    float clearcoat = 0;
-    float clearcoatRoughness = 0;
+    Clearcoat clearcoat{};
     // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
     std::optional<std::uint32_t> transmissionTexture{};
     // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times

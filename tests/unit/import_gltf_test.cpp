@@ -363,11 +363,11 @@ TEST(ImportGltf, ClearcoatFactorsAreRead) {
         R"( {"name": "bare", "pbrMetallicRoughness": {"metallicFactor": 0}}])";
     const std::string one = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
     const Material paint = importScene(dir.write("paint.gltf", one)).scene.materials.at(0);
-    EXPECT_EQ(paint.clearcoat, 0.8f);
-    EXPECT_EQ(paint.clearcoatRoughness, 1.0f);
+    EXPECT_EQ(paint.clearcoat.weight, 0.8f);
+    EXPECT_EQ(paint.clearcoat.roughness, 1.0f);
     const std::string two = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 1)");
     const Material bare = importScene(dir.write("bare.gltf", two)).scene.materials.at(0);
-    EXPECT_EQ(bare.clearcoat, 0.0f);
+    EXPECT_EQ(bare.clearcoat.weight, 0.0f);
     EXPECT_EQ(bare.diffuse, paint.diffuse);
     EXPECT_EQ(bare.specular, paint.specular);
     EXPECT_THROW(importScene(dir.write("bad.gltf",

@@ -364,9 +364,9 @@ TEST(XmlWriter, ClearcoatRoundTrips) {
     EXPECT_EQ(text.find("clearcoat=\""), text.rfind("clearcoat=\"")) << "the plain material writes none";
     const Scene second = loadSceneXml(dir.path("out.xml"));
     ASSERT_EQ(second.materials.size(), 2u);
-    EXPECT_EQ(second.materials[0].clearcoat, 0.75f);
-    EXPECT_EQ(second.materials[0].clearcoatRoughness, 0.125f);
-    EXPECT_EQ(second.materials[1].clearcoat, 0.0f);
+    EXPECT_EQ(second.materials[0].clearcoat.weight, 0.75f);
+    EXPECT_EQ(second.materials[0].clearcoat.roughness, 0.125f);
+    EXPECT_EQ(second.materials[1].clearcoat.weight, 0.0f);
     const std::string error = inputErrorOf([&] {
         loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
             <materials><material name="m" clearcoat="2"/></materials></scene>)"));
