@@ -251,12 +251,12 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         pugi::xml_node node = parent.append_child("material");
         node.append_attribute("name").set_value(materialNames_[i].c_str());
         setRgb(node, m.color);
-        setNumber(node, "ambient", m.ambient);
-        setNumber(node, "diffuse", m.diffuse);
-        setNumber(node, "specular", m.specular);
-        setNumber(node, "shininess", m.shininess);
-        setNumber(node, "reflection", m.reflection);
-        setNumber(node, "spread", m.spread);
+        setNumber(node, "ambient", m.phong.ambient);
+        setNumber(node, "diffuse", m.phong.diffuse);
+        setNumber(node, "specular", m.phong.specular);
+        setNumber(node, "shininess", m.phong.shininess);
+        setNumber(node, "reflection", m.phong.reflection);
+        setNumber(node, "spread", m.phong.spread);
         if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
         if (m.emission != Color{}) setColor(node, "emission", m.emission);
         if (m.emissionTexture)

@@ -55,6 +55,18 @@ inline constexpr double kMaxTextureTransform = 1e6;
 // fits a float.
 inline constexpr double kMaxCoordinate = 1e15;
 
+// The Phong coefficients of thesis 2.1.3 and the glossy spread of thesis 2.6.2: the Whitted
+// tracer's terms (render/materials/phong.h). The path tracer renders them through
+// metallicRoughnessOf (scene/metallic_roughness.h) when the material has no factors of its own.
+struct PhongTerms {
+    float ambient = 0.1f;     // k_a
+    float diffuse = 0.9f;     // k_d
+    float specular = 0.0f;    // k_s
+    float shininess = 20.0f;  // n, the sharpness of the highlight
+    float reflection = 0.0f;  // mirror reflectivity, 0-1
+    float spread = 0.0f;      // sigma of the glossy reflection lobe (thesis 2.6.2), radians
+};
+
 // KHR_materials_clearcoat: a clear layer of ior 1.5 over the material (render/materials/clearcoat_bsdf.h;
 // the path tracer only). Weight 0: no coat.
 struct Clearcoat {
@@ -65,13 +77,10 @@ struct Clearcoat {
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
+    // The colour every shading model starts from: Phong's k_d and k_a colour, the metallic-roughness
+    // base colour.
     Color color{1, 1, 1};
-    float ambient = 0.1f;     // k_a
-    float diffuse = 0.9f;     // k_d
-    float specular = 0.0f;    // k_s
-    float shininess = 20.0f;  // n, the sharpness of the highlight
-    float reflection = 0.0f;  // mirror reflectivity, 0-1
-    float spread = 0.0f;      // sigma of the glossy reflection lobe (thesis 2.6.2), radians
+    PhongTerms phong{};
     // rt extensions: the colour is multiplied by a texture's; the emitted colour is added to
     // what the surface reflects (multiplied by its own texture), lighting nothing else.
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
