@@ -401,10 +401,10 @@ private:
             keepTransmissionTexture(gm, what, m);
             readClearcoat(gm, what, m);
             readAlphaMode(gm, what, m);
-            m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
-            if (m.normalTexture)
-                m.normalScale = float(numberWithin(gm.normalTexture.scale, -kMaxTextureTransform, kMaxTextureTransform,
-                                                   file_, what + " normal scale"));
+            m.normalMap.texture = textureFor(gm.normalTexture, what + " normalTexture");
+            if (m.normalMap.texture)
+                m.normalMap.scale = float(numberWithin(gm.normalTexture.scale, -kMaxTextureTransform,
+                                                       kMaxTextureTransform, file_, what + " normal scale"));
         }
         return m;
     }

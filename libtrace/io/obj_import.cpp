@@ -180,8 +180,8 @@ void readNormalMap(const tinyobj::material_t& mtl, const std::string& objPath, I
     const std::string& file = norm ? mtl.normal_texname : mtl.bump_texname;
     if (file.empty()) return;
     const tinyobj::texture_option_t& o = norm ? mtl.normal_texopt : mtl.bump_texopt;
-    m.normalTexture = addTexture(out.scene, mapTexture(file, o, objPath, out.report.notes));
-    m.normalScale =
+    m.normalMap.texture = addTexture(out.scene, mapTexture(file, o, objPath, out.report.notes));
+    m.normalMap.scale =
         textureOption(std::array{float(o.bump_multiplier)}, 1, "texture " + file + ": -bm", out.report.notes)[0];
 }
 

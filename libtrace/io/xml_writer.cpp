@@ -278,9 +278,9 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         if (m.transmissionTexture)
             node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmissionTexture).c_str());
         if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
-        if (m.normalTexture)
-            node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalTexture).c_str());
-        if (m.normalScale != 1) setNumber(node, "normal_scale", m.normalScale);
+        if (m.normalMap.texture)
+            node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalMap.texture).c_str());
+        if (m.normalMap.scale != 1) setNumber(node, "normal_scale", m.normalMap.scale);
         setTransmission(node, m.transmission);
         if (!m.doubleSided) node.append_attribute("double_sided").set_value("false");
     }

@@ -74,6 +74,12 @@ struct Clearcoat {
     float roughness = 0;  // clearcoatRoughnessFactor, the coat's GGX roughness, 0-1
 };
 
+// rt extension: a tangent-space normal map in glTF's convention (render/normal_map.h).
+struct NormalMap {
+    std::optional<std::uint32_t> texture{};  // index in Scene::textures; none: the surface's own normals
+    float scale = 1;                         // multiplies the texel's x and y (glTF's normalTexture.scale)
+};
+
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -100,10 +106,7 @@ struct Material {
     std::optional<float> alphaCutoff{};  // set: the material is a cut-out
     float alpha = 1;
     std::optional<std::uint32_t> alphaTexture{};
-    // rt extension: a tangent-space normal map in glTF's convention (render/normal_map.h); its
-    // x and y are multiplied by normalScale (glTF's normalTexture.scale).
-    std::optional<std::uint32_t> normalTexture{};
-    float normalScale = 1;
+    NormalMap normalMap{};
     Transmission transmission{};  // rt extension: glass (scene/transmission.h)
     // rt extension, glTF's doubleSided: false makes the material single-sided, and every ray
     // passes through its back (render/material_filter.h). The front is the side from which a

@@ -400,11 +400,11 @@ TEST(ImportObj, NormAndMapBumpAreNormalMaps) {
         importSquare(dir, "newmtl a\nmap_bump -bm 0.5 a.png\nnewmtl b\nbump b.png\nnorm n.png\nnewmtl c\nKd 1 1 1\n",
                      "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\nusemtl c\nf 1 2 4\n");
     const Material &a = materialNamed(r, "a"), &b = materialNamed(r, "b");
-    ASSERT_TRUE(a.normalTexture && b.normalTexture);
-    EXPECT_EQ(r.scene.textures[*a.normalTexture].path, dir.path("a.png"));
-    EXPECT_EQ(a.normalScale, 0.5f);
-    EXPECT_EQ(r.scene.textures[*b.normalTexture].path, dir.path("n.png"));
-    EXPECT_FALSE(materialNamed(r, "c").normalTexture);
+    ASSERT_TRUE(a.normalMap.texture && b.normalMap.texture);
+    EXPECT_EQ(r.scene.textures[*a.normalMap.texture].path, dir.path("a.png"));
+    EXPECT_EQ(a.normalMap.scale, 0.5f);
+    EXPECT_EQ(r.scene.textures[*b.normalMap.texture].path, dir.path("n.png"));
+    EXPECT_FALSE(materialNamed(r, "c").normalMap.texture);
 }
 
 // map_Ke is the emission's texture, times Ke; without Ke (or Ke 0) it glows at its own colour.

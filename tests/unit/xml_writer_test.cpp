@@ -264,8 +264,8 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     EXPECT_EQ(lamp.alphaCutoff, std::optional<float>(0.25f));
     EXPECT_EQ(lamp.alpha, 0.75f);
     EXPECT_EQ(lamp.alphaTexture, std::optional<std::uint32_t>(0));
-    EXPECT_EQ(lamp.normalTexture, std::optional<std::uint32_t>(0));
-    EXPECT_EQ(lamp.normalScale, 0.5f);
+    EXPECT_EQ(lamp.normalMap.texture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.normalMap.scale, 0.5f);
     ASSERT_EQ(second.models.size(), 1u);
     EXPECT_EQ(second.models[0].vertexNormals, m.vertexNormals);
     EXPECT_EQ(second.models[0].vertexUvs, m.vertexUvs);
