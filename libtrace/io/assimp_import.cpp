@@ -192,7 +192,7 @@ private:
         am.Get(AI_MATKEY_SHININESS, shininess);
         am.Get(AI_MATKEY_REFLECTIVITY, reflectivity);
         Material m = classicPhong(toColor(kd), toColor(ks) * (std::isfinite(strength) ? strength : 1), shininess);
-        m.reflection = std::isfinite(reflectivity) ? std::clamp(reflectivity, 0.0f, 1.0f) : 0.0f;
+        m.phong.reflection = std::isfinite(reflectivity) ? std::clamp(reflectivity, 0.0f, 1.0f) : 0.0f;
         aiColor3D ke(0, 0, 0);
         am.Get(AI_MATKEY_COLOR_EMISSIVE, ke);
         m.emission = toColor(ke);

@@ -401,10 +401,10 @@ private:
             keepTransmissionTexture(gm, what, m);
             readClearcoat(gm, what, m);
             readAlphaMode(gm, what, m);
-            m.normalTexture = textureFor(gm.normalTexture, what + " normalTexture");
-            if (m.normalTexture)
-                m.normalScale = float(numberWithin(gm.normalTexture.scale, -kMaxTextureTransform, kMaxTextureTransform,
-                                                   file_, what + " normal scale"));
+            m.normalMap.texture = textureFor(gm.normalTexture, what + " normalTexture");
+            if (m.normalMap.texture)
+                m.normalMap.scale = float(numberWithin(gm.normalTexture.scale, -kMaxTextureTransform,
+                                                       kMaxTextureTransform, file_, what + " normal scale"));
         }
         return m;
     }
@@ -576,8 +576,8 @@ private:
         const auto factor = [&](const char* key) {
             return std::clamp(extensionNumber(ext->second, key, 0, what), 0.0f, 1.0f);
         };
-        m.clearcoat = factor("clearcoatFactor");
-        m.clearcoatRoughness = factor("clearcoatRoughnessFactor");
+        m.clearcoat.weight = factor("clearcoatFactor");
+        m.clearcoat.roughness = factor("clearcoatRoughnessFactor");
     }
 
     // The number `key` of a material extension's object, `fallback` without one.

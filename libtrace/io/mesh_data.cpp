@@ -135,8 +135,8 @@ Color fileColor(float r, float g, float b) {
 Material classicPhong(const Color& diffuse, const Color& specular, float shininess) {
     Material m;
     m.color = diffuse;
-    m.specular = std::clamp(luminance(specular), 0.0f, 1.0f);
-    if (shininess > 0 && std::isfinite(shininess)) m.shininess = std::clamp(shininess, 1.0f, 10000.0f);
+    m.phong.specular = std::clamp(luminance(specular), 0.0f, 1.0f);
+    if (shininess > 0 && std::isfinite(shininess)) m.phong.shininess = std::clamp(shininess, 1.0f, 10000.0f);
     return m;
 }
 
@@ -145,8 +145,8 @@ void applyOpacity(Material& m, float opacity, float ior) {
     opacity = std::max(opacity, 0.0f);
     const bool solid = std::isfinite(ior) && ior > 1;
     m.transmission = {.weight = 1 - opacity, .ior = solid ? ior : 1.0f, .thin = !solid};
-    m.ambient *= opacity;
-    m.diffuse *= opacity;
+    m.phong.ambient *= opacity;
+    m.phong.diffuse *= opacity;
 }
 
 WindingAgainstNormals windingAgainstNormals(const Model& model) {

@@ -112,7 +112,7 @@ void applyTransparency(const tinyobj::material_t& mtl, Material& m) {
     if (mtl.illum == 6 || mtl.illum == 7) {
         const bool indexGiven = std::isfinite(mtl.ior) && mtl.ior > 0;
         m.transmission = {.weight = 1, .ior = indexGiven ? float(mtl.ior) : 1.0f};
-        m.reflection = 0;  // the Fresnel term reflects
+        m.phong.reflection = 0;  // the Fresnel term reflects
         return;
     }
     applyOpacity(m, float(mtl.dissolve), 1);
@@ -123,7 +123,7 @@ void applyTransparency(const tinyobj::material_t& mtl, Material& m) {
 Material materialFromMtl(const tinyobj::material_t& mtl) {
     const auto color = [](const tinyobj::real_t(&c)[3]) { return fileColor(c[0], c[1], c[2]); };
     Material m = classicPhong(color(mtl.diffuse), color(mtl.specular), mtl.shininess);
-    if (mtl.illum >= 3 && mtl.illum <= 5) m.reflection = m.specular;
+    if (mtl.illum >= 3 && mtl.illum <= 5) m.phong.reflection = m.phong.specular;
     m.emission = color(mtl.emission);
     applyTransparency(mtl, m);
     return m;
@@ -180,8 +180,8 @@ void readNormalMap(const tinyobj::material_t& mtl, const std::string& objPath, I
     const std::string& file = norm ? mtl.normal_texname : mtl.bump_texname;
     if (file.empty()) return;
     const tinyobj::texture_option_t& o = norm ? mtl.normal_texopt : mtl.bump_texopt;
-    m.normalTexture = addTexture(out.scene, mapTexture(file, o, objPath, out.report.notes));
-    m.normalScale =
+    m.normalMap.texture = addTexture(out.scene, mapTexture(file, o, objPath, out.report.notes));
+    m.normalMap.scale =
         textureOption(std::array{float(o.bump_multiplier)}, 1, "texture " + file + ": -bm", out.report.notes)[0];
 }
 

@@ -73,6 +73,11 @@ private:
     void readMaterial(const XmlElement& e);
     void readMetallicRoughness(const XmlElement& e, Material& m);
     void readCutout(const XmlElement& e, std::uint32_t index, Material& m);
+    // Where a material keeps a texture: a function, not a member pointer, as most of a material's
+    // textures are inside its groups (NormalMap::texture ...).
+    using TextureIndex = std::optional<std::uint32_t>;
+    using TextureSlot = TextureIndex& (*)(Material&);
+    void useTexture(const XmlElement& e, const char* attribute, std::uint32_t index, TextureSlot slot);
     void readTexture(const XmlElement& e);
     void resolveTextures();
     struct TextureUse;
@@ -108,7 +113,7 @@ private:
     // Texture names of materials, resolved when every <texture> is known.
     struct TextureUse {
         std::uint32_t material;
-        std::optional<std::uint32_t> Material::*slot;
+        TextureSlot slot;
         std::string name;
         pugi::xml_node node;
     };
@@ -286,33 +291,34 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     m.name = e.string("name");
     define(materials_, "material", m.name, std::uint32_t(scene_.materials.size()), e);
     m.color = e.rgb(1);
-    m.ambient = e.nonNegativeFloat("ambient", m.ambient);
-    m.diffuse = e.nonNegativeFloat("diffuse", m.diffuse);
-    m.specular = e.nonNegativeFloat("specular", m.specular);
-    m.shininess = e.nonNegativeFloat("shininess", m.shininess);
-    m.reflection = e.nonNegativeFloat("reflection", m.reflection);
-    m.spread = e.nonNegativeFloat("spread", m.spread);
-    if (m.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
+    m.phong.ambient = e.nonNegativeFloat("ambient", m.phong.ambient);
+    m.phong.diffuse = e.nonNegativeFloat("diffuse", m.phong.diffuse);
+    m.phong.specular = e.nonNegativeFloat("specular", m.phong.specular);
+    m.phong.shininess = e.nonNegativeFloat("shininess", m.phong.shininess);
+    m.phong.reflection = e.nonNegativeFloat("reflection", m.phong.reflection);
+    m.phong.spread = e.nonNegativeFloat("spread", m.phong.spread);
+    if (m.phong.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
     m.emission = e.color("emission", m.emission);
     readMetallicRoughness(e, m);
-    m.clearcoat = unitFactor(e, "clearcoat", m.clearcoat);
-    m.clearcoatRoughness = unitFactor(e, "clearcoat_roughness", m.clearcoatRoughness);
+    m.clearcoat.weight = unitFactor(e, "clearcoat", m.clearcoat.weight);
+    m.clearcoat.roughness = unitFactor(e, "clearcoat_roughness", m.clearcoat.roughness);
     m.transmission = readTransmission(e);
     const auto index = std::uint32_t(scene_.materials.size());
-    if (const auto name = e.optionalString("texture"))
-        textureUses_.push_back({index, &Material::colorTexture, *name, e.node()});
-    if (const auto name = e.optionalString("emission_texture"))
-        textureUses_.push_back({index, &Material::emissionTexture, *name, e.node()});
-    if (const auto name = e.optionalString("metallic_roughness_texture"))
-        textureUses_.push_back({index, &Material::metallicRoughnessTexture, *name, e.node()});
-    if (const auto name = e.optionalString("transmission_texture"))
-        textureUses_.push_back({index, &Material::transmissionTexture, *name, e.node()});
+    useTexture(e, "texture", index, [](Material& t) -> TextureIndex& { return t.colorTexture; });
+    useTexture(e, "emission_texture", index, [](Material& t) -> TextureIndex& { return t.emissionTexture; });
+    useTexture(e, "metallic_roughness_texture", index,
+               [](Material& t) -> TextureIndex& { return t.metallicRoughnessTexture; });
+    useTexture(e, "transmission_texture", index, [](Material& t) -> TextureIndex& { return t.transmissionTexture; });
     readCutout(e, index, m);
-    if (const auto name = e.optionalString("normal_texture"))
-        textureUses_.push_back({index, &Material::normalTexture, *name, e.node()});
-    m.normalScale = e.floatWithin("normal_scale", m.normalScale, kMaxTextureTransform);
+    useTexture(e, "normal_texture", index, [](Material& t) -> TextureIndex& { return t.normalMap.texture; });
+    m.normalMap.scale = e.floatWithin("normal_scale", m.normalMap.scale, kMaxTextureTransform);
     m.doubleSided = e.boolean("double_sided", m.doubleSided);
     scene_.materials.push_back(std::move(m));
+}
+
+// Material `index` takes the texture its attribute names, if it has one, in `slot`.
+void SceneBuilder::useTexture(const XmlElement& e, const char* attribute, std::uint32_t index, TextureSlot slot) {
+    if (const auto name = e.optionalString(attribute)) textureUses_.push_back({index, slot, *name, e.node()});
 }
 
 // rt extension: the path tracer's glTF metallic-roughness factors, each 0-1; given one, the
@@ -328,8 +334,7 @@ void SceneBuilder::readCutout(const XmlElement& e, std::uint32_t index, Material
     if (e.has("alpha_cutoff")) m.alphaCutoff = e.nonNegativeFloat("alpha_cutoff", 0.5f);
     m.alpha = e.nonNegativeFloat("alpha", m.alpha);
     if (m.alpha > 1) e.fail("<material> alpha must be between 0 and 1");
-    if (const auto name = e.optionalString("alpha_texture"))
-        textureUses_.push_back({index, &Material::alphaTexture, *name, e.node()});
+    useTexture(e, "alpha_texture", index, [](Material& t) -> TextureIndex& { return t.alphaTexture; });
 }
 
 // rt extension: an image file (any format OpenImageIO reads) or a procedural checker.
@@ -383,7 +388,7 @@ void SceneBuilder::readTexture(const XmlElement& e) {
 }
 
 void SceneBuilder::resolveTextures() {
-    for (const TextureUse& use : textureUses_) scene_.materials[use.material].*use.slot = textureNamed(use);
+    for (const TextureUse& use : textureUses_) use.slot(scene_.materials[use.material]) = textureNamed(use);
     if (!environmentTexture_) return;
     scene_.environment->texture = textureNamed(*environmentTexture_);
     if (scene_.textures[scene_.environment->texture].kind != Texture::Kind::Image)

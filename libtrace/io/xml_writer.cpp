@@ -251,12 +251,12 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         pugi::xml_node node = parent.append_child("material");
         node.append_attribute("name").set_value(materialNames_[i].c_str());
         setRgb(node, m.color);
-        setNumber(node, "ambient", m.ambient);
-        setNumber(node, "diffuse", m.diffuse);
-        setNumber(node, "specular", m.specular);
-        setNumber(node, "shininess", m.shininess);
-        setNumber(node, "reflection", m.reflection);
-        setNumber(node, "spread", m.spread);
+        setNumber(node, "ambient", m.phong.ambient);
+        setNumber(node, "diffuse", m.phong.diffuse);
+        setNumber(node, "specular", m.phong.specular);
+        setNumber(node, "shininess", m.phong.shininess);
+        setNumber(node, "reflection", m.phong.reflection);
+        setNumber(node, "spread", m.phong.spread);
         if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
         if (m.emission != Color{}) setColor(node, "emission", m.emission);
         if (m.emissionTexture)
@@ -266,9 +266,9 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             setNumber(node, "roughness", f->roughness);
             setNumber(node, "specular_factor", f->specular);
         }
-        if (m.clearcoat > 0) {
-            setNumber(node, "clearcoat", m.clearcoat);
-            setNumber(node, "clearcoat_roughness", m.clearcoatRoughness);
+        if (m.clearcoat.weight > 0) {
+            setNumber(node, "clearcoat", m.clearcoat.weight);
+            setNumber(node, "clearcoat_roughness", m.clearcoat.roughness);
         }
         if (m.metallicRoughnessTexture)
             node.append_attribute("metallic_roughness_texture")
@@ -278,9 +278,9 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         if (m.transmissionTexture)
             node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmissionTexture).c_str());
         if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
-        if (m.normalTexture)
-            node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalTexture).c_str());
-        if (m.normalScale != 1) setNumber(node, "normal_scale", m.normalScale);
+        if (m.normalMap.texture)
+            node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalMap.texture).c_str());
+        if (m.normalMap.scale != 1) setNumber(node, "normal_scale", m.normalMap.scale);
         setTransmission(node, m.transmission);
         if (!m.doubleSided) node.append_attribute("double_sided").set_value("false");
     }

@@ -17,15 +17,15 @@ Vec3 frontNormal(const Primitives& prims, std::uint32_t index, const Hit& hit, c
 
 // The texel as a tangent-space normal, x and y scaled.
 Vec3 tangentSpaceNormal(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
-    const Color c = textureData(context, *m.normalTexture, s);
-    return {(2 * c.r - 1) * m.normalScale, (2 * c.g - 1) * m.normalScale, 2 * c.b - 1};
+    const Color c = textureData(context, *m.normalMap.texture, s);
+    return {(2 * c.r - 1) * m.normalMap.scale, (2 * c.g - 1) * m.normalMap.scale, 2 * c.b - 1};
 }
 
 }  // namespace
 
 void applyNormalMap(const ShadingContext& context, const Material& m, const Hit& hit, SurfacePoint& s) {
-    if (!m.normalTexture || !context.images || context.scene.textures[*m.normalTexture].kind != Texture::Kind::Image)
-        return;
+    const std::optional<std::uint32_t>& texture = m.normalMap.texture;
+    if (!texture || !context.images || context.scene.textures[*texture].kind != Texture::Kind::Image) return;
     const Primitives& prims = context.scene.primitives;
     const std::optional<std::uint32_t> index = prims.indexIn<Triangle>(hit.prim);
     const CornerTangents* tangents = index ? prims.triangleShading().tangents.find(*index) : nullptr;

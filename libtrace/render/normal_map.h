@@ -1,7 +1,7 @@
 // Tangent-space normal maps in glTF's convention (glTF 2.0, 3.9.3 normalTexture): a texel's
 // red, green and blue, each mapped from [0, 1] to [-1, 1], are the normal's components along
 // the tangent (+u), the bitangent (up the image) and the vertex normal; red and green are
-// multiplied by the material's normalScale. The tangents are generated when the scene is
+// multiplied by the material's NormalMap::scale. The tangents are generated when the scene is
 // flattened (geometry/tangents.h). Only the shading normal moves: the geometric normal still
 // decides ray offsets and sides, and a surface seen from behind gets the mirrored result.
 #pragma once

@@ -34,17 +34,17 @@ Material phongFromMetallicRoughness(const PbrMaterialFactors& pbr) {
     const float roughMetal = metallic * roughness * roughness;
     Material m;
     m.color = base;
-    m.diffuse = 0.9f * (1 - metallic) + roughMetal;
-    m.specular = clamp01(f0 - roughMetal * metalF0);
-    m.shininess = std::clamp(2 / (alpha * alpha) - 2, 1.0f, 10000.0f);
-    m.reflection = f0 * (1 - roughness);
-    m.spread = alpha;
+    m.phong.diffuse = 0.9f * (1 - metallic) + roughMetal;
+    m.phong.specular = clamp01(f0 - roughMetal * metalF0);
+    m.phong.shininess = std::clamp(2 / (alpha * alpha) - 2, 1.0f, 10000.0f);
+    m.phong.reflection = f0 * (1 - roughness);
+    m.phong.spread = alpha;
     m.metallicRoughness = MetallicRoughness{metallic, roughness, clamp01(pbr.factors.specular)};
     const float transmission = clamp01(pbr.transmission) * (1 - metallic);
     if (transmission > 0) {
-        m.ambient *= 1 - transmission;
-        m.diffuse *= 1 - transmission;
-        m.reflection *= 1 - transmission;
+        m.phong.ambient *= 1 - transmission;
+        m.phong.diffuse *= 1 - transmission;
+        m.phong.reflection *= 1 - transmission;
         m.transmission = {.weight = transmission,
                           .color = base,
                           .ior = ior,
@@ -58,8 +58,9 @@ Material phongFromMetallicRoughness(const PbrMaterialFactors& pbr) {
 
 MetallicRoughness metallicRoughnessOf(const Material& m) {
     if (m.metallicRoughness) return *m.metallicRoughness;
-    const float alpha = m.reflection > 0 ? m.spread : std::sqrt(2 / (std::max(m.shininess, 0.0f) + 2));
-    return {clamp01(m.reflection), clamp01(std::sqrt(alpha)), m.specular > 0 ? 1.0f : 0.0f};
+    const float alpha =
+        m.phong.reflection > 0 ? m.phong.spread : std::sqrt(2 / (std::max(m.phong.shininess, 0.0f) + 2));
+    return {clamp01(m.phong.reflection), clamp01(std::sqrt(alpha)), m.phong.specular > 0 ? 1.0f : 0.0f};
 }
 
 }  // namespace rt

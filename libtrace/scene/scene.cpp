@@ -114,9 +114,9 @@ std::size_t Scene::flatten() {
         const bool singleSided = inst.material < materials.size() && !materials[inst.material].doubleSided;
         dropped += addInstance(models[inst.model], inst, singleSided, primitives);
     }
-    if (std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.normalTexture; }))
+    if (std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.normalMap.texture; }))
         generateTangents(primitives,
-                         [&](std::uint32_t m) { return m < materials.size() && materials[m].normalTexture; });
+                         [&](std::uint32_t m) { return m < materials.size() && materials[m].normalMap.texture; });
     return dropped;
 }
 

@@ -55,16 +55,38 @@ inline constexpr double kMaxTextureTransform = 1e6;
 // fits a float.
 inline constexpr double kMaxCoordinate = 1e15;
 
-// Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
-struct Material {
-    std::string name;
-    Color color{1, 1, 1};
+// The Phong coefficients of thesis 2.1.3 and the glossy spread of thesis 2.6.2: the Whitted
+// tracer's terms (render/materials/phong.h). The path tracer renders them through
+// metallicRoughnessOf (scene/metallic_roughness.h) when the material has no factors of its own.
+struct PhongTerms {
     float ambient = 0.1f;     // k_a
     float diffuse = 0.9f;     // k_d
     float specular = 0.0f;    // k_s
     float shininess = 20.0f;  // n, the sharpness of the highlight
     float reflection = 0.0f;  // mirror reflectivity, 0-1
     float spread = 0.0f;      // sigma of the glossy reflection lobe (thesis 2.6.2), radians
+};
+
+// KHR_materials_clearcoat: a clear layer of ior 1.5 over the material (render/materials/clearcoat_bsdf.h;
+// the path tracer only). Weight 0: no coat.
+struct Clearcoat {
+    float weight = 0;     // clearcoatFactor, 0-1
+    float roughness = 0;  // clearcoatRoughnessFactor, the coat's GGX roughness, 0-1
+};
+
+// rt extension: a tangent-space normal map in glTF's convention (render/normal_map.h).
+struct NormalMap {
+    std::optional<std::uint32_t> texture{};  // index in Scene::textures; none: the surface's own normals
+    float scale = 1;                         // multiplies the texel's x and y (glTF's normalTexture.scale)
+};
+
+// Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
+struct Material {
+    std::string name;
+    // The colour every shading model starts from: Phong's k_d and k_a colour, the metallic-roughness
+    // base colour.
+    Color color{1, 1, 1};
+    PhongTerms phong{};
     // rt extensions: the colour is multiplied by a texture's; the emitted colour is added to
     // what the surface reflects (multiplied by its own texture), lighting nothing else.
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
@@ -74,11 +96,7 @@ struct Material {
     std::optional<MetallicRoughness> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
-    // KHR_materials_clearcoat: a clear layer of ior 1.5 over the material, of weight `clearcoat`
-    // and GGX roughness clearcoatRoughness, both 0-1 (render/materials/clearcoat_bsdf.h; the path
-    // tracer only).
-    float clearcoat = 0;
-    float clearcoatRoughness = 0;
+    Clearcoat clearcoat{};
     // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
     std::optional<std::uint32_t> transmissionTexture{};
     // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times
@@ -88,10 +106,7 @@ struct Material {
     std::optional<float> alphaCutoff{};  // set: the material is a cut-out
     float alpha = 1;
     std::optional<std::uint32_t> alphaTexture{};
-    // rt extension: a tangent-space normal map in glTF's convention (render/normal_map.h); its
-    // x and y are multiplied by normalScale (glTF's normalTexture.scale).
-    std::optional<std::uint32_t> normalTexture{};
-    float normalScale = 1;
+    NormalMap normalMap{};
     Transmission transmission{};  // rt extension: glass (scene/transmission.h)
     // rt extension, glTF's doubleSided: false makes the material single-sided, and every ray
     // passes through its back (render/material_filter.h). The front is the side from which a

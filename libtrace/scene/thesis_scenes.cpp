@@ -302,9 +302,10 @@ Scene thesisShips() {
     scene.camera.fovDegrees = Real(50);
     scene.lights.push_back({{-1, 0, 0}, {0.8f, 0.8f, 0.8f}, Real(0.1)});
     scene.lights.push_back({{6, 8, -10}, {0.5f, 0.5f, 0.5f}, Real(0.1)});
-    const auto blue =
-        addMaterial(scene, {.name = "blue", .color = {0.7f, 0.7f, 1.0f}, .diffuse = 0.4f, .reflection = 0.4f});
-    const auto steel = addMaterial(scene, {.name = "red_steel", .color = {1, 0, 0}, .diffuse = 0.6f, .specular = 0.3f});
+    const auto blue = addMaterial(
+        scene, {.name = "blue", .color = {0.7f, 0.7f, 1.0f}, .phong = {.diffuse = 0.4f, .reflection = 0.4f}});
+    const auto steel =
+        addMaterial(scene, {.name = "red_steel", .color = {1, 0, 0}, .phong = {.diffuse = 0.6f, .specular = 0.3f}});
     scene.looseObjects.add<Sphere>({{0, -1, 12}, Real(1.2)}, blue);
     Model hulls = namedModel("ships"), parts = namedModel("ship_parts");
     for (const Vec3& at : {Vec3{0, 0, 0}, Vec3{-100, -25, 90}, Vec3{100, 15, 90}, Vec3{0, 45, 180}})
@@ -327,8 +328,10 @@ Scene thesisTree() {
     scene.camera.fovDegrees = kSpdFovAt4To3;
     addSpdLights(scene, {Vec3{-5, 5, 50}, Vec3{30, -30, 30}, Vec3{-40, -30, 20}, Vec3{10, 30, 40}, Vec3{-30, 40, 10},
                          Vec3{50, 25, 20}, Vec3{-10, -60, 30}});
-    const auto field = addMaterial(scene, {.name = "field", .color = {0.2f, 0.7f, 0.2f}, .ambient = 0, .diffuse = 1});
-    const auto bark = addMaterial(scene, {.name = "bark", .color = {0.55f, 0.4f, 0.2f}, .ambient = 0, .diffuse = 1});
+    const auto field =
+        addMaterial(scene, {.name = "field", .color = {0.2f, 0.7f, 0.2f}, .phong = {.ambient = 0, .diffuse = 1}});
+    const auto bark =
+        addMaterial(scene, {.name = "bark", .color = {0.55f, 0.4f, 0.2f}, .phong = {.ambient = 0, .diffuse = 1}});
     addFloor(scene, 50, 0, field);
     Model tree = namedModel("tree");
     growTree(tree, treeShape(), Transform(), 1, 11);
@@ -343,8 +346,8 @@ Scene thesisPyramid5() {
     scene.camera.destination = {0, Real(0.5), 0};
     scene.camera.fovDegrees = Real(45);
     scene.lights.push_back({{5, 6, 1}, {1, 1, 1}});  // from the side, so the two faces in view differ
-    const auto stone =
-        addMaterial(scene, {.name = "sandstone", .color = {0.9f, 0.75f, 0.5f}, .diffuse = 0.8f, .specular = 0.2f});
+    const auto stone = addMaterial(
+        scene, {.name = "sandstone", .color = {0.9f, 0.75f, 0.5f}, .phong = {.diffuse = 0.8f, .specular = 0.2f}});
     Model pyramid = namedModel("pyramid5");
     growPyramid(pyramid, {0, 0, 0}, 2, 2 / std::sqrt(Real(2)), 5);
     place(scene, std::move(pyramid), stone);

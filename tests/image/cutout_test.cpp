@@ -63,7 +63,7 @@ void addCutoutQuad(Scene& s, Real x0, Real z, std::uint32_t material) {
 }
 
 Material cutoutMaterial(std::uint32_t texture) {
-    Material m{.name = "leaf", .color = {0, 1, 0}, .ambient = 1, .diffuse = 0};
+    Material m{.name = "leaf", .color = {0, 1, 0}, .phong = {.ambient = 1, .diffuse = 0}};
     m.alphaTexture = texture;
     m.alphaCutoff = 0.5f;
     return m;
@@ -79,7 +79,7 @@ Scene floorUnderCutout(const std::string& mask) {
     s.camera.destination = {0, 0, 0};
     s.camera.fovDegrees = 2 * std::atan(2.0 / 10) * 180 / kPi;  // x from -2 to 2 on the floor
     s.textures.push_back({.name = "mask", .path = mask});
-    const auto floor = test::addMaterial(s, {.name = "floor", .ambient = 0.1f, .diffuse = 0.9f});
+    const auto floor = test::addMaterial(s, {.name = "floor", .phong = {.ambient = 0.1f, .diffuse = 0.9f}});
     test::addQuad(s, {-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}, floor);
     addCutoutQuad(s, kQuadX, kQuadZ, test::addMaterial(s, cutoutMaterial(0)));
     s.lights.push_back({kLight});

@@ -49,8 +49,8 @@ Scene plane(const std::string& normalMap, bool mirrored, bool facingAway, const 
     s.camera.destination = {0.5, 0.5, 0};
     s.camera.fovDegrees = 2 * std::atan(0.25) * 180 / kPi;  // the middle half of the quad
     s.textures.push_back({.name = "bumps", .path = normalMap});
-    Material m{.name = "matte", .ambient = 0, .diffuse = 1};
-    m.normalTexture = 0;
+    Material m{.name = "matte", .phong = {.ambient = 0, .diffuse = 1}};
+    m.normalMap.texture = 0;
     s.materials.push_back(m);
     Model quad;
     quad.triangleVertices = {0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0};

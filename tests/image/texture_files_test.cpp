@@ -57,7 +57,7 @@ Scene texturedQuad(const std::string& picture) {
     s.camera.focalDistance =
         2 * kReferenceWidth;  // f is in pixels of an 800-wide picture: one unit fills the width at distance 2
     s.textures.push_back({.name = "picture", .path = picture});
-    Material m{.name = "screen", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = {1, 1, 1}};
+    Material m{.name = "screen", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {1, 1, 1}};
     m.emissionTexture = 0;
     s.materials.push_back(m);
     Model quad;
@@ -132,7 +132,7 @@ Scene checkerFloor(const std::string& checker) {
     s.camera.destination = {0, 0.4, -10};
     s.camera.fovDegrees = 60;
     s.textures.push_back({.name = "checker", .path = checker});
-    Material m{.name = "floor", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = {1, 1, 1}};
+    Material m{.name = "floor", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {1, 1, 1}};
     m.emissionTexture = 0;
     s.materials.push_back(m);
     Model floor;
@@ -203,7 +203,8 @@ TEST(TextureFiles, ACheckerSeenInAMirrorIsFilteredToo) {
     Scene scene = checkerFloor(path);
     for (Model& model : scene.models)  // the floor lifted to a ceiling at y = 2
         for (std::size_t i = 1; i < model.triangleVertices.size(); i += 3) model.triangleVertices[i] = 2;
-    const auto mirror = test::addMaterial(scene, {.name = "mirror", .ambient = 0, .diffuse = 0, .reflection = 1});
+    const auto mirror =
+        test::addMaterial(scene, {.name = "mirror", .phong = {.ambient = 0, .diffuse = 0, .reflection = 1}});
     test::addQuad(scene, {-100, 0, 10}, {100, 0, 10}, {100, 0, -400}, {-100, 0, -400}, mirror);
     scene.flatten();
     std::vector<std::string> warnings;
@@ -234,7 +235,7 @@ TEST(TextureFiles, RoughGlassWidensTheFootprintOfWhatIsSeenThroughIt) {
     writeChecker(path);
     const auto contrastThrough = [&](float spread) {
         Scene scene = checkerFloor(path);
-        Material pane{.name = "glass", .ambient = 0, .diffuse = 0, .spread = spread};
+        Material pane{.name = "glass", .phong = {.ambient = 0, .diffuse = 0, .spread = spread}};
         pane.transmission = {.weight = 1, .ior = 1.5f};
         scene.looseObjects.add<Sphere>({{0, 0.25, -2}, 0.5}, test::addMaterial(scene, pane));
         scene.flatten();

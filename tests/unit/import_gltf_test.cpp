@@ -304,7 +304,7 @@ TEST(ImportGltf, MaterialExtensionsAreRead) {
     const Material& m = r.scene.materials[0];
     EXPECT_EQ(m.name, "glass");
     EXPECT_EQ(m.color, Color(0.5f, 0.25f, 1));
-    EXPECT_NEAR(m.specular, 0.5f / 9, 1e-6);  // ((2 - 1) / (2 + 1))^2 * 0.5
+    EXPECT_NEAR(m.phong.specular, 0.5f / 9, 1e-6);  // ((2 - 1) / (2 + 1))^2 * 0.5
     EXPECT_THROW(importScene(dir.write("bad.gltf", replaceOnce(json, R"("ior": 2)", R"("ior": "two")"))), InputError);
 }
 
@@ -363,13 +363,13 @@ TEST(ImportGltf, ClearcoatFactorsAreRead) {
         R"( {"name": "bare", "pbrMetallicRoughness": {"metallicFactor": 0}}])";
     const std::string one = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 0)");
     const Material paint = importScene(dir.write("paint.gltf", one)).scene.materials.at(0);
-    EXPECT_EQ(paint.clearcoat, 0.8f);
-    EXPECT_EQ(paint.clearcoatRoughness, 1.0f);
+    EXPECT_EQ(paint.clearcoat.weight, 0.8f);
+    EXPECT_EQ(paint.clearcoat.roughness, 1.0f);
     const std::string two = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 1)");
     const Material bare = importScene(dir.write("bare.gltf", two)).scene.materials.at(0);
-    EXPECT_EQ(bare.clearcoat, 0.0f);
-    EXPECT_EQ(bare.diffuse, paint.diffuse);
-    EXPECT_EQ(bare.specular, paint.specular);
+    EXPECT_EQ(bare.clearcoat.weight, 0.0f);
+    EXPECT_EQ(bare.phong.diffuse, paint.phong.diffuse);
+    EXPECT_EQ(bare.phong.specular, paint.phong.specular);
     EXPECT_THROW(importScene(dir.write("bad.gltf",
                                        replaceOnce(one, R"("clearcoatFactor": 0.8)", R"("clearcoatFactor": "shiny")"))),
                  InputError);
@@ -395,19 +395,19 @@ TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
     EXPECT_FALSE(glass.transmission.thin);
     EXPECT_EQ(glass.transmission.attenuationColor, Color(0.5f, 0.25f, 1));
     EXPECT_EQ(glass.transmission.attenuationDistance, 2.0f);
-    EXPECT_EQ(glass.diffuse, 0.0f);
-    EXPECT_EQ(glass.ambient, 0.0f);
-    EXPECT_EQ(glass.reflection, 0.0f) << "the renderer's Fresnel term reflects";
+    EXPECT_EQ(glass.phong.diffuse, 0.0f);
+    EXPECT_EQ(glass.phong.ambient, 0.0f);
+    EXPECT_EQ(glass.phong.reflection, 0.0f) << "the renderer's Fresnel term reflects";
     const std::string two = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 1)");
     const Material sheet = importScene(dir.write("sheet.gltf", two)).scene.materials.at(0);
     EXPECT_EQ(sheet.transmission.weight, 0.5f);
     EXPECT_TRUE(sheet.transmission.thin);
-    EXPECT_FLOAT_EQ(sheet.diffuse, 0.45f);
+    EXPECT_FLOAT_EQ(sheet.phong.diffuse, 0.45f);
     const std::string three = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 2)");
     const Material paper = importScene(dir.write("paper.gltf", three)).scene.materials.at(0);
     EXPECT_EQ(paper.transmission.weight, 1.0f) << "the renderers follow the texture per hit";
     ASSERT_TRUE(paper.transmissionTexture);
-    EXPECT_FLOAT_EQ(paper.diffuse, 0.45f) << "the Phong coefficients take a transmission texture as mid-grey";
+    EXPECT_FLOAT_EQ(paper.phong.diffuse, 0.45f) << "the Phong coefficients take a transmission texture as mid-grey";
     EXPECT_THROW(importScene(dir.write(
                      "bad.gltf", replaceOnce(one, R"("transmissionFactor": 1)", R"("transmissionFactor": "all")"))),
                  InputError);

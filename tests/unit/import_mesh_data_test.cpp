@@ -50,8 +50,8 @@ TEST(ImportMeshData, OpacityBelowOneLetsLightThrough) {
     EXPECT_FLOAT_EQ(veil.transmission.weight, 0.75f);
     EXPECT_TRUE(veil.transmission.thin);
     EXPECT_EQ(veil.transmission.ior, 1.0f);
-    EXPECT_FLOAT_EQ(veil.diffuse, Material{}.diffuse * 0.25f);
-    EXPECT_FLOAT_EQ(veil.ambient, Material{}.ambient * 0.25f);
+    EXPECT_FLOAT_EQ(veil.phong.diffuse, Material{}.phong.diffuse * 0.25f);
+    EXPECT_FLOAT_EQ(veil.phong.ambient, Material{}.phong.ambient * 0.25f);
     Material solid;
     applyOpacity(solid, 0.5f, 1.5f);
     EXPECT_FALSE(solid.transmission.thin);
@@ -60,7 +60,7 @@ TEST(ImportMeshData, OpacityBelowOneLetsLightThrough) {
         Material same;
         applyOpacity(same, opacity, 1.5f);
         EXPECT_FALSE(same.transmission.passesLight()) << opacity;
-        EXPECT_EQ(same.diffuse, Material{}.diffuse);
+        EXPECT_EQ(same.phong.diffuse, Material{}.phong.diffuse);
     }
 }
 

@@ -82,8 +82,8 @@ TEST(ImportObj, MaterialsKeepTheirDiffuseColourAndNames) {
     EXPECT_NEAR(m.color.r, 0.14f, 1e-6);
     EXPECT_NEAR(m.color.g, 0.45f, 1e-6);
     EXPECT_NEAR(m.color.b, 0.091f, 1e-6);
-    EXPECT_FLOAT_EQ(m.specular, 0);
-    EXPECT_FLOAT_EQ(m.shininess, 10);
+    EXPECT_FLOAT_EQ(m.phong.specular, 0);
+    EXPECT_FLOAT_EQ(m.phong.shininess, 10);
 }
 
 // Ks becomes the specular coefficient; illum 3 (ray-traced reflection) makes it a mirror too.
@@ -96,12 +96,12 @@ TEST(ImportObj, SpecularAndReflectionComeFromKsAndIllum) {
     const Material& shiny = r.scene.materials[r.scene.instances[0].material];
     const Material& matte = r.scene.materials[r.scene.instances[1].material];
     EXPECT_EQ(shiny.name, "shiny");
-    EXPECT_FLOAT_EQ(shiny.specular, 0.5f);
-    EXPECT_FLOAT_EQ(shiny.shininess, 80);
-    EXPECT_FLOAT_EQ(shiny.reflection, 0.5f);
+    EXPECT_FLOAT_EQ(shiny.phong.specular, 0.5f);
+    EXPECT_FLOAT_EQ(shiny.phong.shininess, 80);
+    EXPECT_FLOAT_EQ(shiny.phong.reflection, 0.5f);
     EXPECT_EQ(matte.name, "matte");
     EXPECT_FLOAT_EQ(matte.color.b, 1);
-    EXPECT_FLOAT_EQ(matte.reflection, 0);
+    EXPECT_FLOAT_EQ(matte.phong.reflection, 0);
 }
 
 // illum 6 and 7 are glass of index Ni; d below 1 (or Tr above 0) lets 1 - d through straight,
@@ -124,15 +124,15 @@ TEST(ImportObj, TransparencyComesFromDTrNiAndIllum) {
     EXPECT_EQ(glass.weight, 1.0f);
     EXPECT_EQ(glass.ior, 2.5f);
     EXPECT_FALSE(glass.thin);
-    EXPECT_EQ(material(0).reflection, 0.0f) << "the Fresnel term reflects";
+    EXPECT_EQ(material(0).phong.reflection, 0.0f) << "the Fresnel term reflects";
     const Material veil = material(1);
     EXPECT_FLOAT_EQ(veil.transmission.weight, 0.75f);
     EXPECT_TRUE(veil.transmission.thin);
     EXPECT_EQ(veil.transmission.ior, 1.0f);
-    EXPECT_FLOAT_EQ(veil.diffuse, 0.9f * 0.25f);
-    EXPECT_FLOAT_EQ(veil.ambient, 0.1f * 0.25f);
+    EXPECT_FLOAT_EQ(veil.phong.diffuse, 0.9f * 0.25f);
+    EXPECT_FLOAT_EQ(veil.phong.ambient, 0.1f * 0.25f);
     EXPECT_FLOAT_EQ(material(2).transmission.weight, 0.4f);
-    EXPECT_FLOAT_EQ(material(3).reflection, 0.8f);
+    EXPECT_FLOAT_EQ(material(3).phong.reflection, 0.8f);
     EXPECT_FALSE(material(3).transmission.passesLight());
     EXPECT_FALSE(material(4).transmission.passesLight()) << "Ni alone makes no glass";
 }
@@ -400,11 +400,11 @@ TEST(ImportObj, NormAndMapBumpAreNormalMaps) {
         importSquare(dir, "newmtl a\nmap_bump -bm 0.5 a.png\nnewmtl b\nbump b.png\nnorm n.png\nnewmtl c\nKd 1 1 1\n",
                      "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\nusemtl c\nf 1 2 4\n");
     const Material &a = materialNamed(r, "a"), &b = materialNamed(r, "b");
-    ASSERT_TRUE(a.normalTexture && b.normalTexture);
-    EXPECT_EQ(r.scene.textures[*a.normalTexture].path, dir.path("a.png"));
-    EXPECT_EQ(a.normalScale, 0.5f);
-    EXPECT_EQ(r.scene.textures[*b.normalTexture].path, dir.path("n.png"));
-    EXPECT_FALSE(materialNamed(r, "c").normalTexture);
+    ASSERT_TRUE(a.normalMap.texture && b.normalMap.texture);
+    EXPECT_EQ(r.scene.textures[*a.normalMap.texture].path, dir.path("a.png"));
+    EXPECT_EQ(a.normalMap.scale, 0.5f);
+    EXPECT_EQ(r.scene.textures[*b.normalMap.texture].path, dir.path("n.png"));
+    EXPECT_FALSE(materialNamed(r, "c").normalMap.texture);
 }
 
 // map_Ke is the emission's texture, times Ke; without Ke (or Ke 0) it glows at its own colour.

@@ -70,7 +70,7 @@ TEST(RayStatistics, ReflectionsBounceUpToTheDepth) {
     Scene scene = sceneLookingDownZ();
     scene.camera.fovDegrees = 10;
     Material mirror;
-    mirror.reflection = 0.8f;
+    mirror.phong.reflection = 0.8f;
     scene.materials = {mirror};
     const Real s = 1000;
     for (const Real z : {Real(5), Real(-5)}) {
@@ -105,7 +105,7 @@ TEST(RayStatistics, MatteSurfacesDoNotReflect) {
 TEST(RayStatistics, SameCountsWithOneOrTwoThreads) {
     Scene scene = sceneLookingDownZ();
     Material mirror;
-    mirror.reflection = 0.5f;
+    mirror.phong.reflection = 0.5f;
     scene.materials = {mirror};
     for (int i = 0; i < 5; ++i) scene.looseObjects.add<Sphere>({{Real(i) - 2, 0, 6}, Real(0.6)}, 0);
     scene.lights.push_back({{3, 3, 0}});

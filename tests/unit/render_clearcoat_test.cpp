@@ -94,8 +94,7 @@ TEST(Clearcoat, BsdfAtCoatsTheMaterialsThatHaveOne) {
     const Vec3 wo = directionAt(0.8), mirrored{-wo.x, -wo.y, wo.z};
     Real lobe = 0.5;
     EXPECT_EQ(bsdfAt({scene}, m, s, lobe).evaluate(wo, mirrored), Color{});
-    m.clearcoat = 1;
-    m.clearcoatRoughness = 0.1f;
+    m.clearcoat = {.weight = 1, .roughness = 0.1f};
     const Bsdf coated = bsdfAt({scene}, m, s, lobe);
     EXPECT_GT(coated.evaluate(wo, mirrored).g, 0.1f);
     EXPECT_TRUE(isNonSpecular(coated.flags()));
@@ -104,8 +103,7 @@ TEST(Clearcoat, BsdfAtCoatsTheMaterialsThatHaveOne) {
 // A coated white sphere in a white furnace, through the whole path tracer: no light is made.
 TEST(Clearcoat, CoatedWhiteSphereInAWhiteFurnaceStaysAtMostOne) {
     Material m = test::pbr({1, 1, 1}, 0, 1, 0);
-    m.clearcoat = 1;
-    m.clearcoatRoughness = 0.2f;
+    m.clearcoat = {.weight = 1, .roughness = 0.2f};
     Scene s = test::sphereSeenFromMinusZ(m, 14);
     s.background = {1, 1, 1};
     s.flatten();

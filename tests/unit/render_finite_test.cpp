@@ -31,9 +31,10 @@ float channelBound(const Scene& s, int reflectionDepth, float Color::*channel) {
     for (int depth = reflectionDepth; depth >= 0; --depth) {
         float deepest = s.background.*channel;
         for (const Material& m : materials) {
-            float local = m.ambient * (m.color.*channel) * ambientLight;
-            for (const Light& l : s.lights) local += (m.diffuse * (m.color.*channel) + m.specular) * (l.color.*channel);
-            deepest = std::max(deepest, local + (depth < reflectionDepth ? m.reflection * seen : 0.0f));
+            float local = m.phong.ambient * (m.color.*channel) * ambientLight;
+            for (const Light& l : s.lights)
+                local += (m.phong.diffuse * (m.color.*channel) + m.phong.specular) * (l.color.*channel);
+            deepest = std::max(deepest, local + (depth < reflectionDepth ? m.phong.reflection * seen : 0.0f));
         }
         seen = deepest;
     }
@@ -78,13 +79,10 @@ Scene smallReflectiveSphereField() {
     s.camera.destination = {0, 0, 0};
     s.camera.up = {0, 0, 1};
     s.camera.fovDegrees = 50;
-    const auto chrome = test::addMaterial(s, {.name = "chrome",
-                                              .color = {0.9f, 0.8f, 0.6f},
-                                              .ambient = 0.05f,
-                                              .diffuse = 0.5f,
-                                              .specular = 0.8f,
-                                              .shininess = 60,
-                                              .reflection = 0.9f});
+    const auto chrome = test::addMaterial(
+        s, {.name = "chrome",
+            .color = {0.9f, 0.8f, 0.6f},
+            .phong = {.ambient = 0.05f, .diffuse = 0.5f, .specular = 0.8f, .shininess = 60, .reflection = 0.9f}});
     constexpr int n = 12;
     constexpr Real spacing = Real(0.02), half = spacing * (n - 1) / 2;
     SampleRng random{17, 4, 2026};
@@ -117,8 +115,9 @@ Scene ballsScene() {
 // infinite in red and blue and NaN in green (infinity times the colour's zero).
 Scene sphereUnderAnInfiniteLight() {
     const float inf = std::numeric_limits<float>::infinity();
-    return test::litSphereSeenFromMinusZ({.name = "magenta", .color = {1, 0, 1}, .ambient = 0.1f, .diffuse = 0.8f}, 20,
-                                         {{{0, 5, -10}, {inf, inf, inf}, 0}});
+    return test::litSphereSeenFromMinusZ(
+        {.name = "magenta", .color = {1, 0, 1}, .phong = {.ambient = 0.1f, .diffuse = 0.8f}}, 20,
+        {{{0, 5, -10}, {inf, inf, inf}, 0}});
 }
 
 bool isBlack(const Color& c) { return c == Color{}; }

@@ -19,7 +19,7 @@ namespace {
 // irradiance the light gives it, cosine included.
 Scene floorLitBy(const Light& light) {
     Scene s;
-    test::addMaterial(s, {.name = "white", .color = {1, 1, 1}, .ambient = 0, .diffuse = 1});
+    test::addMaterial(s, {.name = "white", .color = {1, 1, 1}, .phong = {.ambient = 0, .diffuse = 1}});
     test::addQuad(s, {-100, 0, -100}, {-100, 0, 100}, {100, 0, 100}, {100, 0, -100}, 0);
     s.lights.push_back(light);
     s.flatten();
@@ -166,7 +166,7 @@ TEST(Lights, IncidenceOfAThesisPointLightIsTheNormalizedDirection) {
 TEST(Lights, AmbientSumsOnlyLightsWithoutFalloff) {
     Light below{{0, -5, 0}, {0.5f, 0.5f, 0.5f}, 0};  // under the floor: ambient only
     Scene s = floorLitBy(below);
-    s.materials[0].ambient = 0.5f;
+    s.materials[0].phong.ambient = 0.5f;
     EXPECT_NEAR(floorAt(s, 0, 0), 0.25f, 1e-6);
     s.lights[0].falloff = Light::Falloff::InverseSquare;
     EXPECT_EQ(floorAt(s, 0, 0), 0.0f);

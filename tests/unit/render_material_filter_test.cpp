@@ -27,11 +27,11 @@ Scene sheetBeforeBackdrop(bool doubleSided, const Vec3& eye) {
     s.camera.origin = eye;
     s.camera.destination = {0, 0, eye.z > 0 ? Real(-1) : Real(1)};
     s.camera.fovDegrees = 30;
-    Material sheet{.name = "sheet", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = kSheetGreen};
+    Material sheet{.name = "sheet", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = kSheetGreen};
     sheet.doubleSided = doubleSided;
     test::addQuad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, test::addMaterial(s, sheet));
     const auto backdrop = test::addMaterial(
-        s, {.name = "backdrop", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = kBackdropRed});
+        s, {.name = "backdrop", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = kBackdropRed});
     test::addQuad(s, {-9, -9, 3}, {-9, 9, 3}, {9, 9, 3}, {9, -9, 3}, backdrop);
     s.flatten();
     return s;
@@ -69,11 +69,11 @@ Scene sheetBetweenLightAndFloor(bool doubleSided, bool frontToLight, const Light
     s.camera.destination = {0, 0, 0};
     s.camera.fovDegrees = 30;
     Material floor = test::pbr({1, 1, 1}, 0, 1);
-    floor.ambient = 0;
-    floor.diffuse = 1;
+    floor.phong.ambient = 0;
+    floor.phong.diffuse = 1;
     test::addQuad(s, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, test::addMaterial(s, floor));
     Material sheet = test::pbr({0, 0, 0}, 0, 1);
-    sheet.ambient = 0;
+    sheet.phong.ambient = 0;
     sheet.doubleSided = doubleSided;
     const auto sheetId = test::addMaterial(s, sheet);
     if (frontToLight)  // counter-clockwise seen from above

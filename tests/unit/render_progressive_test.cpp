@@ -233,7 +233,8 @@ TEST(RenderVariance, FallsAsOneOverTheSamples) {
 // lights each hit sends shadow rays to, the pixels and the samples.
 TEST(RenderEstimate, GrowsWithLightsPixelsAndSamples) {
     const auto lights = [](int n) {
-        Scene s = test::sphereSeenFromMinusZ(Material{.name = "white", .color = {1, 1, 1}, .diffuse = 1}, 14);
+        Scene s =
+            test::sphereSeenFromMinusZ(Material{.name = "white", .color = {1, 1, 1}, .phong = {.diffuse = 1}}, 14);
         for (int i = 0; i < n; ++i) s.lights.push_back({{0, 0, -5}, {0.1f, 0.1f, 0.1f}, 0});  // seen by every hit
         s.flatten();
         return s;

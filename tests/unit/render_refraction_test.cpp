@@ -16,10 +16,12 @@ constexpr Real kTolerance = sizeof(Real) == sizeof(float) ? Real(1e-5) : Real(1e
 
 // A material that shows only what its rays bring back: no local shading of its own.
 Material glass(float ior, Color color = {1, 1, 1}) {
-    return {.name = "glass", .ambient = 0, .diffuse = 0, .transmission = {.weight = 1, .color = color, .ior = ior}};
+    return {.name = "glass",
+            .phong = {.ambient = 0, .diffuse = 0},
+            .transmission = {.weight = 1, .color = color, .ior = ior}};
 }
 
-Material lamp(Color emission) { return {.name = "lamp", .ambient = 0, .diffuse = 0, .emission = emission}; }
+Material lamp(Color emission) { return {.name = "lamp", .phong = {.ambient = 0, .diffuse = 0}, .emission = emission}; }
 
 // A quad wound so that its normal (the triangles' winding) is `outward`.
 void addFacing(Scene& s, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& outward,
@@ -191,7 +193,7 @@ TEST(Refraction, APrismReflectsTotallyBeyondTheCriticalAngle) {
 TEST(Refraction, ShadowsThroughGlassAreTinted) {
     const auto floorSeen = [](std::optional<Material> pane) {
         Scene s;
-        const auto floor = test::addMaterial(s, {.name = "floor", .ambient = 0, .diffuse = 1});
+        const auto floor = test::addMaterial(s, {.name = "floor", .phong = {.ambient = 0, .diffuse = 1}});
         test::addQuad(s, {-9, 0, -9}, {-9, 0, 9}, {9, 0, 9}, {9, 0, -9}, floor);
         if (pane) test::addQuad(s, {-1, 5, -1}, {-1, 5, 1}, {1, 5, 1}, {1, 5, -1}, test::addMaterial(s, *pane));
         s.lights.push_back({{0, 10, 0}, {1, 1, 1}});
@@ -243,7 +245,7 @@ double contrastThroughGlass(float spread) {
     Material wall = lamp({1, 1, 1});
     wall.emissionTexture = 0;
     Material ball = glass(1.5f);
-    ball.spread = spread;
+    ball.phong.spread = spread;
     s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, test::addMaterial(s, ball));
     test::addQuad(s, {-20, -20, 3}, {20, -20, 3}, {20, 20, 3}, {-20, 20, 3}, test::addMaterial(s, wall));
     s.flatten();

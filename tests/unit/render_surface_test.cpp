@@ -119,7 +119,8 @@ Model sphereMesh(int rings, int segments) {
 TEST(Surface, SmoothSphereMeshShadesLikeTheAnalyticSphere) {
     // Issue 12: a 20,000-triangle sphere with vertex normals within 2/255 of the sphere, with
     // shadows on and the light from the side, so that the terminator crosses the picture.
-    const Material white{.name = "white", .color = {1, 1, 1}, .ambient = 0.05f, .diffuse = 0.9f, .specular = 0.3f};
+    const Material white{
+        .name = "white", .color = {1, 1, 1}, .phong = {.ambient = 0.05f, .diffuse = 0.9f, .specular = 0.3f}};
     Scene analytic = test::sphereSeenFromMinusZ(white, 16);
     Scene mesh = analytic;
     mesh.looseObjects = Primitives();

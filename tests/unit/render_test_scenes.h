@@ -85,27 +85,19 @@ inline Scene floorAndLights() {
     s.camera.origin = {0, 2.5, -7};
     s.camera.destination = {0, 0.8, 0};
     s.camera.fovDegrees = 55;
-    const auto floor = addMaterial(
-        s, {.name = "floor", .color = {0.8f, 0.8f, 0.75f}, .ambient = 0.1f, .diffuse = 0.8f, .reflection = 0.15f});
+    const auto floor = addMaterial(s, {.name = "floor",
+                                       .color = {0.8f, 0.8f, 0.75f},
+                                       .phong = {.ambient = 0.1f, .diffuse = 0.8f, .reflection = 0.15f}});
     addMaterial(s, {.name = "red",
                     .color = {0.9f, 0.15f, 0.1f},
-                    .ambient = 0.1f,
-                    .diffuse = 0.7f,
-                    .specular = 0.5f,
-                    .shininess = 40});
-    addMaterial(s, {.name = "mirror",
-                    .color = {1, 1, 1},
-                    .ambient = 0.02f,
-                    .diffuse = 0.1f,
-                    .specular = 0.6f,
-                    .shininess = 80,
-                    .reflection = 0.85f});
+                    .phong = {.ambient = 0.1f, .diffuse = 0.7f, .specular = 0.5f, .shininess = 40}});
+    addMaterial(s,
+                {.name = "mirror",
+                 .color = {1, 1, 1},
+                 .phong = {.ambient = 0.02f, .diffuse = 0.1f, .specular = 0.6f, .shininess = 80, .reflection = 0.85f}});
     addMaterial(s, {.name = "glossy",
                     .color = {0.3f, 0.5f, 0.9f},
-                    .ambient = 0.1f,
-                    .diffuse = 0.5f,
-                    .reflection = 0.5f,
-                    .spread = 0.15f});
+                    .phong = {.ambient = 0.1f, .diffuse = 0.5f, .reflection = 0.5f, .spread = 0.15f}});
     addQuad(s, {-6, 0, -6}, {-6, 0, 6}, {6, 0, 6}, {6, 0, -6}, floor);
     s.lights.push_back({{-4, 6, -4}, {0.7f, 0.7f, 0.65f}, 0.8});
     s.lights.push_back({{5, 4, -2}, {0.3f, 0.3f, 0.35f}, 0.4});

@@ -59,9 +59,10 @@ TEST(Tracer, AnEmitterIsSeenInAMirrorWithoutLights) {
     Scene s;
     s.camera.origin = {0, 0, -2};
     s.camera.destination = {0, 0, 0};
-    const auto mirror = test::addMaterial(s, {.name = "mirror", .ambient = 0, .diffuse = 0, .reflection = 1});
+    const auto mirror =
+        test::addMaterial(s, {.name = "mirror", .phong = {.ambient = 0, .diffuse = 0, .reflection = 1}});
     const auto lamp = test::addMaterial(
-        s, {.name = "lamp", .color = {0, 0, 0}, .ambient = 0, .diffuse = 0, .emission = {1, 0.5f, 0.25f}});
+        s, {.name = "lamp", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {1, 0.5f, 0.25f}});
     test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, mirror);
     test::addQuad(s, {-9, -9, -5}, {-9, 9, -5}, {9, 9, -5}, {9, -9, -5}, lamp);
     s.flatten();
@@ -114,7 +115,7 @@ TEST(Tracer, AMirrorRayThatLeavesTheSceneReadsNoRoughnessTexture) {
     s.camera.fovDegrees = 60;
     s.textures.push_back({.name = "colour", .path = "colour.png"});
     s.textures.push_back({.name = "roughness", .path = "roughness.png"});
-    Material m{.name = "metal", .reflection = 0.5f, .colorTexture = 0};
+    Material m{.name = "metal", .phong = {.reflection = 0.5f}, .colorTexture = 0};
     m.metallicRoughness = MetallicRoughness{.metallic = 1, .roughness = 1};
     m.metallicRoughnessTexture = 1;
     const auto metal = test::addMaterial(s, m);

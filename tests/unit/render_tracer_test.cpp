@@ -16,7 +16,7 @@ namespace {
 // One white diffuse sphere at the origin seen from -z, one light at the camera.
 Scene litSphere() {
     return test::litSphereSeenFromMinusZ(
-        {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .ambient = 0.2f, .diffuse = 0.6f}, 30,
+        {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .phong = {.ambient = 0.2f, .diffuse = 0.6f}}, 30,
         {{{0, 0, -10}, {0.5f, 0.5f, 0.5f}, 0}, {{0, 0, 10}, {0.25f, 0.25f, 0.25f}, 0}});  // behind: ambient only
 }
 
@@ -44,7 +44,7 @@ TEST(Tracer, CentreOfALitSphereIsAmbientPlusLambert) {
     const Color got = tracer.pixel(31, 31, c);
     const Material& m = s.materials[0];
     const float cosine = float(dot(normalize(Vec3{0, 0, -10} - Vec3{0, 0, -1}), Vec3{0, 0, -1}));
-    const Color want = m.color * (0.75f * m.ambient) + m.color * (0.5f * m.diffuse * cosine);
+    const Color want = m.color * (0.75f * m.phong.ambient) + m.color * (0.5f * m.phong.diffuse * cosine);
     EXPECT_NEAR(got.r, want.r, 2e-3);
     EXPECT_NEAR(got.g, want.g, 2e-3);
     EXPECT_NEAR(got.b, want.b, 2e-3);
@@ -53,7 +53,7 @@ TEST(Tracer, CentreOfALitSphereIsAmbientPlusLambert) {
 
 TEST(Tracer, ShadowsDarkenTheFloorUnderASphere) {
     Scene s;
-    test::addMaterial(s, {.name = "grey", .color = {1, 1, 1}, .ambient = 0.1f, .diffuse = 0.9f});
+    test::addMaterial(s, {.name = "grey", .color = {1, 1, 1}, .phong = {.ambient = 0.1f, .diffuse = 0.9f}});
     test::addQuad(s, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);
     s.looseObjects.add<Sphere>({{0, 5, 0}, 1}, 0);
     s.lights.push_back({{0, 8, 0}, {1, 1, 1}, 0});
@@ -80,7 +80,7 @@ TEST(Tracer, SoftShadowsGiveAPenumbra) {
     // A sphere of radius 1 at height 5 under a light of radius 1 at height 8: the floor point
     // at x = 8/3 sees the light's centre just past the sphere's edge, so about half the light.
     Scene s;
-    test::addMaterial(s, {.name = "grey", .color = {1, 1, 1}, .ambient = 0, .diffuse = 1});
+    test::addMaterial(s, {.name = "grey", .color = {1, 1, 1}, .phong = {.ambient = 0, .diffuse = 1}});
     test::addQuad(s, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);
     s.looseObjects.add<Sphere>({{0, 5, 0}, 1}, 0);
     s.lights.push_back({{0, 8, 0}, {1, 1, 1}, 1});
@@ -108,7 +108,7 @@ TEST(Tracer, GlossyReflectionsSpreadAroundTheMirrorDirection) {
     // rays; with spread 0 every material is a plain mirror with one ray per bounce.
     const Scene s = test::spheresOnFloor();
     Scene sharpScene = s;
-    for (Material& m : sharpScene.materials) m.spread = 0;
+    for (Material& m : sharpScene.materials) m.phong.spread = 0;
     const NaiveAccelerator accel(s.primitives);  // the same geometry serves both
     RenderSettings settings = test::picture(64, 48);
     settings.reflectionDepth = 2;
@@ -132,7 +132,7 @@ TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
     s.camera.origin = {0, 0, 0};
     s.camera.destination = {0, 0, 1};
     s.camera.fovDegrees = 10;
-    test::addMaterial(s, {.name = "mirror", .reflection = 0.5f});
+    test::addMaterial(s, {.name = "mirror", .phong = {.reflection = 0.5f}});
     test::addQuad(s, {-50, -50, 5}, {50, -50, 5}, {50, 50, 5}, {-50, 50, 5}, 0);
     test::addQuad(s, {-50, -50, -5}, {-50, 50, -5}, {50, 50, -5}, {50, -50, -5}, 0);
     s.flatten();
@@ -160,7 +160,7 @@ TEST(Tracer, EpsilonScalesWithTheScene) {
 }
 
 TEST(Phong, HighlightPeaksAtTheMirrorDirection) {
-    const Material m{.name = "shiny", .color = {1, 1, 1}, .diffuse = 0, .specular = 1, .shininess = 10};
+    const Material m{.name = "shiny", .color = {1, 1, 1}, .phong = {.diffuse = 0, .specular = 1, .shininess = 10}};
     const Vec3 n{0, 1, 0};
     const Vec3 toLight = normalize(Vec3{1, 1, 0});
     const Color peak = phongLight(m, m.color, n, toLight, normalize(Vec3{-1, 1, 0}), {1, 1, 1});

@@ -14,10 +14,10 @@ TEST(MetallicRoughness, RoughDielectricIsDiffuseWithAFaintHighlight) {
     in.factors.roughness = 1;
     const Material m = phongFromMetallicRoughness(in);
     EXPECT_EQ(m.color, Color(0.8f, 0.2f, 0.1f));
-    EXPECT_FLOAT_EQ(m.diffuse, 0.9f);
-    EXPECT_NEAR(m.specular, 0.04f, 1e-6);  // ((1.5 - 1) / (1.5 + 1))^2
-    EXPECT_FLOAT_EQ(m.reflection, 0);      // no sharp mirror image
-    EXPECT_FLOAT_EQ(m.shininess, 1);       // the broadest lobe
+    EXPECT_FLOAT_EQ(m.phong.diffuse, 0.9f);
+    EXPECT_NEAR(m.phong.specular, 0.04f, 1e-6);  // ((1.5 - 1) / (1.5 + 1))^2
+    EXPECT_FLOAT_EQ(m.phong.reflection, 0);      // no sharp mirror image
+    EXPECT_FLOAT_EQ(m.phong.shininess, 1);       // the broadest lobe
 }
 
 TEST(MetallicRoughness, PolishedMetalIsAMirrorOfItsColour) {
@@ -26,11 +26,11 @@ TEST(MetallicRoughness, PolishedMetalIsAMirrorOfItsColour) {
     in.factors.metallic = 1;
     in.factors.roughness = 0;
     const Material m = phongFromMetallicRoughness(in);
-    EXPECT_FLOAT_EQ(m.diffuse, 0);
-    EXPECT_NEAR(m.reflection, 1, 1e-6);
-    EXPECT_NEAR(m.specular, 1, 1e-6);
-    EXPECT_FLOAT_EQ(m.shininess, 10000);
-    EXPECT_LT(m.spread, 0.01f);
+    EXPECT_FLOAT_EQ(m.phong.diffuse, 0);
+    EXPECT_NEAR(m.phong.reflection, 1, 1e-6);
+    EXPECT_NEAR(m.phong.specular, 1, 1e-6);
+    EXPECT_FLOAT_EQ(m.phong.shininess, 10000);
+    EXPECT_LT(m.phong.spread, 0.01f);
 }
 
 // glTF's default metal (metallic 1, roughness 1, as files with only a baseColorFactor have it): its
@@ -41,15 +41,15 @@ TEST(MetallicRoughness, RoughMetalIsDiffuseInItsColour) {
     in.factors.metallic = 1;
     in.factors.roughness = 1;
     const Material m = phongFromMetallicRoughness(in);
-    EXPECT_FLOAT_EQ(m.diffuse, 1);
-    EXPECT_NEAR(m.specular, 0, 1e-6);
-    EXPECT_FLOAT_EQ(m.reflection, 0);
+    EXPECT_FLOAT_EQ(m.phong.diffuse, 1);
+    EXPECT_NEAR(m.phong.specular, 0, 1e-6);
+    EXPECT_FLOAT_EQ(m.phong.reflection, 0);
     in.factors.roughness = 0.5f;  // half way: a quarter of the metal's reflectance is diffuse
     const Material satin = phongFromMetallicRoughness(in);
-    EXPECT_FLOAT_EQ(satin.diffuse, 0.25f);
-    EXPECT_NEAR(satin.specular, 0.75f * luminance(in.baseColor), 1e-6);
+    EXPECT_FLOAT_EQ(satin.phong.diffuse, 0.25f);
+    EXPECT_NEAR(satin.phong.specular, 0.75f * luminance(in.baseColor), 1e-6);
     in.factors.metallic = 0.5f;  // and half a metal: the dielectric's diffuse beside it
-    EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).diffuse, 0.9f * 0.5f + 0.5f * 0.25f);
+    EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).phong.diffuse, 0.9f * 0.5f + 0.5f * 0.25f);
 }
 
 // The path tracer renders the factors themselves (docs/path-tracing.md), clamped as the mapping clamps them.
@@ -72,10 +72,10 @@ TEST(MetallicRoughness, RougherMeansBroaderAndDimmerReflection) {
     for (float r : {0.1f, 0.3f, 0.5f, 0.8f}) {
         in.factors.roughness = r;
         const Material m = phongFromMetallicRoughness(in);
-        EXPECT_LT(m.shininess, lastShininess);
-        EXPECT_LT(m.reflection, lastReflection);
-        EXPECT_GT(m.spread, lastSpread);
-        lastShininess = m.shininess, lastReflection = m.reflection, lastSpread = m.spread;
+        EXPECT_LT(m.phong.shininess, lastShininess);
+        EXPECT_LT(m.phong.reflection, lastReflection);
+        EXPECT_GT(m.phong.spread, lastSpread);
+        lastShininess = m.phong.shininess, lastReflection = m.phong.reflection, lastSpread = m.phong.spread;
     }
 }
 
@@ -84,12 +84,12 @@ TEST(MetallicRoughness, IorAndSpecularExtensionsSetTheDielectricReflectance) {
     in.factors.metallic = 0;
     in.factors.roughness = 0.5f;
     in.ior = 1;  // index matched: no reflection at all
-    EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).specular, 0);
+    EXPECT_FLOAT_EQ(phongFromMetallicRoughness(in).phong.specular, 0);
     in.ior = 2;
     const float f0 = (1.0f / 3) * (1.0f / 3);
-    EXPECT_NEAR(phongFromMetallicRoughness(in).specular, f0, 1e-6);
+    EXPECT_NEAR(phongFromMetallicRoughness(in).phong.specular, f0, 1e-6);
     in.factors.specular = 0.5f;
-    EXPECT_NEAR(phongFromMetallicRoughness(in).specular, f0 / 2, 1e-6);
+    EXPECT_NEAR(phongFromMetallicRoughness(in).phong.specular, f0 / 2, 1e-6);
 }
 
 // Transmission is the dielectric's: a metal lets nothing through.
@@ -99,7 +99,7 @@ TEST(MetallicRoughness, OnlyDielectricsTransmit) {
     const Material half =
         phongFromMetallicRoughness({.factors = {.metallic = 0.5f, .roughness = 0}, .transmission = 1});
     EXPECT_FLOAT_EQ(half.transmission.weight, 0.5f);
-    EXPECT_FLOAT_EQ(half.diffuse, 0.9f * 0.5f * 0.5f);
+    EXPECT_FLOAT_EQ(half.phong.diffuse, 0.9f * 0.5f * 0.5f);
 }
 
 TEST(MetallicRoughness, OutOfRangeInputsAreClamped) {
@@ -109,8 +109,8 @@ TEST(MetallicRoughness, OutOfRangeInputsAreClamped) {
     in.factors.roughness = -1;
     const Material m = phongFromMetallicRoughness(in);
     EXPECT_EQ(m.color.r, 0);
-    EXPECT_FLOAT_EQ(m.diffuse, 0);
-    EXPECT_LE(m.reflection, 1);
+    EXPECT_FLOAT_EQ(m.phong.diffuse, 0);
+    EXPECT_LE(m.phong.reflection, 1);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ Scene normalMappedTriangle(const std::vector<float>& tangent, const Transform& x
     Scene s;
     s.textures.push_back({.name = "normals"});
     Material m{.name = "bumpy"};
-    m.normalTexture = 0;
+    m.normalMap.texture = 0;
     s.materials.push_back(m);
     Model tri;
     tri.triangleVertices = {0, 0, 0, 1, 0, 0, 0, 1, 0};

@@ -95,11 +95,11 @@ TEST(XmlLoader, ThesisExampleLoadsAsWritten) {
     const Material& blue = scene.materials[0];
     EXPECT_EQ(blue.name, "blue");
     EXPECT_EQ(blue.color, Color(0.7f, 0.7f, 1.0f));
-    EXPECT_EQ(blue.diffuse, 0.4f);
-    EXPECT_EQ(blue.reflection, 0.4f);
-    EXPECT_EQ(blue.specular, Material{}.specular);  // not given: the default
+    EXPECT_EQ(blue.phong.diffuse, 0.4f);
+    EXPECT_EQ(blue.phong.reflection, 0.4f);
+    EXPECT_EQ(blue.phong.specular, Material{}.phong.specular);  // not given: the default
     EXPECT_EQ(scene.materials[1].name, "red_steel");
-    EXPECT_EQ(scene.materials[1].specular, 0.3f);
+    EXPECT_EQ(scene.materials[1].phong.specular, 0.3f);
 
     ASSERT_EQ(scene.models.size(), 1u);
     EXPECT_EQ(scene.models[0].name, "spaceship");
@@ -217,7 +217,7 @@ TEST(XmlLoader, ObjectsWithoutMaterialUseTheDefault) {
     const Scene added = load(R"(<objects><sphere r="1"/><sphere r="2"/></objects>)");
     ASSERT_EQ(added.materials.size(), 1u);  // added once, with the Material defaults
     EXPECT_EQ(added.materials[0].name, "default");
-    EXPECT_EQ(added.materials[0].diffuse, Material{}.diffuse);
+    EXPECT_EQ(added.materials[0].phong.diffuse, Material{}.phong.diffuse);
     const Scene own = load(R"(<materials><material name="x"/><material name="default" r="0.5"/></materials>
         <objects><sphere r="1"/></objects>)");
     ASSERT_EQ(own.materials.size(), 2u);  // the scene's own "default" is used
@@ -230,16 +230,16 @@ TEST(XmlLoader, EveryMaterialAttribute) {
         diffuse="0.3" specular="0.4" shininess="50" reflection="0.6" spread="0.05"/></materials>)");
     const Material& m = scene.materials.at(0);
     EXPECT_EQ(m.color, Color(0.25f, 0.5f, 2));
-    EXPECT_EQ(m.ambient, 0.2f);
-    EXPECT_EQ(m.diffuse, 0.3f);
-    EXPECT_EQ(m.specular, 0.4f);
-    EXPECT_EQ(m.shininess, 50);
-    EXPECT_EQ(m.reflection, 0.6f);
-    EXPECT_EQ(m.spread, 0.05f);
+    EXPECT_EQ(m.phong.ambient, 0.2f);
+    EXPECT_EQ(m.phong.diffuse, 0.3f);
+    EXPECT_EQ(m.phong.specular, 0.4f);
+    EXPECT_EQ(m.phong.shininess, 50);
+    EXPECT_EQ(m.phong.reflection, 0.6f);
+    EXPECT_EQ(m.phong.spread, 0.05f);
     const Material defaults = load(R"(<materials><material name="d"/></materials>)").materials.at(0);
     EXPECT_EQ(defaults.color, Color(1, 1, 1));
-    EXPECT_EQ(defaults.ambient, Material{}.ambient);
-    EXPECT_EQ(defaults.shininess, Material{}.shininess);
+    EXPECT_EQ(defaults.phong.ambient, Material{}.phong.ambient);
+    EXPECT_EQ(defaults.phong.shininess, Material{}.phong.shininess);
 }
 
 TEST(XmlLoader, CameraFocalDistanceZoomAndUp) {

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <iterator>
 #include <sstream>
+#include <tuple>
 
 #include "io/xml_loader.h"
 #include "os/input_file.h"
@@ -66,6 +67,12 @@ void expectSamePrimitives(const Primitives& a, const Primitives& b) {
     for (std::uint32_t id = 0; id < a.size(); ++id) EXPECT_EQ(a.material(id), b.material(id)) << id;
 }
 
+// A material's Phong terms, compared at once (a failure prints all six).
+auto phongTermsOf(const Material& m) {
+    const PhongTerms& p = m.phong;
+    return std::tuple{p.ambient, p.diffuse, p.specular, p.shininess, p.reflection, p.spread};
+}
+
 void expectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.background, b.background);
     EXPECT_EQ(a.camera.origin, b.camera.origin);
@@ -79,12 +86,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
         const Material &x = a.materials[i], &y = b.materials[i];
         EXPECT_EQ(x.name, y.name);
         EXPECT_EQ(x.color, y.color);
-        EXPECT_EQ(x.ambient, y.ambient);
-        EXPECT_EQ(x.diffuse, y.diffuse);
-        EXPECT_EQ(x.specular, y.specular);
-        EXPECT_EQ(x.shininess, y.shininess);
-        EXPECT_EQ(x.reflection, y.reflection);
-        EXPECT_EQ(x.spread, y.spread);
+        EXPECT_EQ(phongTermsOf(x), phongTermsOf(y));
     }
     ASSERT_EQ(a.models.size(), b.models.size());
     for (std::size_t i = 0; i < a.models.size(); ++i) {
@@ -262,8 +264,8 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     EXPECT_EQ(lamp.alphaCutoff, std::optional<float>(0.25f));
     EXPECT_EQ(lamp.alpha, 0.75f);
     EXPECT_EQ(lamp.alphaTexture, std::optional<std::uint32_t>(0));
-    EXPECT_EQ(lamp.normalTexture, std::optional<std::uint32_t>(0));
-    EXPECT_EQ(lamp.normalScale, 0.5f);
+    EXPECT_EQ(lamp.normalMap.texture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.normalMap.scale, 0.5f);
     ASSERT_EQ(second.models.size(), 1u);
     EXPECT_EQ(second.models[0].vertexNormals, m.vertexNormals);
     EXPECT_EQ(second.models[0].vertexUvs, m.vertexUvs);
@@ -364,9 +366,9 @@ TEST(XmlWriter, ClearcoatRoundTrips) {
     EXPECT_EQ(text.find("clearcoat=\""), text.rfind("clearcoat=\"")) << "the plain material writes none";
     const Scene second = loadSceneXml(dir.path("out.xml"));
     ASSERT_EQ(second.materials.size(), 2u);
-    EXPECT_EQ(second.materials[0].clearcoat, 0.75f);
-    EXPECT_EQ(second.materials[0].clearcoatRoughness, 0.125f);
-    EXPECT_EQ(second.materials[1].clearcoat, 0.0f);
+    EXPECT_EQ(second.materials[0].clearcoat.weight, 0.75f);
+    EXPECT_EQ(second.materials[0].clearcoat.roughness, 0.125f);
+    EXPECT_EQ(second.materials[1].clearcoat.weight, 0.0f);
     const std::string error = inputErrorOf([&] {
         loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
             <materials><material name="m" clearcoat="2"/></materials></scene>)"));
@@ -402,7 +404,7 @@ TEST(XmlWriter, TransmissionRoundTripsAndOpaqueMaterialsWriteNone) {
     EXPECT_FALSE(sheet.absorbs());
     EXPECT_FALSE(back.materials[2].transmission.passesLight());
     Scene opaque;
-    opaque.materials.push_back({.name = "m", .reflection = 0.5f});
+    opaque.materials.push_back({.name = "m", .phong = {.reflection = 0.5f}});
     const std::string plain = savedToStdout(opaque);
     for (const char* attribute : {"transmission", "ior", "thin", "attenuation"})
         EXPECT_EQ(plain.find(attribute), std::string::npos) << attribute;

@@ -205,7 +205,7 @@ Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int d
     }
     // Thesis 2.1, step 6: the reflected intensity is added to the local one; Whitted's
     // transmitted ray too, Fresnel's reflected share of it going to the mirror ray.
-    float mirrorWeight = m.reflection;
+    float mirrorWeight = m.phong.reflection;
     if (m.transmission.passesLight() && depth < settings_.reflectionDepth) {
         const float weight = transmissionAt(context_, m, s);
         const RefractionSplit split =

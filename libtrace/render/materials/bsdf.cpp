@@ -10,7 +10,8 @@ namespace {
 
 // The opaque part: the metallic-roughness BRDF, under the material's clear coat if it has one.
 Bsdf opaqueBsdf(const Material& m, const Color& base, const MetallicRoughness& factors) {
-    if (m.clearcoat > 0) return Bsdf(ClearcoatBsdf(PbrBsdf(base, factors), m.clearcoat, m.clearcoatRoughness));
+    if (m.clearcoat.weight > 0)
+        return Bsdf(ClearcoatBsdf(PbrBsdf(base, factors), m.clearcoat.weight, m.clearcoat.roughness));
     return Bsdf(PbrBsdf(base, factors));
 }
 

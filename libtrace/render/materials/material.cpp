@@ -23,7 +23,7 @@ float transmissionAt(const ShadingContext& context, const Material& m, const Sur
 }
 
 float glossySpread(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
-    if (!m.metallicRoughnessTexture || !m.metallicRoughness || !context.images) return m.spread;
+    if (!m.metallicRoughnessTexture || !m.metallicRoughness || !context.images) return m.phong.spread;
     const float roughness = m.metallicRoughness->roughness * textureData(context, *m.metallicRoughnessTexture, s).g;
     return roughness * roughness;
 }

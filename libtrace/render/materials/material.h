@@ -20,7 +20,7 @@ Color surfaceEmission(const ShadingContext& context, const Material& m, const Su
 // channel of its transmission texture (read as data), if it has one.
 float transmissionAt(const ShadingContext& context, const Material& m, const SurfacePoint& s);
 // The sigma of the material's glossy lobe at the surface point, for its reflection and, on glass,
-// its transmission: Material::spread; with a metallic-roughness texture, (roughness times the
+// its transmission: PhongTerms::spread; with a metallic-roughness texture, (roughness times the
 // texture's green)^2, the GGX alpha that spread is made from (scene/metallic_roughness.h).
 float glossySpread(const ShadingContext& context, const Material& m, const SurfacePoint& s);
 // The metallic-roughness factors at s (metallicRoughnessOf, scene/metallic_roughness.h), scaled

@@ -22,11 +22,11 @@ inline Color phongLight(const Material& m, const Color& surfaceColor, const Vec3
     assert(isUnitLength(n) && isUnitLength(toLight) && isUnitLength(toViewer));  // else (R.V)^n is unbounded
     const Real cosine = dot(n, toLight);
     if (cosine <= 0) return {};
-    Color c = lightColor * surfaceColor * (m.diffuse * float(cosine));
-    if (m.specular > 0) {
+    Color c = lightColor * surfaceColor * (m.phong.diffuse * float(cosine));
+    if (m.phong.specular > 0) {
         const Vec3 mirrored = n * (2 * cosine) - toLight;
         const Real rv = dot(mirrored, toViewer);
-        if (rv > 0) c += lightColor * (m.specular * float(std::pow(rv, Real(m.shininess))));
+        if (rv > 0) c += lightColor * (m.phong.specular * float(std::pow(rv, Real(m.phong.shininess))));
     }
     return c;
 }
@@ -34,7 +34,7 @@ inline Color phongLight(const Material& m, const Color& surfaceColor, const Vec3
 // The ambient term k_a i_a. The thesis takes i_a as the sum of the lights' intensities,
 // precomputed once per scene; it is tinted by the surface colour like the diffuse part.
 inline Color phongAmbient(const Color& surfaceColor, const Material& m, const Color& ambientLight) {
-    return ambientLight * surfaceColor * m.ambient;
+    return ambientLight * surfaceColor * m.phong.ambient;
 }
 
 // The mirror direction of a unit direction d about the unit normal n (thesis 2.1.3, b = a - 2(a.n)n).
