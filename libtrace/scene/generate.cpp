@@ -64,7 +64,7 @@ Scene generateScene(const SceneRecipe& recipe) {
     scene.lights.push_back({{3, 4, 5}, {0.8f, 0.8f, 0.8f}, Real(0.2)});
     scene.lights.push_back({{-4, 3, 2}, {0.4f, 0.4f, 0.5f}, Real(0.2)});
     scene.materials.push_back({"triangles", {0.8f, 0.8f, 0.75f}});
-    scene.materials.push_back({"spheres", {0.8f, 0.3f, 0.25f}, 0.1f, 0.7f, 0.3f, 40.0f, 0.2f});
+    scene.materials.push_back({"spheres", {0.8f, 0.3f, 0.25f}, {0.1f, 0.7f, 0.3f, 40.0f, 0.2f}});
 
     const std::size_t total =
         std::max<std::size_t>(recipe.triangles + recipe.spheres + recipe.cylinders + recipe.cones + recipe.disks, 1);

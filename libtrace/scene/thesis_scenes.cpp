@@ -124,8 +124,8 @@ Scene sphereflakeScene(int level) {
     scene.camera.up = {0, 0, 1};
     scene.camera.fovDegrees = kSpdFovAt4To3;
     addSpdLights(scene, {Vec3{4, 3, 2}, Vec3{1, -4, 4}, Vec3{-3, 1, 5}});
-    const auto floor = addMaterial(scene, {"floor", {1.0f, 0.75f, 0.33f}, 0.2f, 0.8f});
-    const auto mirror = addMaterial(scene, {"flake", {1.0f, 0.9f, 0.7f}, 0.0f, 0.5f, 0.5f, 37.0f, 0.5f});
+    const auto floor = addMaterial(scene, {"floor", {1.0f, 0.75f, 0.33f}, {0.2f, 0.8f}});
+    const auto mirror = addMaterial(scene, {"flake", {1.0f, 0.9f, 0.7f}, {0.0f, 0.5f, 0.5f, 37.0f, 0.5f}});
     addFloor(scene, 12, Real(-0.5), floor);
     Model flake = namedModel("sphereflake");
     growFlake(flake, flakeDirections(), {0, 0, 0}, Real(0.5), {0, 0, 1}, level);
