@@ -36,8 +36,7 @@ ShadingFrame shadingFrame(const SurfacePoint& s, const Vec3& toViewer) {
 }  // namespace
 
 PathTracer::PathTracer(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings)
-    : scene_(context.scene),
-      context_(context),
+    : context_(context),
       accel_(accel),
       settings_(settings),
       camera_(context.scene.camera, settings.width, settings.height),
@@ -92,8 +91,8 @@ Color PathTracer::radiance(const Ray& cameraRay, SobolSampler& sampler, RenderCo
         }
         seen = seen || bounce == 0;
         const SurfacePoint s = shadedSurfaceAt(context_, ray, hit);
-        const Material& m = scene_.materialOf(hit.prim);
-        if (aovs && bounce == 0) aovs->addHit(scene_, s, hit, surfaceColor(context_, m, s));
+        const Material& m = context_.scene.materialOf(hit.prim);
+        if (aovs && bounce == 0) aovs->addHit(context_.scene, s, hit, surfaceColor(context_, m, s));
         // Beer-Lambert along the stretch just travelled inside (render/refraction.h)
         if (!s.frontFace && m.transmission.absorbs()) throughput = throughput * absorbed(m.transmission, hit.t);
         if (const Color emitted = emission(m, s, ray, hit); emitted != Color{}) {
@@ -167,19 +166,20 @@ Color PathTracer::directLight(const LightQuery& at, const Bsdf& bsdf, const Shad
 // panel under a ceiling would otherwise also fill the gap above it, which paths find rarely
 // and then bring back as fireflies. (The Whitted tracer shows emission from both sides.)
 Color PathTracer::emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const {
-    if (m.emission == Color{} || dot(scene_.primitives.normal(hit.prim, s.point), ray.direction) >= 0) return {};
+    if (m.emission == Color{} || dot(context_.scene.primitives.normal(hit.prim, s.point), ray.direction) >= 0)
+        return {};
     return surfaceEmission(context_, m, s);
 }
 
 Color PathTracer::lightRadiance(const LightSample& light, const Vec3& from) const {
     switch (light.source) {
         case LightSample::Source::Point:  // with the light's falloff and cone, as the Whitted tracer lights
-            return lightIncidence(scene_.lights[light.index], from).color;
+            return lightIncidence(context_.scene.lights[light.index], from).color;
         case LightSample::Source::Triangle: {
             const Ray toLight{from, light.direction};
             const Hit there{light.distance, light.index, light.b1, light.b2};
-            return surfaceEmission(context_, scene_.materialOf(light.index),
-                                   surfaceAt(scene_.primitives, toLight, there));
+            return surfaceEmission(context_, context_.scene.materialOf(light.index),
+                                   surfaceAt(context_.scene.primitives, toLight, there));
         }
         case LightSample::Source::Environment:
             return lights_.environment().radiance(light.direction);

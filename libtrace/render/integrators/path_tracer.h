@@ -59,7 +59,6 @@ private:
     Color lightRadiance(const LightSample& light, const Vec3& from) const;
     Color clampIndirect(const Color& c, int bounce) const;
 
-    const Scene& scene_;
     ShadingContext context_;  // the scene and its image lookups
     const Accelerator& accel_;
     RenderSettings settings_;

@@ -38,8 +38,7 @@ Color passed(bool blocked) { return blocked ? Color{} : Color{1, 1, 1}; }
 }  // namespace
 
 Tracer::Tracer(const ShadingContext& context, const Accelerator& accel, const RenderSettings& settings)
-    : scene_(context.scene),
-      context_(context),
+    : context_(context),
       accel_(accel),
       settings_(settings),
       camera_(context.scene.camera, settings.width, settings.height),
@@ -49,10 +48,10 @@ Tracer::Tracer(const ShadingContext& context, const Accelerator& accel, const Re
       coneSpread_(camera_.pixelAngle() * differentialScale_) {
     // Thesis 2.1.3: i_a is the sum of the lights' intensities. The colour of a light with the
     // inverse-square falloff is what it gives at distance 1, no irradiance: it adds nothing.
-    for (const Light& light : scene_.lights)
+    for (const Light& light : context_.scene.lights)
         if (light.falloff == Light::Falloff::None) ambientLight_ += light.color;
-    for (const Material& m : scene_.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
-    for (const Texture& t : scene_.textures)
+    for (const Material& m : context_.scene.materials) anyGlass_ = anyGlass_ || m.transmission.passesLight();
+    for (const Texture& t : context_.scene.textures)
         filtered_ = filtered_ || (context.images && t.kind == Texture::Kind::Image);
 }
 
@@ -127,9 +126,9 @@ void Tracer::pixelRun(int x0, int y, int count, RenderCounters& counters, Color*
 void Tracer::traceShadowPackets(const SurfacePoint* surfaces, const bool* found, int count, PacketShadows* shadows,
                                 RenderCounters& counters) const {
     if (!settings_.shadows || anyGlass_) return;
-    const std::size_t lights = std::min(scene_.lights.size(), kPacketLights);
+    const std::size_t lights = std::min(context_.scene.lights.size(), kPacketLights);
     for (std::size_t l = 0; l < lights; ++l) {
-        const Light& light = scene_.lights[l];
+        const Light& light = context_.scene.lights[l];
         if (sampledOverArea(light)) continue;
         std::array<Ray, kPacketSize> rays;
         std::array<Real, kPacketSize> distances;
@@ -168,7 +167,8 @@ Color Tracer::cameraSample(Real px, Real py, const Ray& ray, const Hit* hit, Sam
     // the AOVs take the point, normal and colour the shading uses
     const CameraHit seen = cameraHit(px, py, ray, *hit);
     if (aovSums)
-        aovSums->addHit(scene_, seen.surface, *hit, surfaceColor(context_, scene_.materialOf(hit->prim), seen.surface));
+        aovSums->addHit(context_.scene, seen.surface, *hit,
+                        surfaceColor(context_, context_.scene.materialOf(hit->prim), seen.surface));
     return shade(ray, *hit, seen.surface, 0, false, rng, counters, seen.cone);
 }
 
@@ -188,15 +188,15 @@ Color Tracer::shadeHit(const Ray& ray, const Hit& hit, int depth, bool inBundle,
 
 Color Tracer::shade(const Ray& ray, const Hit& hit, const SurfacePoint& s, int depth, bool inBundle, SampleRng& rng,
                     RenderCounters& counters, Real cone, const PacketShadows* known) const {
-    const Material& m = scene_.materialOf(hit.prim);
+    const Material& m = context_.scene.materialOf(hit.prim);
     const Color color = surfaceColor(context_, m, s);
     const Vec3 toViewer = -ray.direction;
 
     // Whitted's model has no light transport from surfaces: an emitter is seen (directly, in
     // mirrors), but lights nothing else.
     Color c = phongAmbient(color, m, ambientLight_) + surfaceEmission(context_, m, s);
-    for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
-        const Light& light = scene_.lights[l];
+    for (std::size_t l = 0; l < context_.scene.lights.size(); ++l) {
+        const Light& light = context_.scene.lights[l];
         const LightIncidence in = lightIncidence(light, s.point);
         if (!reaches(s, in)) continue;
         const Color seen = known && known->has(l) ? passed(known->isBlocked(l))
@@ -274,10 +274,10 @@ Color Tracer::transmittance(const ShadowRay& shadow, RenderCounters& counters) c
     for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
         Hit hit;
         if (!accel_.intersect(ray, distance, hit, counters.shadow)) return through;
-        const Transmission& t = scene_.materialOf(hit.prim).transmission;
+        const Transmission& t = context_.scene.materialOf(hit.prim).transmission;
         if (!t.passesLight()) return {};
         const Vec3 p = ray.at(hit.t);
-        const Vec3 n = scene_.primitives.normal(hit.prim, p);
+        const Vec3 n = context_.scene.primitives.normal(hit.prim, p);
         const Real cosine = dot(n, ray.direction);  // > 0: the ray leaves the volume
         through = through * shadowFilter(t, std::abs(cosine));
         if (cosine > 0 && t.absorbs()) through = through * absorbed(t, hit.t);

@@ -134,7 +134,6 @@ private:
     // refractions, else the background colour. It lights nothing here (the path tracer's does).
     Color background(const Vec3& direction) const { return environment_.radiance(direction); }
 
-    const Scene& scene_;
     ShadingContext context_;  // the scene and its image lookups
     const Accelerator& accel_;
     RenderSettings settings_;
