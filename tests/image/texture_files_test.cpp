@@ -26,15 +26,15 @@ using namespace rt;
 
 namespace {
 
-constexpr int kSize = 16;  // texels a side
+constexpr int kTexels = 16;  // texels a side
 
 // An 8-bit sRGB picture of coloured texels, written to `path`; returns its texels decoded to linear.
 std::vector<Color> writePicture(const std::string& path) {
-    OIIO::ImageBuf picture(OIIO::ImageSpec(kSize, kSize, 3, OIIO::TypeDesc::UINT8));
+    OIIO::ImageBuf picture(OIIO::ImageSpec(kTexels, kTexels, 3, OIIO::TypeDesc::UINT8));
     std::vector<Color> linear;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const float texel[3] = {float(x) / (kSize - 1), float(y) / (kSize - 1), float((x + y) % 3) / 2};
+    for (int y = 0; y < kTexels; ++y)
+        for (int x = 0; x < kTexels; ++x) {
+            const float texel[3] = {float(x) / (kTexels - 1), float(y) / (kTexels - 1), float((x + y) % 3) / 2};
             picture.setpixel(x, y, texel);
             float stored[3];
             picture.getpixel(x, y, stored);  // as 8 bits hold it
@@ -48,7 +48,7 @@ std::vector<Color> writePicture(const std::string& path) {
 }
 
 // A unit quad at z = 0 with texture coordinates (0, 0) at its top-left corner, filling a
-// kSize-pixel square picture seen head-on: each pixel centre falls on a texel centre. Only
+// kTexels-pixel square picture seen head-on: each pixel centre falls on a texel centre. Only
 // the emission shows (black, unlit material), so the picture is the texture itself.
 Scene texturedQuad(const std::string& picture) {
     Scene s;
@@ -72,16 +72,16 @@ Scene texturedQuad(const std::string& picture) {
 // The PSNR in dB of texturedQuad's picture rendered with `images` against `texels`.
 double quadPsnr(const Scene& scene, const ImageTextures& images, const std::vector<Color>& texels) {
     const NaiveAccelerator accel(scene.primitives);
-    RenderSettings settings = test::picture(kSize, kSize);
+    RenderSettings settings = test::picture(kTexels, kTexels);
     RenderStats stats;
     const Framebuffer image = render({scene, &images}, accel, settings, stats);
     double squaredError = 0;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const Color got = image.at(x, y), want = texels[std::size_t(y * kSize + x)];
+    for (int y = 0; y < kTexels; ++y)
+        for (int x = 0; x < kTexels; ++x) {
+            const Color got = image.at(x, y), want = texels[std::size_t(y * kTexels + x)];
             for (float d : {got.r - want.r, got.g - want.g, got.b - want.b}) squaredError += double(d) * d;
         }
-    return 10 * std::log10(1 / (squaredError / (3.0 * kSize * kSize)));
+    return 10 * std::log10(1 / (squaredError / (3.0 * kTexels * kTexels)));
 }
 
 }  // namespace
@@ -267,17 +267,17 @@ TEST(TextureFiles, WrapModesRepeatClampAndMirror) {
         scene.textures.push_back({.name = "t", .path = path, .wrapS = w, .wrapT = w});
     std::vector<std::string> warnings;
     const TextureFiles images(scene, warnings);
-    const float texel = 1.0f / kSize;
+    const float texel = 1.0f / kTexels;
     const auto near = [](const Color& a, const Color& b) {
         return std::abs(a.r - b.r) < 1e-3f && std::abs(a.g - b.g) < 1e-3f && std::abs(a.b - b.b) < 1e-3f;
     };
     // Half a texel past the right edge: repeat reads the first column, clamp and mirror the last.
     const float s = 1 + texel / 2, t = texel / 2;
     EXPECT_TRUE(near(images.lookup(0, {s, t}), texels[0]));
-    EXPECT_TRUE(near(images.lookup(1, {s, t}), texels[kSize - 1]));
-    EXPECT_TRUE(near(images.lookup(2, {s, t}), texels[kSize - 1]));
+    EXPECT_TRUE(near(images.lookup(1, {s, t}), texels[kTexels - 1]));
+    EXPECT_TRUE(near(images.lookup(2, {s, t}), texels[kTexels - 1]));
     // 1.5 texels past: clamp still the last column, mirror the one before it.
-    EXPECT_TRUE(near(images.lookup(2, {1 + 1.5f * texel, t}), texels[kSize - 2]));
+    EXPECT_TRUE(near(images.lookup(2, {1 + 1.5f * texel, t}), texels[kTexels - 2]));
     std::filesystem::remove(path);
 }
 
@@ -336,7 +336,7 @@ TEST(TextureFiles, APictureOfOneColourIsItsTexelEverywhereAndOpaqueHasNoAlpha) {
     const std::string dir = testing::TempDir();
     Scene scene;
     for (const float alpha : {1.0f, 0.4f}) {
-        OIIO::ImageBuf picture(OIIO::ImageSpec(kSize, kSize, 4, OIIO::TypeDesc::UINT8));
+        OIIO::ImageBuf picture(OIIO::ImageSpec(kTexels, kTexels, 4, OIIO::TypeDesc::UINT8));
         OIIO::ImageBufAlgo::fill(picture, {0.3f, 0.6f, 0.9f, alpha});
         const std::string path = dir + "/constant" + std::to_string(scene.textures.size()) + ".png";
         ASSERT_TRUE(picture.write(path));

@@ -41,12 +41,6 @@ std::string fileHex(const std::string& path, std::size_t offset, std::size_t byt
     return hex;
 }
 
-void expectNear(const Vec3& a, const Vec3& b, double tolerance) {
-    EXPECT_NEAR(a.x, b.x, tolerance) << a << " against " << b;
-    EXPECT_NEAR(a.y, b.y, tolerance) << a << " against " << b;
-    EXPECT_NEAR(a.z, b.z, tolerance) << a << " against " << b;
-}
-
 // 3D Studio's Z-up file axes in rt's Y-up world (Assimp's 3DS root turn): (x, y, z) -> (x, z, -y).
 Vec3 fromFile(float x, float y, float z) { return {x, z, -y}; }
 

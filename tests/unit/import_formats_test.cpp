@@ -50,7 +50,7 @@ void expectCornersAmong(const Scene& scene, const std::vector<Vec3>& points) {
 }
 
 // The message of the rt::InputError importing `path` throws; empty (and a failure) if it throws none.
-std::string inputErrorOf(const std::string& path) {
+std::string importErrorOf(const std::string& path) {
     try {
         importScene(path);
     } catch (const InputError& e) {
@@ -92,7 +92,7 @@ TEST(ImportFormats, AsciiPlyQuadAndTriangle) {
 TEST(ImportFormats, PlyFaceIndexOutOfRangeIsAnInputError) {
     TempDir dir;
     const std::string bad = dir.write("bad.ply", test::replaceOnce(kPlyQuadAndTriangle, "3 4 5 6", "3 4 5 7"));
-    EXPECT_NE(inputErrorOf(bad).find("out of range"), std::string::npos);  // Assimp's validation finds it
+    EXPECT_NE(importErrorOf(bad).find("out of range"), std::string::npos);  // Assimp's validation finds it
 }
 
 TEST(ImportFormats, AsciiStlTwoFacets) {
@@ -161,7 +161,7 @@ TEST(ImportFormats, TruncatedBinaryStlIsAnInputError) {
     for (const char* header : kStlHeaders) {
         SCOPED_TRACE(header);
         const std::string whole = binaryStl(header, kStlFacets);
-        EXPECT_FALSE(inputErrorOf(dir.write("cut.stl", whole.substr(0, whole.size() - 30))).empty());
+        EXPECT_FALSE(importErrorOf(dir.write("cut.stl", whole.substr(0, whole.size() - 30))).empty());
     }
 }
 

@@ -16,10 +16,9 @@
 #include "render/camera_rays.h"
 #include "render/surface.h"
 #include "scene/scene.h"
+#include "test_util.h"
 
 namespace rt::test {
-
-inline bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 inline bool identical(bool foundA, const Hit& a, bool foundB, const Hit& b) {
     return foundA == foundB &&

@@ -53,8 +53,6 @@ RenderSettings adaptive(int width, int height, int grid = 8) {
     return r;
 }
 
-bool sameBits(const Color& a, const Color& b) { return std::memcmp(&a, &b, sizeof(Color)) == 0; }
-
 // The largest difference of any channel of any pixel between two renders of the same window.
 float largestDifference(const Framebuffer& a, const Framebuffer& b) {
     float largest = 0;

@@ -192,11 +192,7 @@ TEST(RenderAovPath, PlaneAtAKnownDistance) {
     }
 }
 
-namespace {
-
-bool sameBits(const PixelAovs& a, const PixelAovs& b) { return std::memcmp(&a, &b, sizeof(PixelAovs)) == 0; }
-
-}  // namespace
+namespace {}  // namespace
 
 // Every layer has the same bits for one thread or two, in a region, and as PathTracer::pixel
 // takes the pixel's samples in one loop (the renderer takes one per pass).

@@ -23,8 +23,6 @@ RenderSettings distributed() {
     return r;
 }
 
-bool sameBits(const Color& a, const Color& b) { return std::memcmp(&a, &b, sizeof(Color)) == 0; }
-
 }  // namespace
 
 TEST(RenderDeterminism, OneAndTwoThreadsGiveTheSameBits) {

@@ -18,7 +18,7 @@ using namespace rt;
 
 namespace {
 
-bool sameBits(const Framebuffer& a, const Framebuffer& b) {
+bool sameImage(const Framebuffer& a, const Framebuffer& b) {
     return a.pixels().size() == b.pixels().size() &&
            std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Color)) == 0 &&
            a.alphas() == b.alphas();
@@ -88,7 +88,7 @@ TEST_P(RenderPackets, ThesisScenesAreTheSameBitsAndCountsAsSingleRays) {
         RenderStats single, packets;
         const Framebuffer reference = render(scene, *accel, picture(false, 1), single);
         const Framebuffer traced = render(scene, *accel, picture(true, 2), packets);
-        EXPECT_TRUE(sameBits(traced, reference));
+        EXPECT_TRUE(sameImage(traced, reference));
         expectSameCounters(packets.counters, single.counters);
     }
 }
@@ -111,7 +111,7 @@ TEST_P(RenderPackets, ShadowsOfEveryLightAreTheSameBitsAndCountsAsSingleRays) {
                 RenderStats single, packets;
                 const Framebuffer reference = render(scene, *accel, off, single);
                 const Framebuffer traced = render(scene, *accel, on, packets);
-                EXPECT_TRUE(sameBits(traced, reference));
+                EXPECT_TRUE(sameImage(traced, reference));
                 expectSameCounters(packets.counters, single.counters);
                 EXPECT_GT(single.counters.shadow.rays, 0u);
             }

@@ -24,8 +24,6 @@ RenderSettings pathPicture(int width, int height, int samples) {
     return r;
 }
 
-bool sameBits(const Color& a, const Color& b) { return std::memcmp(&a, &b, sizeof(Color)) == 0; }
-
 void expectSameBits(const Framebuffer& a, const Framebuffer& b) {
     ASSERT_EQ(a.pixels().size(), b.pixels().size());
     for (std::size_t i = 0; i < a.pixels().size(); ++i)

@@ -15,7 +15,7 @@ namespace {
 constexpr Real kTolerance = sizeof(Real) == sizeof(float) ? Real(1e-5) : Real(1e-12);
 
 // A material that shows only what its rays bring back: no local shading of its own.
-Material glass(float ior, Color color = {1, 1, 1}) {
+Material glassOfIor(float ior, Color color = {1, 1, 1}) {
     return {.name = "glass",
             .phong = {.ambient = 0, .diffuse = 0},
             .transmission = {.weight = 1, .color = color, .ior = ior}};
@@ -86,7 +86,7 @@ TEST(Refraction, FresnelAtNormalIncidenceIsF0) {
         for (const Vec3 outward : {Vec3{0, 0, -1}, Vec3{0, 0, 1}}) {  // the ray enters, or leaves
             Scene s;
             s.camera.origin = {0, 0, -2};
-            const auto g = test::addMaterial(s, glass(ior));
+            const auto g = test::addMaterial(s, glassOfIor(ior));
             const auto l = test::addMaterial(s, lamp({1, 1, 1}));
             addFacing(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, outward, g);
             test::addQuad(s, {-9, -9, -5}, {-9, 9, -5}, {9, 9, -5}, {9, -9, -5}, l);  // behind the viewer
@@ -112,7 +112,7 @@ TEST(Refraction, AGlassSphereDisplacesACheckerboardWhereSnellsLawPutsIt) {
         {.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}, .size = 0.5});
     Material wall = lamp({1, 1, 1});
     wall.emissionTexture = 0;
-    s.looseObjects.add<Sphere>({{0, 0, 0}, radius}, test::addMaterial(s, glass(float(ior))));
+    s.looseObjects.add<Sphere>({{0, 0, 0}, radius}, test::addMaterial(s, glassOfIor(float(ior))));
     test::addQuad(s, {-20, -20, wallZ}, {20, -20, wallZ}, {20, 20, wallZ}, {-20, 20, wallZ},
                   test::addMaterial(s, wall));
     s.flatten();
@@ -169,7 +169,7 @@ TEST(Refraction, AGlassSphereDisplacesACheckerboardWhereSnellsLawPutsIt) {
 TEST(Refraction, APrismReflectsTotallyBeyondTheCriticalAngle) {
     for (const float ior : {1.5f, 1.3f}) {
         Scene s;
-        const auto g = test::addMaterial(s, glass(ior));
+        const auto g = test::addMaterial(s, glassOfIor(ior));
         const auto red = test::addMaterial(s, lamp({1, 0, 0}));
         const Real y0 = -5, y1 = 5;
         addFacing(s, {-1, y0, 0}, {1, y0, 0}, {1, y1, 0}, {-1, y1, 0}, {0, 0, -1}, g);  // faces the viewer
@@ -202,11 +202,11 @@ TEST(Refraction, ShadowsThroughGlassAreTinted) {
     };
     EXPECT_EQ(floorSeen(std::nullopt), (Color{1, 1, 1}));
     const Color tint{1, 0.5f, 0.25f};
-    const Color through = floorSeen(glass(1.5f, tint));
+    const Color through = floorSeen(glassOfIor(1.5f, tint));
     EXPECT_NEAR(through.r, 0.96f, 1e-5);
     EXPECT_NEAR(through.g, 0.48f, 1e-5);
     EXPECT_NEAR(through.b, 0.24f, 1e-5);
-    Material opaque = glass(1.5f, tint);
+    Material opaque = glassOfIor(1.5f, tint);
     opaque.transmission.weight = 0;
     EXPECT_EQ(floorSeen(opaque), (Color{}));
 }
@@ -216,7 +216,7 @@ TEST(Refraction, ShadowsThroughGlassAreTinted) {
 TEST(Refraction, AVolumeAbsorbsAlongTheDistanceInside) {
     const Color behind = [] {
         Scene s;
-        Material m = glass(1.0f);  // no bending, no reflection: only the absorption
+        Material m = glassOfIor(1.0f);  // no bending, no reflection: only the absorption
         m.transmission.attenuationColor = {0.5f, 0.25f, 1};
         m.transmission.attenuationDistance = 1;
         const auto g = test::addMaterial(s, m);
@@ -244,7 +244,7 @@ double contrastThroughGlass(float spread) {
         {.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}, .size = 0.25});
     Material wall = lamp({1, 1, 1});
     wall.emissionTexture = 0;
-    Material ball = glass(1.5f);
+    Material ball = glassOfIor(1.5f);
     ball.phong.spread = spread;
     s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, test::addMaterial(s, ball));
     test::addQuad(s, {-20, -20, 3}, {20, -20, 3}, {20, 20, 3}, {-20, 20, 3}, test::addMaterial(s, wall));

@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "core/vec3.h"
 
@@ -16,6 +19,18 @@ inline void expectNear(const rt::Vec3& a, const rt::Vec3& b, rt::Real tol = kTol
     EXPECT_NEAR(a.x, b.x, tol) << a << " vs " << b;
     EXPECT_NEAR(a.y, b.y, tol) << a << " vs " << b;
     EXPECT_NEAR(a.z, b.z, tol) << a << " vs " << b;
+}
+
+// The same bits, not only equal values: a NaN equals nothing and -0 equals 0, but a render that
+// must not depend on the thread count or region split has to give the very same bits.
+template <class T>
+requires std::is_trivially_copyable_v<T>
+bool sameBits(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
+
+template <class T>
+requires std::is_trivially_copyable_v<T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
 namespace rt::test {

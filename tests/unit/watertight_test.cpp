@@ -23,7 +23,7 @@ using namespace rt;
 namespace {
 
 // Tests `tris` (kSimdWidth of them) as one block and one by one; returns the lanes that differ.
-int differingLanes(const Triangle* tris, const Ray& ray, Real tMax) {
+int differingWatertightLanes(const Triangle* tris, const Ray& ray, Real tMax) {
     VertexBlock block;
     for (int lane = 0; lane < kSimdWidth; ++lane) block.set(lane, tris[lane], std::uint32_t(lane));
     const ShearedRay sheared(ray);
@@ -270,7 +270,7 @@ TEST(WatertightTriangle, BlockLanesHaveTheScalarTestsBits) {
         const Vec3 origin = point();
         const Ray ray{origin, i % 2 ? normalize(point()) : tris[0].p1 - origin};
         const Real tMax = i % 3 ? kInfinity : Real(0.5);
-        differing += differingLanes(tris, ray, tMax);
+        differing += differingWatertightLanes(tris, ray, tMax);
         Real t, u, v;
         for (const Triangle& tri : tris) hits += intersectWatertight(tri, ShearedRay(ray), tMax, t, u, v);
     }

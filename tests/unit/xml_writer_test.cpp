@@ -56,11 +56,6 @@ Scene loadTestScene(const TempDir& dir) {
     return loadSceneXml(dir.write("in/scene.xml", xml));  // the 3ds model too
 }
 
-template <typename T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
 void expectSamePrimitives(const Primitives& a, const Primitives& b) {
     forEachKind([&]<class K>(std::type_identity<K>) { EXPECT_TRUE(sameBits(a.all<K>(), b.all<K>())) << K::kName; });
     ASSERT_EQ(a.size(), b.size());
