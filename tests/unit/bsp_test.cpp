@@ -11,12 +11,6 @@ using namespace rt;
 
 namespace {
 
-std::vector<TreeNodeInfo> nodesOf(const Accelerator& tree) {
-    std::vector<TreeNodeInfo> nodes;
-    tree.forEachNode([&](const TreeNodeInfo& n) { nodes.push_back(n); });
-    return nodes;
-}
-
 // Scene bounds [0, 4] x [0, 2] x [0, 1], set by two small spheres in opposite corners.
 Primitives longBox() {
     Primitives prims;

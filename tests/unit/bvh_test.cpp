@@ -25,7 +25,7 @@ using namespace rt;
 
 namespace {
 
-std::string dump(const Accelerator& bvh) {
+std::string bvhDump(const Accelerator& bvh) {
     std::ostringstream out;
     out.precision(17);
     bvh.forEachNode([&](const TreeNodeInfo& n) {
@@ -146,7 +146,7 @@ TEST(Bvh, SameHierarchyAndHitsForAnyNumberOfThreads) {
     omp_set_num_threads(3);
     const auto three = buildBvh(prims, BvhSettings{});
     omp_set_num_threads(threads);
-    EXPECT_EQ(dump(*one), dump(*three));
+    EXPECT_EQ(bvhDump(*one), bvhDump(*three));
     RayCounters a, b;
     EXPECT_EQ(trace(*one, rays, a), trace(*three, rays, b));
 }

@@ -53,7 +53,7 @@ std::string replyOf(const std::string& bytes, const char* hint) {
 }
 
 // The message of the rt::InputError reading `reply` throws; empty (and a failure) if none.
-std::string errorOf(const std::string& reply) {
+std::string replyErrorOf(const std::string& reply) {
     try {
         readAssimpReply(reply, "model.ply");
     } catch (const InputError& e) {
@@ -127,17 +127,17 @@ TEST(AssimpReply, SharedModelsComeBackWhole) {
 TEST(AssimpReply, EveryShortenedReplyIsAnInputError) {
     const std::string reply = replyOf(kPly, "ply");
     for (std::size_t length = 0; length < reply.size(); ++length)
-        EXPECT_NE(errorOf(reply.substr(0, length)).find("model.ply: byte "), std::string::npos) << length;
-    EXPECT_NE(errorOf(reply + "x").find("bytes follow the node tree"), std::string::npos);
+        EXPECT_NE(replyErrorOf(reply.substr(0, length)).find("model.ply: byte "), std::string::npos) << length;
+    EXPECT_NE(replyErrorOf(reply + "x").find("bytes follow the node tree"), std::string::npos);
 }
 
 TEST(AssimpReply, CountsBeyondTheBytesAreRefusedBeforeAnythingIsAllocated) {
     std::string reply = replyOf(kPly, "ply");
     putU32(reply, 8, 0xffffffffu);  // meshes
-    EXPECT_NE(errorOf(reply).find("mesh count: 4294967295, more than the"), std::string::npos);
+    EXPECT_NE(replyErrorOf(reply).find("mesh count: 4294967295, more than the"), std::string::npos);
     reply = replyOf(kPly, "ply");
     putU32(reply, kFirstMeshMaterial + 4, 0xfffffff0u);  // the mesh's vertices
-    EXPECT_NE(errorOf(reply).find("mesh 0 vertices: 4294967280"), std::string::npos);
+    EXPECT_NE(replyErrorOf(reply).find("mesh 0 vertices: 4294967280"), std::string::npos);
 }
 
 TEST(AssimpReply, IndicesOutOfRangeAreRefused) {
@@ -148,17 +148,18 @@ TEST(AssimpReply, IndicesOutOfRangeAreRefused) {
     const std::size_t faces = kFirstMeshMaterial + 4 + 4 + 1 + 4 * (3 + 3 + 2 + 4) * 4;
     ASSERT_EQ(getU32(good, faces), 2u);
     putU32(reply, faces + 4 + 4, 4);
-    EXPECT_NE(errorOf(reply).find("mesh 0 face 0 names vertex 4 of 4"), std::string::npos);
+    EXPECT_NE(replyErrorOf(reply).find("mesh 0 face 0 names vertex 4 of 4"), std::string::npos);
     reply = good;
     putU32(reply, kFirstMeshMaterial, 7);
-    EXPECT_NE(errorOf(reply).find("mesh 0 names material 7 of 1"), std::string::npos);
+    EXPECT_NE(replyErrorOf(reply).find("mesh 0 names material 7 of 1"), std::string::npos);
 }
 
 TEST(AssimpReply, NodeTreesDeeperThanTheLimitAreRefused) {
     std::string chain;
     for (std::size_t i = 0; i < kMaxReplyNodeDepth; ++i) chain += node(1);
     EXPECT_NO_THROW(readAssimpReply(replyWithNodes(chain + node(0)), "deep.ply"));
-    EXPECT_NE(errorOf(replyWithNodes(chain + node(1) + node(0))).find("deeper than 1024 levels"), std::string::npos);
+    EXPECT_NE(replyErrorOf(replyWithNodes(chain + node(1) + node(0))).find("deeper than 1024 levels"),
+              std::string::npos);
 }
 
 // Material entries cost the tool a whole aiMaterialProperty (over 1 KiB) for a few bytes.
@@ -175,12 +176,12 @@ TEST(AssimpReply, MoreThanTheReplyJustifiesIsRefused) {
         reply.append(reinterpret_cast<const char*>(&one), 4);
     }
     reply += std::string(8, '\0') + node(0);  // no cameras or lights
-    EXPECT_NE(errorOf(reply).find("MiB its length allows the tool to spend on it"), std::string::npos);
+    EXPECT_NE(replyErrorOf(reply).find("MiB its length allows the tool to spend on it"), std::string::npos);
 }
 
 TEST(AssimpReply, OtherBytesAreNotAReply) {
-    EXPECT_NE(errorOf("").find("ends early"), std::string::npos);
-    EXPECT_NE(errorOf("assimp.binary-dump").find("does not start with rtAR"), std::string::npos);
+    EXPECT_NE(replyErrorOf("").find("ends early"), std::string::npos);
+    EXPECT_NE(replyErrorOf("assimp.binary-dump").find("does not start with rtAR"), std::string::npos);
 }
 
 }  // namespace

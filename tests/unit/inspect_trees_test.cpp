@@ -19,12 +19,6 @@ namespace {
 // The clusters of these tests: spheres of radius 0.2, 0.5 apart.
 void addCluster(Scene& scene, const Vec3& corner, int n) { addSphereCluster(scene, corner, n, Real(0.5), Real(0.2)); }
 
-std::vector<TreeNodeInfo> nodesOf(const Accelerator& accel) {
-    std::vector<TreeNodeInfo> nodes;
-    accel.forEachNode([&](const TreeNodeInfo& n) { nodes.push_back(n); });
-    return nodes;
-}
-
 class InspectTrees : public ::testing::TestWithParam<AccelKind> {
 protected:
     std::unique_ptr<Accelerator> build(const Scene& scene) const {

@@ -19,7 +19,7 @@ using namespace rt;
 
 namespace {
 
-std::string dump(const Accelerator& tree) {
+std::string kdDump(const Accelerator& tree) {
     std::ostringstream out;
     tree.forEachNode([&](const TreeNodeInfo& n) {
         out << n.id << ' ' << n.depth << ' ' << n.leaf << ' ' << (n.plane ? n.plane->axis : -1) << ' '
@@ -185,10 +185,10 @@ TEST(KdTree, BinnedTreesAreTheSameOnEverySimdLevel) {
     settings.binningMinimum = 16;
     const SimdLevel before = simdLevel();
     ASSERT_TRUE(setSimdLevel(SimdLevel::sse2));
-    const std::string scalar = dump(*buildKdTree(prims, settings));
+    const std::string scalar = kdDump(*buildKdTree(prims, settings));
     for (SimdLevel level : kSimdLevels) {
         if (setSimdLevel(level)) {
-            EXPECT_EQ(dump(*buildKdTree(prims, settings)), scalar) << simdLevelName(level);
+            EXPECT_EQ(kdDump(*buildKdTree(prims, settings)), scalar) << simdLevelName(level);
         }
     }
     setSimdLevel(before);
@@ -216,7 +216,7 @@ TEST(KdTree, SweepAndSortBuildTheSameTree) {
     const Primitives prims = generateScene({1500, 300, Placement::Clustered, 5}).primitives;
     const auto sweep = buildKdTree(prims, withMethod(KdSplitMethod::Sweep));
     const auto sort = buildKdTree(prims, withMethod(KdSplitMethod::Sort));
-    EXPECT_EQ(dump(*sweep), dump(*sort));
+    EXPECT_EQ(kdDump(*sweep), kdDump(*sort));
     EXPECT_EQ(sweep->stats().name, "kd-sweep");
     EXPECT_GT(sweep->stats().nodes, 100u);
     // Sampling evaluates fewer planes: never a cheaper tree than the exact search here.
@@ -253,9 +253,9 @@ TEST(KdTree, SameTreeForAnyNumberOfThreads) {
     const Primitives prims = generateScene({50000, 0, Placement::Uniform, 6}).primitives;  // tasks below the root
     const int threads = omp_get_max_threads();
     omp_set_num_threads(1);
-    const std::string one = dump(*buildKdTree(prims, KdSettings{}));
+    const std::string one = kdDump(*buildKdTree(prims, KdSettings{}));
     omp_set_num_threads(3);
-    const std::string three = dump(*buildKdTree(prims, KdSettings{}));
+    const std::string three = kdDump(*buildKdTree(prims, KdSettings{}));
     omp_set_num_threads(threads);
     EXPECT_EQ(one, three);
 }
@@ -277,10 +277,10 @@ TEST(KdTree, SameTreeForAnyNumberOfThreadsInTheTopLevels) {
     const int threads = omp_get_max_threads();
     for (const KdSettings& settings : {KdSettings{}, sweepFromTheRoot, withMethod(KdSplitMethod::Sample)}) {
         omp_set_num_threads(1);
-        const std::string one = dump(*buildKdTree(prims, settings));
+        const std::string one = kdDump(*buildKdTree(prims, settings));
         for (const int n : {2, 3}) {
             omp_set_num_threads(n);
-            EXPECT_EQ(one, dump(*buildKdTree(prims, settings)))
+            EXPECT_EQ(one, kdDump(*buildKdTree(prims, settings)))
                 << n << " threads, " << kdSplitMethodName(settings.splitMethod) << ", binning from "
                 << settings.binningMinimum;
         }

@@ -14,7 +14,7 @@ using namespace rt;
 namespace {
 
 // One white diffuse sphere at the origin seen from -z, one light at the camera.
-Scene litSphere() {
+Scene litWhiteSphere() {
     return test::litSphereSeenFromMinusZ(
         {.name = "white", .color = {0.5f, 1.0f, 0.25f}, .phong = {.ambient = 0.2f, .diffuse = 0.6f}}, 30,
         {{{0, 0, -10}, {0.5f, 0.5f, 0.5f}, 0}, {{0, 0, 10}, {0.25f, 0.25f, 0.25f}, 0}});  // behind: ambient only
@@ -23,7 +23,7 @@ Scene litSphere() {
 }  // namespace
 
 TEST(Tracer, MissesShowTheBackground) {
-    const Scene s = litSphere();
+    const Scene s = litWhiteSphere();
     const NaiveAccelerator accel(s.primitives);
     const Tracer tracer(s, accel, test::picture(64, 64));
     RenderCounters c;
@@ -33,7 +33,7 @@ TEST(Tracer, MissesShowTheBackground) {
 }
 
 TEST(Tracer, CentreOfALitSphereIsAmbientPlusLambert) {
-    const Scene s = litSphere();
+    const Scene s = litWhiteSphere();
     const NaiveAccelerator accel(s.primitives);
     RenderSettings settings = test::picture(64, 64);
     settings.shadows = true;
@@ -149,8 +149,8 @@ TEST(Tracer, ReflectionsStopAtTheMaximumDepth) {
 }
 
 TEST(Tracer, EpsilonScalesWithTheScene) {
-    Scene a = litSphere();
-    Scene b = litSphere();
+    Scene a = litWhiteSphere();
+    Scene b = litWhiteSphere();
     b.looseObjects.add<Sphere>({{1000, 0, 0}, 1}, 0);
     b.flatten();
     const NaiveAccelerator accelA(a.primitives), accelB(b.primitives);

@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "accel/accelerator.h"
 #include "core/vec3.h"
 
 // Tolerance that suits both the float and the double build.
@@ -31,6 +32,13 @@ template <class T>
 requires std::is_trivially_copyable_v<T>
 bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
     return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// Every node of a tree or BVH, in the order forEachNode visits them.
+inline std::vector<rt::TreeNodeInfo> nodesOf(const rt::Accelerator& accel) {
+    std::vector<rt::TreeNodeInfo> nodes;
+    accel.forEachNode([&](const rt::TreeNodeInfo& n) { nodes.push_back(n); });
+    return nodes;
 }
 
 namespace rt::test {

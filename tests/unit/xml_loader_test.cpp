@@ -70,7 +70,7 @@ Scene load(const std::string& body, const std::string& baseDir = ".") {
     return loadSceneXmlFromString(sceneWith(body), "s.xml", baseDir);
 }
 
-std::string errorOf(const std::string& xml) {
+std::string xmlErrorOf(const std::string& xml) {
     return inputErrorOf([&] { loadSceneXmlFromString(xml, "s.xml", "."); });
 }
 
@@ -518,7 +518,7 @@ class XmlLoaderBadInput : public ::testing::TestWithParam<BadScene> {};
 }  // namespace
 
 TEST_P(XmlLoaderBadInput, GivesOneErrorWithFileAndLine) {
-    EXPECT_EQ(errorOf(GetParam().xml), GetParam().error) << GetParam().what;
+    EXPECT_EQ(xmlErrorOf(GetParam().xml), GetParam().error) << GetParam().what;
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, XmlLoaderBadInput, ::testing::ValuesIn(kBadScenes),
@@ -541,9 +541,10 @@ TEST(XmlLoader, TransformsWithoutAFiniteInverseAreInputErrors) {
     const Real tiny = std::cbrt(std::numeric_limits<Real>::min()) / 2;
     const Real root = std::sqrt(huge);  // fine alone, not twice
     const std::string error = "s.xml:4: <scale> makes the transform singular or not finite";
-    EXPECT_EQ(errorOf(sceneWith("<objects>\n" + scale(huge) + "</scale></objects>")), error);
-    EXPECT_EQ(errorOf(sceneWith("<objects>\n" + scale(tiny) + "</scale></objects>")), error);
-    EXPECT_EQ(errorOf(sceneWith("<objects>" + scale(root) + "\n" + scale(root) + "</scale></scale></objects>")), error);
+    EXPECT_EQ(xmlErrorOf(sceneWith("<objects>\n" + scale(huge) + "</scale></objects>")), error);
+    EXPECT_EQ(xmlErrorOf(sceneWith("<objects>\n" + scale(tiny) + "</scale></objects>")), error);
+    EXPECT_EQ(xmlErrorOf(sceneWith("<objects>" + scale(root) + "\n" + scale(root) + "</scale></scale></objects>")),
+              error);
 }
 
 TEST(XmlLoader, BadModelFilesGiveTheSceneLine) {
@@ -558,7 +559,7 @@ TEST(XmlLoader, BadModelFilesGiveTheSceneLine) {
                             "derived-3ds/random_bytes_named.3ds", "assimp-invalid/empty.3ds"}) {
         const std::string model = std::string(RT_SHARED_DIR "/models/bad/") + bad;
         const std::string error =
-            errorOf(sceneWith("<models><model name=\"m\" type=\"3ds\" file=\"" + model + "\"/></models>"));
+            xmlErrorOf(sceneWith("<models><model name=\"m\" type=\"3ds\" file=\"" + model + "\"/></models>"));
         EXPECT_EQ(error.rfind("s.xml:3: model 'm': " + model + ": cannot read 3ds model: ", 0), 0u) << error;
     }
 }
