@@ -168,7 +168,7 @@ private:
             // bounds and their sorted events as they are, so they move there instead of being
             // dealt out and merged (the same child). The tree scene's foliage in its large box
             // makes 13,324 of its 21,739 splits so, with 35 % of the primitives all its splits
-            // hold: 13 % fewer build instructions (docs/benchmarks.md).
+            // hold: fewer build instructions, measured in docs/benchmarks.md.
             KdNode& child = sides[Below] == 0 ? above : below;
             child.primitives = std::move(node.primitives);
             child.boxes = std::move(node.boxes);
