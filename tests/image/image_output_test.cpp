@@ -102,14 +102,14 @@ TEST_F(ImageOutputTest, OutputTypeWritesFilesWithoutTheExtension) {
 }
 
 TEST_F(ImageOutputTest, ExrKeepsLinearValuesAndMetadata) {
-    for (const bool half : {true, false}) {
+    for (const bool inHalf : {true, false}) {
         ImageOutputSettings s = settings(ImageFormat::Exr, file("a.exr"));
-        s.exrPixels = half ? ExrPixelType::Half : ExrPixelType::Float;
+        s.exrPixels = inHalf ? ExrPixelType::Half : ExrPixelType::Float;
         writeImage(ramp(), s, metadata());
         OIIO::ImageSpec spec;
         const std::vector<float> px = readPixels(s.path, spec);
-        EXPECT_EQ(spec.format, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
-        EXPECT_NEAR(px[3], 0.06f + 0.12f, half ? 1e-4 : 0);
+        EXPECT_EQ(spec.format, inHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+        EXPECT_NEAR(px[3], 0.06f + 0.12f, inHalf ? 1e-4 : 0);
         EXPECT_EQ(spec.get_string_attribute("Software"), "rt-render test");
         EXPECT_EQ(spec.get_string_attribute("rt:scene"), "scenes/test.xml");
         EXPECT_EQ(spec.get_string_attribute("rt:colorSpace"), "lin_rec709");
