@@ -393,10 +393,11 @@ private:
             m.name = gm.name;
             m.doubleSided = gm.doubleSided;  // false, as glTF's default, when the file leaves it out
             m.colorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture, what + " baseColorTexture");
-            m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
-            if (!(std::max({m.emission.r, m.emission.g, m.emission.b}) <= kMaxColorValue))
+            m.emission.color = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
+            if (!(std::max({m.emission.color.r, m.emission.color.g, m.emission.color.b}) <= kMaxColorValue))
                 fail(what + ": emissiveFactor times emissiveStrength is beyond 1e15");
-            if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
+            if (m.emission.color != Color{})
+                m.emission.texture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             keepMetallicRoughnessTexture(gm, what, m);
             keepTransmissionTexture(gm, what, m);
             readClearcoat(gm, what, m);

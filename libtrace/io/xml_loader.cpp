@@ -298,14 +298,14 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     m.phong.reflection = e.nonNegativeFloat("reflection", m.phong.reflection);
     m.phong.spread = e.nonNegativeFloat("spread", m.phong.spread);
     if (m.phong.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
-    m.emission = e.color("emission", m.emission);
+    m.emission.color = e.color("emission", m.emission.color);
     readMetallicRoughness(e, m);
     m.clearcoat.weight = unitFactor(e, "clearcoat", m.clearcoat.weight);
     m.clearcoat.roughness = unitFactor(e, "clearcoat_roughness", m.clearcoat.roughness);
     m.transmission = readTransmission(e);
     const auto index = std::uint32_t(scene_.materials.size());
     useTexture(e, "texture", index, [](Material& t) -> TextureIndex& { return t.colorTexture; });
-    useTexture(e, "emission_texture", index, [](Material& t) -> TextureIndex& { return t.emissionTexture; });
+    useTexture(e, "emission_texture", index, [](Material& t) -> TextureIndex& { return t.emission.texture; });
     useTexture(e, "metallic_roughness_texture", index,
                [](Material& t) -> TextureIndex& { return t.metallicRoughnessTexture; });
     useTexture(e, "transmission_texture", index, [](Material& t) -> TextureIndex& { return t.transmissionTexture; });

@@ -258,9 +258,9 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         setNumber(node, "reflection", m.phong.reflection);
         setNumber(node, "spread", m.phong.spread);
         if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
-        if (m.emission != Color{}) setColor(node, "emission", m.emission);
-        if (m.emissionTexture)
-            node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emissionTexture).c_str());
+        if (m.emission.color != Color{}) setColor(node, "emission", m.emission.color);
+        if (m.emission.texture)
+            node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emission.texture).c_str());
         if (const auto& f = m.metallicRoughness) {
             setNumber(node, "metallic", f->metallic);
             setNumber(node, "roughness", f->roughness);

@@ -80,6 +80,14 @@ struct NormalMap {
     float scale = 1;                         // multiplies the texel's x and y (glTF's normalTexture.scale)
 };
 
+// Light the surface gives off (rt extension), added to what it reflects; only the path tracer lights
+// other surfaces with it. From XML's emission and emission_texture, glTF's emissiveFactor (times
+// KHR_materials_emissive_strength) and emissiveTexture, MTL's Ke and map_Ke, Assimp's emissive colour.
+struct Emission {
+    Color color{0, 0, 0};
+    std::optional<std::uint32_t> texture{};  // index in Scene::textures; multiplies the colour
+};
+
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -87,11 +95,9 @@ struct Material {
     // base colour.
     Color color{1, 1, 1};
     PhongTerms phong{};
-    // rt extensions: the colour is multiplied by a texture's; the emitted colour is added to
-    // what the surface reflects (multiplied by its own texture), lighting nothing else.
+    // rt extension: the colour is multiplied by a texture's.
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
-    Color emission{0, 0, 0};
-    std::optional<std::uint32_t> emissionTexture{};
+    Emission emission{};
     // The path tracer's material; without it, it follows a rule from the Phong coefficients.
     std::optional<MetallicRoughness> metallicRoughness{};
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.

@@ -61,8 +61,10 @@ TEST(Tracer, AnEmitterIsSeenInAMirrorWithoutLights) {
     s.camera.destination = {0, 0, 0};
     const auto mirror =
         test::addMaterial(s, {.name = "mirror", .phong = {.ambient = 0, .diffuse = 0, .reflection = 1}});
-    const auto lamp = test::addMaterial(
-        s, {.name = "lamp", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {1, 0.5f, 0.25f}});
+    const auto lamp = test::addMaterial(s, {.name = "lamp",
+                                            .color = {0, 0, 0},
+                                            .phong = {.ambient = 0, .diffuse = 0},
+                                            .emission = {.color = {1, 0.5f, 0.25f}}});
     test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, mirror);
     test::addQuad(s, {-9, -9, -5}, {-9, 9, -5}, {9, 9, -5}, {9, -9, -5}, lamp);
     s.flatten();

@@ -259,8 +259,8 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     EXPECT_EQ(floor.size, 0.5f);
     const Material& lamp = second.materials[0];
     EXPECT_EQ(lamp.colorTexture, std::optional<std::uint32_t>(1));
-    EXPECT_EQ(lamp.emission, (Color{2, 1, 0.5f}));
-    EXPECT_EQ(lamp.emissionTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.emission.color, (Color{2, 1, 0.5f}));
+    EXPECT_EQ(lamp.emission.texture, std::optional<std::uint32_t>(0));
     EXPECT_EQ(lamp.alphaCutoff, std::optional<float>(0.25f));
     EXPECT_EQ(lamp.alpha, 0.75f);
     EXPECT_EQ(lamp.alphaTexture, std::optional<std::uint32_t>(0));

@@ -12,8 +12,8 @@ Color surfaceColor(const ShadingContext& context, const Material& m, const Surfa
 
 Color surfaceEmission(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
     // Under a black factor the texture cannot matter: not read.
-    if (!m.emissionTexture || m.emission == Color{}) return m.emission;
-    return m.emission * textureColor(context, *m.emissionTexture, s);
+    if (!m.emission.texture || m.emission.color == Color{}) return m.emission.color;
+    return m.emission.color * textureColor(context, *m.emission.texture, s);
 }
 
 float transmissionAt(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
