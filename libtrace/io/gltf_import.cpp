@@ -442,10 +442,11 @@ private:
     void readAlphaMode(const tinygltf::Material& gm, const std::string& what, Material& m) {
         if (gm.alphaMode != "MASK" && gm.alphaMode != "BLEND") return;
         const bool blend = gm.alphaMode == "BLEND";
-        m.alphaCutoff = blend ? 0.5f : float(numberWithin(gm.alphaCutoff, 0, 1, file_, what + " alphaCutoff"));
+        m.opacity.cutoff = blend ? 0.5f : float(numberWithin(gm.alphaCutoff, 0, 1, file_, what + " alphaCutoff"));
         const std::vector<double>& factor = gm.pbrMetallicRoughness.baseColorFactor;
-        if (factor.size() == 4) m.alpha = float(std::clamp(finiteNumber(factor[3], file_, what + " alpha"), 0.0, 1.0));
-        m.alphaTexture = m.colorTexture;
+        if (factor.size() == 4)
+            m.opacity.alpha = float(std::clamp(finiteNumber(factor[3], file_, what + " alpha"), 0.0, 1.0));
+        m.opacity.texture = m.colorTexture;
         if (blend)
             assembly_.report().notes.push_back(what + " (" + gm.name + "): alphaMode BLEND drawn as a cut-out at 0.5");
     }

@@ -166,11 +166,11 @@ Texture mapTexture(const std::string& file, const tinyobj::texture_option_t& o, 
 // nothing, and the renderer drops the material from the cut-out test (render/cutout.h).
 void readCutout(const tinyobj::material_t& mtl, const std::string& objPath, ImportResult& out, Material& m) {
     if (!mtl.alpha_texname.empty())
-        m.alphaTexture =
+        m.opacity.texture =
             addTexture(out.scene, mapTexture(mtl.alpha_texname, mtl.alpha_texopt, objPath, out.report.notes));
     else
-        m.alphaTexture = m.colorTexture;
-    if (m.alphaTexture) m.alphaCutoff = 0.5f;
+        m.opacity.texture = m.colorTexture;
+    if (m.opacity.texture) m.opacity.cutoff = 0.5f;
 }
 
 // The normal map: `norm`, else `map_bump` or `bump`, read as a tangent-space normal map in

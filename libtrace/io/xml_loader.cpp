@@ -331,10 +331,10 @@ void SceneBuilder::readMetallicRoughness(const XmlElement& e, Material& m) {
 
 // rt extension: a cut-out material has alpha_cutoff; alpha and alpha_texture give its opacity.
 void SceneBuilder::readCutout(const XmlElement& e, std::uint32_t index, Material& m) {
-    if (e.has("alpha_cutoff")) m.alphaCutoff = e.nonNegativeFloat("alpha_cutoff", 0.5f);
-    m.alpha = e.nonNegativeFloat("alpha", m.alpha);
-    if (m.alpha > 1) e.fail("<material> alpha must be between 0 and 1");
-    useTexture(e, "alpha_texture", index, [](Material& t) -> TextureIndex& { return t.alphaTexture; });
+    if (e.has("alpha_cutoff")) m.opacity.cutoff = e.nonNegativeFloat("alpha_cutoff", 0.5f);
+    m.opacity.alpha = e.nonNegativeFloat("alpha", m.opacity.alpha);
+    if (m.opacity.alpha > 1) e.fail("<material> alpha must be between 0 and 1");
+    useTexture(e, "alpha_texture", index, [](Material& t) -> TextureIndex& { return t.opacity.texture; });
 }
 
 // rt extension: an image file (any format OpenImageIO reads) or a procedural checker.

@@ -273,11 +273,12 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         if (m.metallicRoughnessTexture)
             node.append_attribute("metallic_roughness_texture")
                 .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
-        if (m.alphaCutoff) setNumber(node, "alpha_cutoff", *m.alphaCutoff);
-        if (m.alpha != 1) setNumber(node, "alpha", m.alpha);
+        if (m.opacity.cutoff) setNumber(node, "alpha_cutoff", *m.opacity.cutoff);
+        if (m.opacity.alpha != 1) setNumber(node, "alpha", m.opacity.alpha);
         if (m.transmissionTexture)
             node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmissionTexture).c_str());
-        if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
+        if (m.opacity.texture)
+            node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.opacity.texture).c_str());
         if (m.normalMap.texture)
             node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalMap.texture).c_str());
         if (m.normalMap.scale != 1) setNumber(node, "normal_scale", m.normalMap.scale);

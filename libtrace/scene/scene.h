@@ -88,6 +88,17 @@ struct Emission {
     std::optional<std::uint32_t> texture{};  // index in Scene::textures; multiplies the colour
 };
 
+// Cut-outs (rt extension; glTF's alphaMode MASK and BLEND and base colour alpha, OBJ's map_d or
+// map_Kd's alpha, XML's alpha_cutoff, alpha and alpha_texture): where the opacity, alpha times the
+// texture's alpha at the hit, is below the cut-off, rays pass through the surface. A texture that
+// is the colour texture gives its alpha channel (1 without one); any other is a mask: its alpha
+// channel, or its first channel when it has none.
+struct Opacity {
+    std::optional<float> cutoff{};  // set: the material is a cut-out
+    float alpha = 1;
+    std::optional<std::uint32_t> texture{};  // index in Scene::textures
+};
+
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -105,13 +116,7 @@ struct Material {
     Clearcoat clearcoat{};
     // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
     std::optional<std::uint32_t> transmissionTexture{};
-    // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times
-    // alphaTexture's alpha at the hit, is below alphaCutoff, rays pass through the surface.
-    // An alpha texture that is the colour texture gives its alpha channel (1 without one); any
-    // other is a mask: its alpha channel, or its first channel when it has none.
-    std::optional<float> alphaCutoff{};  // set: the material is a cut-out
-    float alpha = 1;
-    std::optional<std::uint32_t> alphaTexture{};
+    Opacity opacity{};
     NormalMap normalMap{};
     Transmission transmission{};  // rt extension: glass (scene/transmission.h)
     // rt extension, glTF's doubleSided: false makes the material single-sided, and every ray

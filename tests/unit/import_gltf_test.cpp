@@ -320,14 +320,14 @@ TEST(ImportGltf, AlphaModesBecomeCutouts) {
         return importScene(dir.write("m.gltf", json));
     };
     const ImportResult mask = material(R"(, "alphaMode": "MASK", "alphaCutoff": 0.25)");
-    EXPECT_EQ(mask.scene.materials[0].alphaCutoff, std::optional<float>(0.25f));
-    EXPECT_EQ(mask.scene.materials[0].alpha, 0.5f);
+    EXPECT_EQ(mask.scene.materials[0].opacity.cutoff, std::optional<float>(0.25f));
+    EXPECT_EQ(mask.scene.materials[0].opacity.alpha, 0.5f);
     const ImportResult blend = material(R"(, "alphaMode": "BLEND")");
-    EXPECT_EQ(blend.scene.materials[0].alphaCutoff, std::optional<float>(0.5f));
+    EXPECT_EQ(blend.scene.materials[0].opacity.cutoff, std::optional<float>(0.5f));
     const auto& notes = blend.report.notes;
     EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
                             [](const std::string& n) { return n.find("alphaMode BLEND") != std::string::npos; }));
-    EXPECT_FALSE(material("").scene.materials[0].alphaCutoff);
+    EXPECT_FALSE(material("").scene.materials[0].opacity.cutoff);
 }
 
 // doubleSided is kept: true two-sided; false, or left out (glTF's default), single-sided, as is

@@ -385,12 +385,12 @@ TEST(ImportObj, MapDAndTheAlphaOfMapKdCutOut) {
                                         "map_Kd leaf.png\nnewmtl glass\nd 0.5\n",
                                         "usemtl fence\nf 1 2 3\nusemtl leaf\nf 1 3 4\nusemtl glass\nf 1 2 4\n");
     const Material &fence = materialNamed(r, "fence"), &leaf = materialNamed(r, "leaf");
-    ASSERT_TRUE(fence.alphaTexture);
-    EXPECT_EQ(r.scene.textures[*fence.alphaTexture].path, dir.path("fence.png"));
-    EXPECT_EQ(fence.alphaCutoff, std::optional<float>(0.5f));
-    EXPECT_EQ(leaf.alphaTexture, leaf.colorTexture);
-    EXPECT_EQ(leaf.alphaCutoff, std::optional<float>(0.5f));
-    EXPECT_FALSE(materialNamed(r, "glass").alphaCutoff) << "a constant d is not a cut-out";
+    ASSERT_TRUE(fence.opacity.texture);
+    EXPECT_EQ(r.scene.textures[*fence.opacity.texture].path, dir.path("fence.png"));
+    EXPECT_EQ(fence.opacity.cutoff, std::optional<float>(0.5f));
+    EXPECT_EQ(leaf.opacity.texture, leaf.colorTexture);
+    EXPECT_EQ(leaf.opacity.cutoff, std::optional<float>(0.5f));
+    EXPECT_FALSE(materialNamed(r, "glass").opacity.cutoff) << "a constant d is not a cut-out";
 }
 
 // norm, else map_bump (or bump), is the normal map; -bm its scale.

@@ -261,9 +261,9 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     EXPECT_EQ(lamp.colorTexture, std::optional<std::uint32_t>(1));
     EXPECT_EQ(lamp.emission.color, (Color{2, 1, 0.5f}));
     EXPECT_EQ(lamp.emission.texture, std::optional<std::uint32_t>(0));
-    EXPECT_EQ(lamp.alphaCutoff, std::optional<float>(0.25f));
-    EXPECT_EQ(lamp.alpha, 0.75f);
-    EXPECT_EQ(lamp.alphaTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.opacity.cutoff, std::optional<float>(0.25f));
+    EXPECT_EQ(lamp.opacity.alpha, 0.75f);
+    EXPECT_EQ(lamp.opacity.texture, std::optional<std::uint32_t>(0));
     EXPECT_EQ(lamp.normalMap.texture, std::optional<std::uint32_t>(0));
     EXPECT_EQ(lamp.normalMap.scale, 0.5f);
     ASSERT_EQ(second.models.size(), 1u);

@@ -42,10 +42,11 @@ namespace {
 
 // The image texture giving the material's alpha, if any; `mask` says how it is read.
 std::optional<std::uint32_t> alphaImage(const ShadingContext& context, const Material& m, bool& mask) {
-    if (!m.alphaTexture || !context.images || context.scene.textures[*m.alphaTexture].kind != Texture::Kind::Image)
+    if (!m.opacity.texture || !context.images ||
+        context.scene.textures[*m.opacity.texture].kind != Texture::Kind::Image)
         return {};
-    mask = m.alphaTexture != m.colorTexture;
-    return m.alphaTexture;
+    mask = m.opacity.texture != m.colorTexture;
+    return m.opacity.texture;
 }
 
 }  // namespace
@@ -53,14 +54,14 @@ std::optional<std::uint32_t> alphaImage(const ShadingContext& context, const Mat
 float materialAlpha(const ShadingContext& context, const Material& m, Real u, Real v) {
     bool mask = false;
     const std::optional<std::uint32_t> image = alphaImage(context, m, mask);
-    if (!image) return m.alpha;
+    if (!image) return m.opacity.alpha;
     const TexCoord at = context.images->uvTransform(*image)(u, v);
-    return m.alpha * context.images->alpha(*image, at.s, at.t, mask);
+    return m.opacity.alpha * context.images->alpha(*image, at.s, at.t, mask);
 }
 
 bool cutsOut(const ShadingContext& context, const Material& m) {
-    if (!m.alphaCutoff || !(*m.alphaCutoff > 0)) return false;
-    if (m.alpha < *m.alphaCutoff) return true;
+    if (!m.opacity.cutoff || !(*m.opacity.cutoff > 0)) return false;
+    if (m.opacity.alpha < *m.opacity.cutoff) return true;
     bool mask = false;
     const std::optional<std::uint32_t> image = alphaImage(context, m, mask);
     return image && context.images->hasAlpha(*image, mask);
