@@ -432,8 +432,8 @@ private:
         tinygltf::TextureInfo reference;
         if (info.Has("index")) reference.index = info.Get("index").GetNumberAsInt();
         if (info.Has("texCoord")) reference.texCoord = info.Get("texCoord").GetNumberAsInt();
-        m.transmissionTexture = textureFor(reference, what + " transmissionTexture");
-        if (m.transmissionTexture) m.transmission.weight = std::min(1.0f, m.transmission.weight * 2);
+        m.transmission.texture = textureFor(reference, what + " transmissionTexture");
+        if (m.transmission.texture) m.transmission.weight = std::min(1.0f, m.transmission.weight * 2);
     }
 
     // alphaMode MASK is a cut-out at alphaCutoff of the base colour's alpha (factor times the

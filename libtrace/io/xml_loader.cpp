@@ -308,7 +308,7 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     useTexture(e, "emission_texture", index, [](Material& t) -> TextureIndex& { return t.emission.texture; });
     useTexture(e, "metallic_roughness_texture", index,
                [](Material& t) -> TextureIndex& { return t.metallicRoughnessTexture; });
-    useTexture(e, "transmission_texture", index, [](Material& t) -> TextureIndex& { return t.transmissionTexture; });
+    useTexture(e, "transmission_texture", index, [](Material& t) -> TextureIndex& { return t.transmission.texture; });
     readCutout(e, index, m);
     useTexture(e, "normal_texture", index, [](Material& t) -> TextureIndex& { return t.normalMap.texture; });
     m.normalMap.scale = e.floatWithin("normal_scale", m.normalMap.scale, kMaxTextureTransform);

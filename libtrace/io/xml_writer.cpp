@@ -275,8 +275,8 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
                 .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
         if (m.opacity.cutoff) setNumber(node, "alpha_cutoff", *m.opacity.cutoff);
         if (m.opacity.alpha != 1) setNumber(node, "alpha", m.opacity.alpha);
-        if (m.transmissionTexture)
-            node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmissionTexture).c_str());
+        if (m.transmission.texture)
+            node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmission.texture).c_str());
         if (m.opacity.texture)
             node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.opacity.texture).c_str());
         if (m.normalMap.texture)

@@ -114,8 +114,6 @@ struct Material {
     // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
     std::optional<std::uint32_t> metallicRoughnessTexture{};
     Clearcoat clearcoat{};
-    // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
-    std::optional<std::uint32_t> transmissionTexture{};
     Opacity opacity{};
     NormalMap normalMap{};
     Transmission transmission{};  // rt extension: glass (scene/transmission.h)

@@ -406,7 +406,7 @@ TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
     const std::string three = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 2)");
     const Material paper = importScene(dir.write("paper.gltf", three)).scene.materials.at(0);
     EXPECT_EQ(paper.transmission.weight, 1.0f) << "the renderers follow the texture per hit";
-    ASSERT_TRUE(paper.transmissionTexture);
+    ASSERT_TRUE(paper.transmission.texture);
     EXPECT_FLOAT_EQ(paper.phong.diffuse, 0.45f) << "the Phong coefficients take a transmission texture as mid-grey";
     EXPECT_THROW(importScene(dir.write(
                      "bad.gltf", replaceOnce(one, R"("transmissionFactor": 1)", R"("transmissionFactor": "all")"))),

@@ -152,7 +152,7 @@ TEST(PathTracerGlass, TransmissionTextureScalesTheTransmissionPerHit) {
     s.textures.push_back({.name = "checker", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 1, 1}});
     Material sheet = test::pbr({0, 0, 0}, 0, 0, 0);
     sheet.transmission = {.weight = 0.5f, .ior = 1, .thin = true};
-    sheet.transmissionTexture = 0;
+    sheet.transmission.texture = 0;
     const auto m = test::addMaterial(s, sheet);
     test::addQuad(s, {-100, -100, 5.5}, {100, -100, 5.5}, {100, 100, 5.5}, {-100, 100, 5.5}, m);
     s.flatten();

@@ -18,8 +18,8 @@ Color surfaceEmission(const ShadingContext& context, const Material& m, const Su
 
 float transmissionAt(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
     const float weight = m.transmission.weight;
-    if (!m.transmissionTexture || !(weight > 0)) return weight;
-    return std::clamp(weight * textureData(context, *m.transmissionTexture, s).r, 0.0f, 1.0f);
+    if (!m.transmission.texture || !(weight > 0)) return weight;
+    return std::clamp(weight * textureData(context, *m.transmission.texture, s).r, 0.0f, 1.0f);
 }
 
 float glossySpread(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
