@@ -414,11 +414,11 @@ private:
     // above had to guess them: metallicRoughness()).
     void keepMetallicRoughnessTexture(const tinygltf::Material& gm, const std::string& what, Material& m) {
         const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
-        if (pbr.metallicRoughnessTexture.index < 0 || !m.metallicRoughness) return;
-        m.metallicRoughnessTexture = textureFor(pbr.metallicRoughnessTexture, what + " metallicRoughnessTexture");
-        if (!m.metallicRoughnessTexture) return;
-        m.metallicRoughness->metallic = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
-        m.metallicRoughness->roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+        if (pbr.metallicRoughnessTexture.index < 0 || !m.pbr.factors) return;
+        m.pbr.texture = textureFor(pbr.metallicRoughnessTexture, what + " metallicRoughnessTexture");
+        if (!m.pbr.texture) return;
+        m.pbr.factors->metallic = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
+        m.pbr.factors->roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
     }
 
     // Both integrators follow the transmission texture per hit (its red channel times the

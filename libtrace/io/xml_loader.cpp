@@ -306,8 +306,7 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     const auto index = std::uint32_t(scene_.materials.size());
     useTexture(e, "texture", index, [](Material& t) -> TextureIndex& { return t.colorTexture; });
     useTexture(e, "emission_texture", index, [](Material& t) -> TextureIndex& { return t.emission.texture; });
-    useTexture(e, "metallic_roughness_texture", index,
-               [](Material& t) -> TextureIndex& { return t.metallicRoughnessTexture; });
+    useTexture(e, "metallic_roughness_texture", index, [](Material& t) -> TextureIndex& { return t.pbr.texture; });
     useTexture(e, "transmission_texture", index, [](Material& t) -> TextureIndex& { return t.transmission.texture; });
     readCutout(e, index, m);
     useTexture(e, "normal_texture", index, [](Material& t) -> TextureIndex& { return t.normalMap.texture; });
@@ -325,8 +324,8 @@ void SceneBuilder::useTexture(const XmlElement& e, const char* attribute, std::u
 // others take glTF's defaults (metallic 1, roughness 1, specular_factor 1).
 void SceneBuilder::readMetallicRoughness(const XmlElement& e, Material& m) {
     if (!e.has("metallic") && !e.has("roughness") && !e.has("specular_factor")) return;
-    m.metallicRoughness = MetallicRoughness{unitFactor(e, "metallic", 1), unitFactor(e, "roughness", 1),
-                                            unitFactor(e, "specular_factor", 1)};
+    m.pbr.factors = MetallicRoughness{unitFactor(e, "metallic", 1), unitFactor(e, "roughness", 1),
+                                      unitFactor(e, "specular_factor", 1)};
 }
 
 // rt extension: a cut-out material has alpha_cutoff; alpha and alpha_texture give its opacity.

@@ -261,7 +261,7 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         if (m.emission.color != Color{}) setColor(node, "emission", m.emission.color);
         if (m.emission.texture)
             node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emission.texture).c_str());
-        if (const auto& f = m.metallicRoughness) {
+        if (const auto& f = m.pbr.factors) {
             setNumber(node, "metallic", f->metallic);
             setNumber(node, "roughness", f->roughness);
             setNumber(node, "specular_factor", f->specular);
@@ -270,9 +270,8 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             setNumber(node, "clearcoat", m.clearcoat.weight);
             setNumber(node, "clearcoat_roughness", m.clearcoat.roughness);
         }
-        if (m.metallicRoughnessTexture)
-            node.append_attribute("metallic_roughness_texture")
-                .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
+        if (m.pbr.texture)
+            node.append_attribute("metallic_roughness_texture").set_value(textureNames_.at(*m.pbr.texture).c_str());
         if (m.opacity.cutoff) setNumber(node, "alpha_cutoff", *m.opacity.cutoff);
         if (m.opacity.alpha != 1) setNumber(node, "alpha", m.opacity.alpha);
         if (m.transmission.texture)

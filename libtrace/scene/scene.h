@@ -88,6 +88,18 @@ struct Emission {
     std::optional<std::uint32_t> texture{};  // index in Scene::textures; multiplies the colour
 };
 
+// The path tracer's glTF metallic-roughness terms (scene/metallic_roughness.h), as PhongTerms are the
+// Whitted tracer's (which takes only its glossy spread from a texture over factors: glossySpread);
+// from glTF's pbrMetallicRoughness, XML's metallic, roughness, specular_factor and
+// metallic_roughness_texture. Either may be given without the other: factors without a texture are
+// uniform, a texture without factors scales those metallicRoughnessOf makes from the Phong terms.
+struct PbrTerms {
+    // The material's own factors; none: the path tracer follows a rule from the Phong terms.
+    std::optional<MetallicRoughness> factors{};
+    // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
+    std::optional<std::uint32_t> texture{};
+};
+
 // Cut-outs (rt extension; glTF's alphaMode MASK and BLEND and base colour alpha, OBJ's map_d or
 // map_Kd's alpha, XML's alpha_cutoff, alpha and alpha_texture): where the opacity, alpha times the
 // texture's alpha at the hit, is below the cut-off, rays pass through the surface. A texture that
@@ -109,10 +121,7 @@ struct Material {
     // rt extension: the colour is multiplied by a texture's.
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
     Emission emission{};
-    // The path tracer's material; without it, it follows a rule from the Phong coefficients.
-    std::optional<MetallicRoughness> metallicRoughness{};
-    // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
-    std::optional<std::uint32_t> metallicRoughnessTexture{};
+    PbrTerms pbr{};
     Clearcoat clearcoat{};
     Opacity opacity{};
     NormalMap normalMap{};

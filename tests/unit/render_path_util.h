@@ -15,7 +15,7 @@ namespace rt::test {
 
 inline Material pbr(Color color, float metallic, float roughness, float specular = 1) {
     Material m{.name = "pbr", .color = color};
-    m.metallicRoughness = MetallicRoughness{metallic, roughness, specular};
+    m.pbr.factors = MetallicRoughness{metallic, roughness, specular};
     return m;
 }
 

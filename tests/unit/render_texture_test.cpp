@@ -118,8 +118,8 @@ TEST(Tracer, AMirrorRayThatLeavesTheSceneReadsNoRoughnessTexture) {
     s.textures.push_back({.name = "colour", .path = "colour.png"});
     s.textures.push_back({.name = "roughness", .path = "roughness.png"});
     Material m{.name = "metal", .phong = {.reflection = 0.5f}, .colorTexture = 0};
-    m.metallicRoughness = MetallicRoughness{.metallic = 1, .roughness = 1};
-    m.metallicRoughnessTexture = 1;
+    m.pbr.factors = MetallicRoughness{.metallic = 1, .roughness = 1};
+    m.pbr.texture = 1;
     const auto metal = test::addMaterial(s, m);
     test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, metal);
     Scene facing = s;  // the same with a wall behind the camera, where the mirror rays land

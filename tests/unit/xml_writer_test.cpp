@@ -335,14 +335,14 @@ TEST(XmlWriter, MetallicRoughnessFactorsRoundTrip) {
     saveSceneXml(first, dir.path("out.xml"));
     const Scene second = loadSceneXml(dir.path("out.xml"));
     ASSERT_EQ(second.materials.size(), 3u);
-    ASSERT_TRUE(second.materials[0].metallicRoughness);
-    EXPECT_EQ(second.materials[0].metallicRoughness->metallic, 1.0f);
-    EXPECT_EQ(second.materials[0].metallicRoughness->roughness, 0.25f);
-    EXPECT_EQ(second.materials[0].metallicRoughness->specular, 0.5f);
-    ASSERT_TRUE(second.materials[1].metallicRoughness);
-    EXPECT_EQ(second.materials[1].metallicRoughness->metallic, 1.0f);
-    EXPECT_EQ(second.materials[1].metallicRoughness->roughness, 0.75f);
-    EXPECT_FALSE(second.materials[2].metallicRoughness);
+    ASSERT_TRUE(second.materials[0].pbr.factors);
+    EXPECT_EQ(second.materials[0].pbr.factors->metallic, 1.0f);
+    EXPECT_EQ(second.materials[0].pbr.factors->roughness, 0.25f);
+    EXPECT_EQ(second.materials[0].pbr.factors->specular, 0.5f);
+    ASSERT_TRUE(second.materials[1].pbr.factors);
+    EXPECT_EQ(second.materials[1].pbr.factors->metallic, 1.0f);
+    EXPECT_EQ(second.materials[1].pbr.factors->roughness, 0.75f);
+    EXPECT_FALSE(second.materials[2].pbr.factors);
     const std::string error = inputErrorOf([&] {
         loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
             <materials><material name="m" metallic="1.5"/></materials></scene>)"));

@@ -23,15 +23,15 @@ float transmissionAt(const ShadingContext& context, const Material& m, const Sur
 }
 
 float glossySpread(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
-    if (!m.metallicRoughnessTexture || !m.metallicRoughness || !context.images) return m.phong.spread;
-    const float roughness = m.metallicRoughness->roughness * textureData(context, *m.metallicRoughnessTexture, s).g;
+    if (!m.pbr.texture || !m.pbr.factors || !context.images) return m.phong.spread;
+    const float roughness = m.pbr.factors->roughness * textureData(context, *m.pbr.texture, s).g;
     return roughness * roughness;
 }
 
 MetallicRoughness metallicRoughnessAt(const ShadingContext& context, const Material& m, const SurfacePoint& s) {
     MetallicRoughness f = metallicRoughnessOf(m);
-    if (m.metallicRoughnessTexture) {
-        const Color t = textureData(context, *m.metallicRoughnessTexture, s);
+    if (m.pbr.texture) {
+        const Color t = textureData(context, *m.pbr.texture, s);
         f.metallic = std::clamp(f.metallic * t.b, 0.0f, 1.0f);
         f.roughness = std::clamp(f.roughness * t.g, 0.0f, 1.0f);
     }
