@@ -195,7 +195,7 @@ private:
         m.phong.reflection = std::isfinite(reflectivity) ? std::clamp(reflectivity, 0.0f, 1.0f) : 0.0f;
         aiColor3D ke(0, 0, 0);
         am.Get(AI_MATKEY_COLOR_EMISSIVE, ke);
-        m.emission = toColor(ke);
+        m.emission.color = toColor(ke);
         m.colorTexture = diffuseTexture(am);
         applyOpacity(m, opacity(am), refractionIndex(am));
         aiString name;

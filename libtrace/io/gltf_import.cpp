@@ -393,10 +393,11 @@ private:
             m.name = gm.name;
             m.doubleSided = gm.doubleSided;  // false, as glTF's default, when the file leaves it out
             m.colorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture, what + " baseColorTexture");
-            m.emission = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
-            if (!(std::max({m.emission.r, m.emission.g, m.emission.b}) <= kMaxColorValue))
+            m.emission.color = color(gm.emissiveFactor, what + " emissiveFactor") * emissiveStrength(gm, what);
+            if (!(std::max({m.emission.color.r, m.emission.color.g, m.emission.color.b}) <= kMaxColorValue))
                 fail(what + ": emissiveFactor times emissiveStrength is beyond 1e15");
-            if (m.emission != Color{}) m.emissionTexture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
+            if (m.emission.color != Color{})
+                m.emission.texture = textureFor(gm.emissiveTexture, what + " emissiveTexture");
             keepMetallicRoughnessTexture(gm, what, m);
             keepTransmissionTexture(gm, what, m);
             readClearcoat(gm, what, m);
@@ -413,11 +414,11 @@ private:
     // above had to guess them: metallicRoughness()).
     void keepMetallicRoughnessTexture(const tinygltf::Material& gm, const std::string& what, Material& m) {
         const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
-        if (pbr.metallicRoughnessTexture.index < 0 || !m.metallicRoughness) return;
-        m.metallicRoughnessTexture = textureFor(pbr.metallicRoughnessTexture, what + " metallicRoughnessTexture");
-        if (!m.metallicRoughnessTexture) return;
-        m.metallicRoughness->metallic = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
-        m.metallicRoughness->roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+        if (pbr.metallicRoughnessTexture.index < 0 || !m.pbr.factors) return;
+        m.pbr.texture = textureFor(pbr.metallicRoughnessTexture, what + " metallicRoughnessTexture");
+        if (!m.pbr.texture) return;
+        m.pbr.factors->metallic = std::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
+        m.pbr.factors->roughness = std::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
     }
 
     // Both integrators follow the transmission texture per hit (its red channel times the
@@ -431,8 +432,8 @@ private:
         tinygltf::TextureInfo reference;
         if (info.Has("index")) reference.index = info.Get("index").GetNumberAsInt();
         if (info.Has("texCoord")) reference.texCoord = info.Get("texCoord").GetNumberAsInt();
-        m.transmissionTexture = textureFor(reference, what + " transmissionTexture");
-        if (m.transmissionTexture) m.transmission.weight = std::min(1.0f, m.transmission.weight * 2);
+        m.transmission.texture = textureFor(reference, what + " transmissionTexture");
+        if (m.transmission.texture) m.transmission.weight = std::min(1.0f, m.transmission.weight * 2);
     }
 
     // alphaMode MASK is a cut-out at alphaCutoff of the base colour's alpha (factor times the
@@ -441,10 +442,11 @@ private:
     void readAlphaMode(const tinygltf::Material& gm, const std::string& what, Material& m) {
         if (gm.alphaMode != "MASK" && gm.alphaMode != "BLEND") return;
         const bool blend = gm.alphaMode == "BLEND";
-        m.alphaCutoff = blend ? 0.5f : float(numberWithin(gm.alphaCutoff, 0, 1, file_, what + " alphaCutoff"));
+        m.opacity.cutoff = blend ? 0.5f : float(numberWithin(gm.alphaCutoff, 0, 1, file_, what + " alphaCutoff"));
         const std::vector<double>& factor = gm.pbrMetallicRoughness.baseColorFactor;
-        if (factor.size() == 4) m.alpha = float(std::clamp(finiteNumber(factor[3], file_, what + " alpha"), 0.0, 1.0));
-        m.alphaTexture = m.colorTexture;
+        if (factor.size() == 4)
+            m.opacity.alpha = float(std::clamp(finiteNumber(factor[3], file_, what + " alpha"), 0.0, 1.0));
+        m.opacity.texture = m.colorTexture;
         if (blend)
             assembly_.report().notes.push_back(what + " (" + gm.name + "): alphaMode BLEND drawn as a cut-out at 0.5");
     }

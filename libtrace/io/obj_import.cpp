@@ -124,7 +124,7 @@ Material materialFromMtl(const tinyobj::material_t& mtl) {
     const auto color = [](const tinyobj::real_t(&c)[3]) { return fileColor(c[0], c[1], c[2]); };
     Material m = classicPhong(color(mtl.diffuse), color(mtl.specular), mtl.shininess);
     if (mtl.illum >= 3 && mtl.illum <= 5) m.phong.reflection = m.phong.specular;
-    m.emission = color(mtl.emission);
+    m.emission.color = color(mtl.emission);
     applyTransparency(mtl, m);
     return m;
 }
@@ -166,11 +166,11 @@ Texture mapTexture(const std::string& file, const tinyobj::texture_option_t& o, 
 // nothing, and the renderer drops the material from the cut-out test (render/cutout.h).
 void readCutout(const tinyobj::material_t& mtl, const std::string& objPath, ImportResult& out, Material& m) {
     if (!mtl.alpha_texname.empty())
-        m.alphaTexture =
+        m.opacity.texture =
             addTexture(out.scene, mapTexture(mtl.alpha_texname, mtl.alpha_texopt, objPath, out.report.notes));
     else
-        m.alphaTexture = m.colorTexture;
-    if (m.alphaTexture) m.alphaCutoff = 0.5f;
+        m.opacity.texture = m.colorTexture;
+    if (m.opacity.texture) m.opacity.cutoff = 0.5f;
 }
 
 // The normal map: `norm`, else `map_bump` or `bump`, read as a tangent-space normal map in
@@ -189,9 +189,9 @@ void readNormalMap(const tinyobj::material_t& mtl, const std::string& objPath, I
 // glows at the map's own colour: a file that names a map wants it to show (display screens).
 void readEmissionMap(const tinyobj::material_t& mtl, const std::string& objPath, ImportResult& out, Material& m) {
     if (mtl.emissive_texname.empty()) return;
-    m.emissionTexture =
+    m.emission.texture =
         addTexture(out.scene, mapTexture(mtl.emissive_texname, mtl.emissive_texopt, objPath, out.report.notes));
-    if (m.emission == Color{}) m.emission = {1, 1, 1};
+    if (m.emission.color == Color{}) m.emission.color = {1, 1, 1};
 }
 
 class ObjSceneBuilder {

@@ -298,17 +298,16 @@ void SceneBuilder::readMaterial(const XmlElement& e) {
     m.phong.reflection = e.nonNegativeFloat("reflection", m.phong.reflection);
     m.phong.spread = e.nonNegativeFloat("spread", m.phong.spread);
     if (m.phong.reflection > 1) e.fail("<material> reflection must be between 0 and 1");
-    m.emission = e.color("emission", m.emission);
+    m.emission.color = e.color("emission", m.emission.color);
     readMetallicRoughness(e, m);
     m.clearcoat.weight = unitFactor(e, "clearcoat", m.clearcoat.weight);
     m.clearcoat.roughness = unitFactor(e, "clearcoat_roughness", m.clearcoat.roughness);
     m.transmission = readTransmission(e);
     const auto index = std::uint32_t(scene_.materials.size());
     useTexture(e, "texture", index, [](Material& t) -> TextureIndex& { return t.colorTexture; });
-    useTexture(e, "emission_texture", index, [](Material& t) -> TextureIndex& { return t.emissionTexture; });
-    useTexture(e, "metallic_roughness_texture", index,
-               [](Material& t) -> TextureIndex& { return t.metallicRoughnessTexture; });
-    useTexture(e, "transmission_texture", index, [](Material& t) -> TextureIndex& { return t.transmissionTexture; });
+    useTexture(e, "emission_texture", index, [](Material& t) -> TextureIndex& { return t.emission.texture; });
+    useTexture(e, "metallic_roughness_texture", index, [](Material& t) -> TextureIndex& { return t.pbr.texture; });
+    useTexture(e, "transmission_texture", index, [](Material& t) -> TextureIndex& { return t.transmission.texture; });
     readCutout(e, index, m);
     useTexture(e, "normal_texture", index, [](Material& t) -> TextureIndex& { return t.normalMap.texture; });
     m.normalMap.scale = e.floatWithin("normal_scale", m.normalMap.scale, kMaxTextureTransform);
@@ -325,16 +324,16 @@ void SceneBuilder::useTexture(const XmlElement& e, const char* attribute, std::u
 // others take glTF's defaults (metallic 1, roughness 1, specular_factor 1).
 void SceneBuilder::readMetallicRoughness(const XmlElement& e, Material& m) {
     if (!e.has("metallic") && !e.has("roughness") && !e.has("specular_factor")) return;
-    m.metallicRoughness = MetallicRoughness{unitFactor(e, "metallic", 1), unitFactor(e, "roughness", 1),
-                                            unitFactor(e, "specular_factor", 1)};
+    m.pbr.factors = MetallicRoughness{unitFactor(e, "metallic", 1), unitFactor(e, "roughness", 1),
+                                      unitFactor(e, "specular_factor", 1)};
 }
 
 // rt extension: a cut-out material has alpha_cutoff; alpha and alpha_texture give its opacity.
 void SceneBuilder::readCutout(const XmlElement& e, std::uint32_t index, Material& m) {
-    if (e.has("alpha_cutoff")) m.alphaCutoff = e.nonNegativeFloat("alpha_cutoff", 0.5f);
-    m.alpha = e.nonNegativeFloat("alpha", m.alpha);
-    if (m.alpha > 1) e.fail("<material> alpha must be between 0 and 1");
-    useTexture(e, "alpha_texture", index, [](Material& t) -> TextureIndex& { return t.alphaTexture; });
+    if (e.has("alpha_cutoff")) m.opacity.cutoff = e.nonNegativeFloat("alpha_cutoff", 0.5f);
+    m.opacity.alpha = e.nonNegativeFloat("alpha", m.opacity.alpha);
+    if (m.opacity.alpha > 1) e.fail("<material> alpha must be between 0 and 1");
+    useTexture(e, "alpha_texture", index, [](Material& t) -> TextureIndex& { return t.opacity.texture; });
 }
 
 // rt extension: an image file (any format OpenImageIO reads) or a procedural checker.

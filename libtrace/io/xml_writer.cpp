@@ -258,10 +258,10 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         setNumber(node, "reflection", m.phong.reflection);
         setNumber(node, "spread", m.phong.spread);
         if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
-        if (m.emission != Color{}) setColor(node, "emission", m.emission);
-        if (m.emissionTexture)
-            node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emissionTexture).c_str());
-        if (const auto& f = m.metallicRoughness) {
+        if (m.emission.color != Color{}) setColor(node, "emission", m.emission.color);
+        if (m.emission.texture)
+            node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emission.texture).c_str());
+        if (const auto& f = m.pbr.factors) {
             setNumber(node, "metallic", f->metallic);
             setNumber(node, "roughness", f->roughness);
             setNumber(node, "specular_factor", f->specular);
@@ -270,14 +270,14 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             setNumber(node, "clearcoat", m.clearcoat.weight);
             setNumber(node, "clearcoat_roughness", m.clearcoat.roughness);
         }
-        if (m.metallicRoughnessTexture)
-            node.append_attribute("metallic_roughness_texture")
-                .set_value(textureNames_.at(*m.metallicRoughnessTexture).c_str());
-        if (m.alphaCutoff) setNumber(node, "alpha_cutoff", *m.alphaCutoff);
-        if (m.alpha != 1) setNumber(node, "alpha", m.alpha);
-        if (m.transmissionTexture)
-            node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmissionTexture).c_str());
-        if (m.alphaTexture) node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.alphaTexture).c_str());
+        if (m.pbr.texture)
+            node.append_attribute("metallic_roughness_texture").set_value(textureNames_.at(*m.pbr.texture).c_str());
+        if (m.opacity.cutoff) setNumber(node, "alpha_cutoff", *m.opacity.cutoff);
+        if (m.opacity.alpha != 1) setNumber(node, "alpha", m.opacity.alpha);
+        if (m.transmission.texture)
+            node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmission.texture).c_str());
+        if (m.opacity.texture)
+            node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.opacity.texture).c_str());
         if (m.normalMap.texture)
             node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalMap.texture).c_str());
         if (m.normalMap.scale != 1) setNumber(node, "normal_scale", m.normalMap.scale);

@@ -15,7 +15,7 @@ bool opaqueAt(const ShadingContext& context, const Material& m, const Hit& hit) 
             u = uv[0];
             v = uv[1];
         }
-    return materialAlpha(context, m, u, v) >= *m.alphaCutoff;
+    return materialAlpha(context, m, u, v) >= *m.opacity.cutoff;
 }
 
 }  // namespace rt

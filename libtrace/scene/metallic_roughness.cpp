@@ -39,7 +39,7 @@ Material phongFromMetallicRoughness(const PbrMaterialFactors& pbr) {
     m.phong.shininess = std::clamp(2 / (alpha * alpha) - 2, 1.0f, 10000.0f);
     m.phong.reflection = f0 * (1 - roughness);
     m.phong.spread = alpha;
-    m.metallicRoughness = MetallicRoughness{metallic, roughness, clamp01(pbr.factors.specular)};
+    m.pbr.factors = MetallicRoughness{metallic, roughness, clamp01(pbr.factors.specular)};
     const float transmission = clamp01(pbr.transmission) * (1 - metallic);
     if (transmission > 0) {
         m.phong.ambient *= 1 - transmission;
@@ -57,7 +57,7 @@ Material phongFromMetallicRoughness(const PbrMaterialFactors& pbr) {
 }
 
 MetallicRoughness metallicRoughnessOf(const Material& m) {
-    if (m.metallicRoughness) return *m.metallicRoughness;
+    if (m.pbr.factors) return *m.pbr.factors;
     const float alpha =
         m.phong.reflection > 0 ? m.phong.spread : std::sqrt(2 / (std::max(m.phong.shininess, 0.0f) + 2));
     return {clamp01(m.phong.reflection), clamp01(std::sqrt(alpha)), m.phong.specular > 0 ? 1.0f : 0.0f};

@@ -18,7 +18,7 @@
 //   shininess     = 2 / alpha^2 - 2, clamped to [1, 10000]
 //   reflection    = F0 * (1 - roughness)          rough surfaces give no sharp mirror image
 //   spread        = alpha (radians)               the glossy lobe of distributed ray tracing
-// The factors themselves are kept too (Material::metallicRoughness) for the path tracer.
+// The factors themselves are kept too (PbrTerms::factors, Material::pbr) for the path tracer.
 // KHR_materials_transmission and _volume: the dielectric part lets t = transmission * (1 - metallic)
 // through, tinted by baseColor, refracted by ior (straight on when thin-walled, thicknessFactor 0
 // or no volume), absorbed by attenuationColor at attenuationDistance. That light is no longer

@@ -130,7 +130,8 @@ void Scene::dropHeadlights() {
 }
 
 bool Scene::hasEmissiveMaterial() const {
-    return std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.emission != Color{}; });
+    return std::any_of(materials.begin(), materials.end(),
+                       [](const Material& m) { return m.emission.color != Color{}; });
 }
 
 void Scene::dropDescription() {

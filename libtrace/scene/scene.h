@@ -80,6 +80,37 @@ struct NormalMap {
     float scale = 1;                         // multiplies the texel's x and y (glTF's normalTexture.scale)
 };
 
+// Light the surface gives off (rt extension), added to what it reflects; only the path tracer lights
+// other surfaces with it. From XML's emission and emission_texture, glTF's emissiveFactor (times
+// KHR_materials_emissive_strength) and emissiveTexture, MTL's Ke and map_Ke, Assimp's emissive colour.
+struct Emission {
+    Color color{0, 0, 0};
+    std::optional<std::uint32_t> texture{};  // index in Scene::textures; multiplies the colour
+};
+
+// The path tracer's glTF metallic-roughness terms (scene/metallic_roughness.h), as PhongTerms are the
+// Whitted tracer's (which takes only its glossy spread from a texture over factors: glossySpread);
+// from glTF's pbrMetallicRoughness, XML's metallic, roughness, specular_factor and
+// metallic_roughness_texture. Either may be given without the other: factors without a texture are
+// uniform, a texture without factors scales those metallicRoughnessOf makes from the Phong terms.
+struct PbrTerms {
+    // The material's own factors; none: the path tracer follows a rule from the Phong terms.
+    std::optional<MetallicRoughness> factors{};
+    // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
+    std::optional<std::uint32_t> texture{};
+};
+
+// Cut-outs (rt extension; glTF's alphaMode MASK and BLEND and base colour alpha, OBJ's map_d or
+// map_Kd's alpha, XML's alpha_cutoff, alpha and alpha_texture): where the opacity, alpha times the
+// texture's alpha at the hit, is below the cut-off, rays pass through the surface. A texture that
+// is the colour texture gives its alpha channel (1 without one); any other is a mask: its alpha
+// channel, or its first channel when it has none.
+struct Opacity {
+    std::optional<float> cutoff{};  // set: the material is a cut-out
+    float alpha = 1;
+    std::optional<std::uint32_t> texture{};  // index in Scene::textures
+};
+
 // Surface properties (thesis 3.3.2) and the Phong coefficients of thesis 2.1.3.
 struct Material {
     std::string name;
@@ -87,25 +118,12 @@ struct Material {
     // base colour.
     Color color{1, 1, 1};
     PhongTerms phong{};
-    // rt extensions: the colour is multiplied by a texture's; the emitted colour is added to
-    // what the surface reflects (multiplied by its own texture), lighting nothing else.
+    // rt extension: the colour is multiplied by a texture's.
     std::optional<std::uint32_t> colorTexture{};  // index in Scene::textures
-    Color emission{0, 0, 0};
-    std::optional<std::uint32_t> emissionTexture{};
-    // The path tracer's material; without it, it follows a rule from the Phong coefficients.
-    std::optional<MetallicRoughness> metallicRoughness{};
-    // glTF's metallicRoughnessTexture: its blue channel scales metallic, its green roughness.
-    std::optional<std::uint32_t> metallicRoughnessTexture{};
+    Emission emission{};
+    PbrTerms pbr{};
     Clearcoat clearcoat{};
-    // KHR_materials_transmission's transmissionTexture: its red channel scales transmission.weight.
-    std::optional<std::uint32_t> transmissionTexture{};
-    // rt extension, cut-outs (glTF alphaMode MASK, OBJ map_d): where the opacity, alpha times
-    // alphaTexture's alpha at the hit, is below alphaCutoff, rays pass through the surface.
-    // An alpha texture that is the colour texture gives its alpha channel (1 without one); any
-    // other is a mask: its alpha channel, or its first channel when it has none.
-    std::optional<float> alphaCutoff{};  // set: the material is a cut-out
-    float alpha = 1;
-    std::optional<std::uint32_t> alphaTexture{};
+    Opacity opacity{};
     NormalMap normalMap{};
     Transmission transmission{};  // rt extension: glass (scene/transmission.h)
     // rt extension, glTF's doubleSided: false makes the material single-sided, and every ray

@@ -4,7 +4,9 @@
 // MTL's d/Tr/Ni/illum and Assimp's opacity onto it (docs/conversion.md).
 #pragma once
 
+#include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "core/color.h"
 
@@ -23,6 +25,9 @@ struct Transmission {
     // attenuationDistance inside has become attenuationColor. Infinite: no absorption.
     Color attenuationColor{1, 1, 1};
     float attenuationDistance = std::numeric_limits<float>::infinity();
+    // KHR_materials_transmission's transmissionTexture (XML's transmission_texture), an index in
+    // Scene::textures: its red channel, read as data, scales `weight` per hit.
+    std::optional<std::uint32_t> texture{};
 
     bool passesLight() const { return weight > 0; }
     bool absorbs() const { return !thin && attenuationDistance < std::numeric_limits<float>::infinity(); }

@@ -64,8 +64,8 @@ void addCutoutQuad(Scene& s, Real x0, Real z, std::uint32_t material) {
 
 Material cutoutMaterial(std::uint32_t texture) {
     Material m{.name = "leaf", .color = {0, 1, 0}, .phong = {.ambient = 1, .diffuse = 0}};
-    m.alphaTexture = texture;
-    m.alphaCutoff = 0.5f;
+    m.opacity.texture = texture;
+    m.opacity.cutoff = 0.5f;
     return m;
 }
 
@@ -170,7 +170,7 @@ TEST(Cutout, AMaterialThatCannotCutOutAddsNoFilter) {
     std::vector<std::string> warnings;
     const TextureFiles images(scene, warnings);
     EXPECT_FALSE(materialFilter({scene, &images}));
-    scene.materials[1].alpha = 0.25f;  // below the cut-off everywhere
+    scene.materials[1].opacity.alpha = 0.25f;  // below the cut-off everywhere
     EXPECT_TRUE(materialFilter({scene, &images}));
     std::filesystem::remove(path);
 }

@@ -57,8 +57,10 @@ Scene texturedQuad(const std::string& picture) {
     s.camera.focalDistance =
         2 * kReferenceWidth;  // f is in pixels of an 800-wide picture: one unit fills the width at distance 2
     s.textures.push_back({.name = "picture", .path = picture});
-    Material m{.name = "screen", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {1, 1, 1}};
-    m.emissionTexture = 0;
+    Material m{.name = "screen",
+               .color = {0, 0, 0},
+               .phong = {.ambient = 0, .diffuse = 0},
+               .emission = {.color = {1, 1, 1}, .texture = 0}};
     s.materials.push_back(m);
     Model quad;
     quad.triangleVertices = {0, 1, 0, 1, 1, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 0};
@@ -132,8 +134,10 @@ Scene checkerFloor(const std::string& checker) {
     s.camera.destination = {0, 0.4, -10};
     s.camera.fovDegrees = 60;
     s.textures.push_back({.name = "checker", .path = checker});
-    Material m{.name = "floor", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {1, 1, 1}};
-    m.emissionTexture = 0;
+    Material m{.name = "floor",
+               .color = {0, 0, 0},
+               .phong = {.ambient = 0, .diffuse = 0},
+               .emission = {.color = {1, 1, 1}, .texture = 0}};
     s.materials.push_back(m);
     Model floor;
     const float x = 100, zNear = 10, zFar = -400;

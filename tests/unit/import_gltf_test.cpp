@@ -320,14 +320,14 @@ TEST(ImportGltf, AlphaModesBecomeCutouts) {
         return importScene(dir.write("m.gltf", json));
     };
     const ImportResult mask = material(R"(, "alphaMode": "MASK", "alphaCutoff": 0.25)");
-    EXPECT_EQ(mask.scene.materials[0].alphaCutoff, std::optional<float>(0.25f));
-    EXPECT_EQ(mask.scene.materials[0].alpha, 0.5f);
+    EXPECT_EQ(mask.scene.materials[0].opacity.cutoff, std::optional<float>(0.25f));
+    EXPECT_EQ(mask.scene.materials[0].opacity.alpha, 0.5f);
     const ImportResult blend = material(R"(, "alphaMode": "BLEND")");
-    EXPECT_EQ(blend.scene.materials[0].alphaCutoff, std::optional<float>(0.5f));
+    EXPECT_EQ(blend.scene.materials[0].opacity.cutoff, std::optional<float>(0.5f));
     const auto& notes = blend.report.notes;
     EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
                             [](const std::string& n) { return n.find("alphaMode BLEND") != std::string::npos; }));
-    EXPECT_FALSE(material("").scene.materials[0].alphaCutoff);
+    EXPECT_FALSE(material("").scene.materials[0].opacity.cutoff);
 }
 
 // doubleSided is kept: true two-sided; false, or left out (glTF's default), single-sided, as is
@@ -406,7 +406,7 @@ TEST(ImportGltf, TransmissionAndVolumeMakeGlass) {
     const std::string three = replaceOnce(f.json(), R"("mode": 4)", R"("mode": 4, "material": 2)");
     const Material paper = importScene(dir.write("paper.gltf", three)).scene.materials.at(0);
     EXPECT_EQ(paper.transmission.weight, 1.0f) << "the renderers follow the texture per hit";
-    ASSERT_TRUE(paper.transmissionTexture);
+    ASSERT_TRUE(paper.transmission.texture);
     EXPECT_FLOAT_EQ(paper.phong.diffuse, 0.45f) << "the Phong coefficients take a transmission texture as mid-grey";
     EXPECT_THROW(importScene(dir.write(
                      "bad.gltf", replaceOnce(one, R"("transmissionFactor": 1)", R"("transmissionFactor": "all")"))),

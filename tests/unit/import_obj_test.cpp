@@ -372,7 +372,7 @@ TEST(ImportObj, OneNotePerKindOfDroppedMaterialData) {
     EXPECT_EQ(count("material"), 1) << "one note per kind, not per material; transparency is used";
     // Ke is the emission, map_Kd the colour texture, beside the OBJ.
     const Material& a = r.scene.materials[r.scene.instances[0].material];
-    EXPECT_EQ(a.emission, (Color{1, 1, 1}));
+    EXPECT_EQ(a.emission.color, (Color{1, 1, 1}));
     ASSERT_TRUE(a.colorTexture);
     EXPECT_EQ(r.scene.textures[*a.colorTexture].path, dir.path("wood.png"));
 }
@@ -385,12 +385,12 @@ TEST(ImportObj, MapDAndTheAlphaOfMapKdCutOut) {
                                         "map_Kd leaf.png\nnewmtl glass\nd 0.5\n",
                                         "usemtl fence\nf 1 2 3\nusemtl leaf\nf 1 3 4\nusemtl glass\nf 1 2 4\n");
     const Material &fence = materialNamed(r, "fence"), &leaf = materialNamed(r, "leaf");
-    ASSERT_TRUE(fence.alphaTexture);
-    EXPECT_EQ(r.scene.textures[*fence.alphaTexture].path, dir.path("fence.png"));
-    EXPECT_EQ(fence.alphaCutoff, std::optional<float>(0.5f));
-    EXPECT_EQ(leaf.alphaTexture, leaf.colorTexture);
-    EXPECT_EQ(leaf.alphaCutoff, std::optional<float>(0.5f));
-    EXPECT_FALSE(materialNamed(r, "glass").alphaCutoff) << "a constant d is not a cut-out";
+    ASSERT_TRUE(fence.opacity.texture);
+    EXPECT_EQ(r.scene.textures[*fence.opacity.texture].path, dir.path("fence.png"));
+    EXPECT_EQ(fence.opacity.cutoff, std::optional<float>(0.5f));
+    EXPECT_EQ(leaf.opacity.texture, leaf.colorTexture);
+    EXPECT_EQ(leaf.opacity.cutoff, std::optional<float>(0.5f));
+    EXPECT_FALSE(materialNamed(r, "glass").opacity.cutoff) << "a constant d is not a cut-out";
 }
 
 // norm, else map_bump (or bump), is the normal map; -bm its scale.
@@ -417,16 +417,16 @@ TEST(ImportObj, MapKeIsTheEmissionTexture) {
                                         "newmtl plain\nKe 0.5 0.5 0.5\n",
                                         "usemtl screen\nf 1 2 3\nusemtl lamp\nf 1 3 4\nusemtl plain\nf 1 2 4\n");
     const Material &screen = materialNamed(r, "screen"), &lamp = materialNamed(r, "lamp");
-    ASSERT_TRUE(screen.emissionTexture && lamp.emissionTexture);
-    const Texture& tv = r.scene.textures[*screen.emissionTexture];
+    ASSERT_TRUE(screen.emission.texture && lamp.emission.texture);
+    const Texture& tv = r.scene.textures[*screen.emission.texture];
     EXPECT_EQ(tv.path, dir.path("tv.png"));
     EXPECT_EQ(tv.wrapS, Texture::Wrap::Clamp);
     EXPECT_EQ(tv.scale, (std::array<float, 2>{2, 2}));
-    EXPECT_EQ(screen.emission, (Color{1, 0.5f, 0.25f}));
-    EXPECT_EQ(r.scene.textures[*lamp.emissionTexture].path, dir.path("shade.png"));
-    EXPECT_EQ(lamp.emission, (Color{1, 1, 1}));
-    EXPECT_FALSE(materialNamed(r, "plain").emissionTexture);
-    EXPECT_EQ(materialNamed(r, "plain").emission, (Color{0.5f, 0.5f, 0.5f}));
+    EXPECT_EQ(screen.emission.color, (Color{1, 0.5f, 0.25f}));
+    EXPECT_EQ(r.scene.textures[*lamp.emission.texture].path, dir.path("shade.png"));
+    EXPECT_EQ(lamp.emission.color, (Color{1, 1, 1}));
+    EXPECT_FALSE(materialNamed(r, "plain").emission.texture);
+    EXPECT_EQ(materialNamed(r, "plain").emission.color, (Color{0.5f, 0.5f, 0.5f}));
     EXPECT_NE(std::find(r.report.notes.begin(), r.report.notes.end(),
                         "texture maps rt's material has no input for, ignored: map_Ks in 1 material(s), "
                         "map_Ns in 1 material(s)"),

@@ -16,7 +16,7 @@ namespace {
 // A material that shows only its emission (no lights, no ambient term): flat colours, so a
 // full render and an interpolated one can be compared exactly.
 Material glowing(const Color& emission, std::optional<std::uint32_t> texture = {}) {
-    return {.name = "glow", .phong = {.ambient = 0, .diffuse = 0}, .emission = emission, .emissionTexture = texture};
+    return {.name = "glow", .phong = {.ambient = 0, .diffuse = 0}, .emission = {.color = emission, .texture = texture}};
 }
 
 Scene facingCamera() {

@@ -27,7 +27,7 @@ constexpr Color kLampRadiance{2, 2, 2};
 Scene manyLights() {
     Scene s;
     Material lamp = test::pbr({0, 0, 0}, 0, 1, 0);
-    lamp.emission = kLampRadiance;
+    lamp.emission.color = kLampRadiance;
     const auto emissive = test::addMaterial(s, lamp);
     SplitMix64 rng{7};
     const auto uniform = [&](Real lo, Real hi) { return lo + (hi - lo) * Real(rng.next() >> 11) * Real(0x1p-53); };
@@ -197,7 +197,7 @@ TEST(LightTree, ADiffuseSphereInAGlowingEnclosureShowsAlbedoTimesItsRadiance) {
     s.camera.destination = {0, 0, 0};
     s.camera.fovDegrees = 30;
     Material wall = test::pbr({0, 0, 0}, 0, 1, 0);
-    wall.emission = {1, 1, 1};
+    wall.emission.color = {1, 1, 1};
     const auto walls = test::addMaterial(s, wall);
     s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, test::addMaterial(s, test::pbr({0.5f, 0.5f, 0.5f}, 0, 1, 0)));
     constexpr int kAround = 16, kUp = 8;
@@ -229,9 +229,9 @@ namespace {
 Scene panelWithWindow(bool blackCells) {
     Scene s;
     Material panel = test::pbr({0, 0, 0}, 0, 1, 0);
-    panel.emission = {1, 1, 1};
+    panel.emission.color = {1, 1, 1};
     s.textures.push_back({.name = "window", .file = "window.png"});
-    panel.emissionTexture = 0;
+    panel.emission.texture = 0;
     const auto emissive = test::addMaterial(s, panel);
     constexpr int kCells = 8;
     const auto corner = [](int i, int j) { return Vec3{Real(4 * i) / kCells - 2, Real(4 * j) / kCells - 2, 0}; };

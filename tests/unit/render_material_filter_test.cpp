@@ -27,11 +27,14 @@ Scene sheetBeforeBackdrop(bool doubleSided, const Vec3& eye) {
     s.camera.origin = eye;
     s.camera.destination = {0, 0, eye.z > 0 ? Real(-1) : Real(1)};
     s.camera.fovDegrees = 30;
-    Material sheet{.name = "sheet", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = kSheetGreen};
+    Material sheet{
+        .name = "sheet", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {.color = kSheetGreen}};
     sheet.doubleSided = doubleSided;
     test::addQuad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, test::addMaterial(s, sheet));
-    const auto backdrop = test::addMaterial(
-        s, {.name = "backdrop", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = kBackdropRed});
+    const auto backdrop = test::addMaterial(s, {.name = "backdrop",
+                                                .color = {0, 0, 0},
+                                                .phong = {.ambient = 0, .diffuse = 0},
+                                                .emission = {.color = kBackdropRed}});
     test::addQuad(s, {-9, -9, 3}, {-9, 9, 3}, {9, 9, 3}, {9, -9, 3}, backdrop);
     s.flatten();
     return s;

@@ -81,7 +81,7 @@ TEST(PathTracerGlass, SlabTransmittanceFollowsBeerLambert) {
         Transmission t{.weight = 1, .ior = 1.5f, .attenuationColor = {0.5f, 0.25f, 0.8f}, .attenuationDistance = 1};
         addBox(s, {-5, -5, 0}, {5, 5, thickness}, test::addMaterial(s, glass(0, t)));
         Material lamp = test::pbr({0, 0, 0}, 0, 1, 0);
-        lamp.emission = {2, 2, 2};
+        lamp.emission.color = {2, 2, 2};
         addFace(s, {-50, -50, 5}, {50, -50, 5}, {50, 50, 5}, {-50, 50, 5}, {0, 0, -1}, test::addMaterial(s, lamp));
         s.flatten();
         RenderSettings settings = test::pathPicture(3, 64);
@@ -152,7 +152,7 @@ TEST(PathTracerGlass, TransmissionTextureScalesTheTransmissionPerHit) {
     s.textures.push_back({.name = "checker", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 1, 1}});
     Material sheet = test::pbr({0, 0, 0}, 0, 0, 0);
     sheet.transmission = {.weight = 0.5f, .ior = 1, .thin = true};
-    sheet.transmissionTexture = 0;
+    sheet.transmission.texture = 0;
     const auto m = test::addMaterial(s, sheet);
     test::addQuad(s, {-100, -100, 5.5}, {100, -100, 5.5}, {100, 100, 5.5}, {-100, 100, 5.5}, m);
     s.flatten();

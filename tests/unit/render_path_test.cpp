@@ -243,7 +243,7 @@ TEST(PathTracer, MetallicRoughnessTextureScalesTheFactors) {
         return s;
     };
     Material textured = test::pbr({0.9f, 0.6f, 0.2f}, 1, 1);
-    textured.metallicRoughnessTexture = 0;
+    textured.pbr.texture = 0;
     const Scene a = sphereWith(textured), b = sphereWith(test::pbr({0.9f, 0.6f, 0.2f}, 0.5f, 0.25f));
     const ConstantTextures texture(a, {0.7f, 0.25f, 0.5f});
     const RenderSettings settings = test::pathPicture(12, 4);

@@ -15,7 +15,7 @@ namespace rt::test {
 
 inline Material pbr(Color color, float metallic, float roughness, float specular = 1) {
     Material m{.name = "pbr", .color = color};
-    m.metallicRoughness = MetallicRoughness{metallic, roughness, specular};
+    m.pbr.factors = MetallicRoughness{metallic, roughness, specular};
     return m;
 }
 
@@ -76,7 +76,7 @@ inline Scene boxWithLightPanel() {
     const auto red = addMaterial(s, pbr({0.7f, 0.1f, 0.1f}, 0, 1, 0));
     const auto green = addMaterial(s, pbr({0.1f, 0.7f, 0.1f}, 0, 1, 0));
     Material lamp = pbr({0, 0, 0}, 0, 1, 0);
-    lamp.emission = {15, 15, 15};
+    lamp.emission.color = {15, 15, 15};
     const auto light = addMaterial(s, lamp);
     addQuad(s, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, white);    // floor
     addQuad(s, {-1, 2, -1}, {-1, 2, 1}, {1, 2, 1}, {1, 2, -1}, white);    // ceiling

@@ -21,7 +21,9 @@ Material glassOfIor(float ior, Color color = {1, 1, 1}) {
             .transmission = {.weight = 1, .color = color, .ior = ior}};
 }
 
-Material lamp(Color emission) { return {.name = "lamp", .phong = {.ambient = 0, .diffuse = 0}, .emission = emission}; }
+Material lamp(Color emission) {
+    return {.name = "lamp", .phong = {.ambient = 0, .diffuse = 0}, .emission = {.color = emission}};
+}
 
 // A quad wound so that its normal (the triangles' winding) is `outward`.
 void addFacing(Scene& s, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& outward,
@@ -111,7 +113,7 @@ TEST(Refraction, AGlassSphereDisplacesACheckerboardWhereSnellsLawPutsIt) {
     s.textures.push_back(
         {.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}, .size = 0.5});
     Material wall = lamp({1, 1, 1});
-    wall.emissionTexture = 0;
+    wall.emission.texture = 0;
     s.looseObjects.add<Sphere>({{0, 0, 0}, radius}, test::addMaterial(s, glassOfIor(float(ior))));
     test::addQuad(s, {-20, -20, wallZ}, {20, -20, wallZ}, {20, 20, wallZ}, {-20, 20, wallZ},
                   test::addMaterial(s, wall));
@@ -243,7 +245,7 @@ double contrastThroughGlass(float spread) {
     s.textures.push_back(
         {.name = "c", .kind = Texture::Kind::Checker, .colorA = {1, 0, 0}, .colorB = {0, 0, 1}, .size = 0.25});
     Material wall = lamp({1, 1, 1});
-    wall.emissionTexture = 0;
+    wall.emission.texture = 0;
     Material ball = glassOfIor(1.5f);
     ball.phong.spread = spread;
     s.looseObjects.add<Sphere>({{0, 0, 0}, 1}, test::addMaterial(s, ball));

@@ -61,8 +61,10 @@ TEST(Tracer, AnEmitterIsSeenInAMirrorWithoutLights) {
     s.camera.destination = {0, 0, 0};
     const auto mirror =
         test::addMaterial(s, {.name = "mirror", .phong = {.ambient = 0, .diffuse = 0, .reflection = 1}});
-    const auto lamp = test::addMaterial(
-        s, {.name = "lamp", .color = {0, 0, 0}, .phong = {.ambient = 0, .diffuse = 0}, .emission = {1, 0.5f, 0.25f}});
+    const auto lamp = test::addMaterial(s, {.name = "lamp",
+                                            .color = {0, 0, 0},
+                                            .phong = {.ambient = 0, .diffuse = 0},
+                                            .emission = {.color = {1, 0.5f, 0.25f}}});
     test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, mirror);
     test::addQuad(s, {-9, -9, -5}, {-9, 9, -5}, {9, 9, -5}, {9, -9, -5}, lamp);
     s.flatten();
@@ -116,8 +118,8 @@ TEST(Tracer, AMirrorRayThatLeavesTheSceneReadsNoRoughnessTexture) {
     s.textures.push_back({.name = "colour", .path = "colour.png"});
     s.textures.push_back({.name = "roughness", .path = "roughness.png"});
     Material m{.name = "metal", .phong = {.reflection = 0.5f}, .colorTexture = 0};
-    m.metallicRoughness = MetallicRoughness{.metallic = 1, .roughness = 1};
-    m.metallicRoughnessTexture = 1;
+    m.pbr.factors = MetallicRoughness{.metallic = 1, .roughness = 1};
+    m.pbr.texture = 1;
     const auto metal = test::addMaterial(s, m);
     test::addQuad(s, {-9, -9, 0}, {9, -9, 0}, {9, 9, 0}, {-9, 9, 0}, metal);
     Scene facing = s;  // the same with a wall behind the camera, where the mirror rays land

@@ -59,10 +59,10 @@ TEST(MetallicRoughness, TheFactorsAreKeptForThePathTracer) {
     in.factors.roughness = 1.5f;
     in.factors.specular = 0.5f;
     const Material m = phongFromMetallicRoughness(in);
-    ASSERT_TRUE(m.metallicRoughness);
-    EXPECT_EQ(m.metallicRoughness->metallic, 0.25f);
-    EXPECT_EQ(m.metallicRoughness->roughness, 1.0f);
-    EXPECT_EQ(m.metallicRoughness->specular, 0.5f);
+    ASSERT_TRUE(m.pbr.factors);
+    EXPECT_EQ(m.pbr.factors->metallic, 0.25f);
+    EXPECT_EQ(m.pbr.factors->roughness, 1.0f);
+    EXPECT_EQ(m.pbr.factors->specular, 0.5f);
 }
 
 TEST(MetallicRoughness, RougherMeansBroaderAndDimmerReflection) {

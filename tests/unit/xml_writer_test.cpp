@@ -254,11 +254,11 @@ TEST(XmlWriter, MaterialTexturesAndVertexDataRoundTrip) {
     EXPECT_EQ(floor.size, 0.5f);
     const Material& lamp = second.materials[0];
     EXPECT_EQ(lamp.colorTexture, std::optional<std::uint32_t>(1));
-    EXPECT_EQ(lamp.emission, (Color{2, 1, 0.5f}));
-    EXPECT_EQ(lamp.emissionTexture, std::optional<std::uint32_t>(0));
-    EXPECT_EQ(lamp.alphaCutoff, std::optional<float>(0.25f));
-    EXPECT_EQ(lamp.alpha, 0.75f);
-    EXPECT_EQ(lamp.alphaTexture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.emission.color, (Color{2, 1, 0.5f}));
+    EXPECT_EQ(lamp.emission.texture, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(lamp.opacity.cutoff, std::optional<float>(0.25f));
+    EXPECT_EQ(lamp.opacity.alpha, 0.75f);
+    EXPECT_EQ(lamp.opacity.texture, std::optional<std::uint32_t>(0));
     EXPECT_EQ(lamp.normalMap.texture, std::optional<std::uint32_t>(0));
     EXPECT_EQ(lamp.normalMap.scale, 0.5f);
     ASSERT_EQ(second.models.size(), 1u);
@@ -330,14 +330,14 @@ TEST(XmlWriter, MetallicRoughnessFactorsRoundTrip) {
     saveSceneXml(first, dir.path("out.xml"));
     const Scene second = loadSceneXml(dir.path("out.xml"));
     ASSERT_EQ(second.materials.size(), 3u);
-    ASSERT_TRUE(second.materials[0].metallicRoughness);
-    EXPECT_EQ(second.materials[0].metallicRoughness->metallic, 1.0f);
-    EXPECT_EQ(second.materials[0].metallicRoughness->roughness, 0.25f);
-    EXPECT_EQ(second.materials[0].metallicRoughness->specular, 0.5f);
-    ASSERT_TRUE(second.materials[1].metallicRoughness);
-    EXPECT_EQ(second.materials[1].metallicRoughness->metallic, 1.0f);
-    EXPECT_EQ(second.materials[1].metallicRoughness->roughness, 0.75f);
-    EXPECT_FALSE(second.materials[2].metallicRoughness);
+    ASSERT_TRUE(second.materials[0].pbr.factors);
+    EXPECT_EQ(second.materials[0].pbr.factors->metallic, 1.0f);
+    EXPECT_EQ(second.materials[0].pbr.factors->roughness, 0.25f);
+    EXPECT_EQ(second.materials[0].pbr.factors->specular, 0.5f);
+    ASSERT_TRUE(second.materials[1].pbr.factors);
+    EXPECT_EQ(second.materials[1].pbr.factors->metallic, 1.0f);
+    EXPECT_EQ(second.materials[1].pbr.factors->roughness, 0.75f);
+    EXPECT_FALSE(second.materials[2].pbr.factors);
     const std::string error = inputErrorOf([&] {
         loadSceneXml(dir.write("bad.xml", R"(<scene><camera><origin z="-5"/><destination/></camera>
             <materials><material name="m" metallic="1.5"/></materials></scene>)"));

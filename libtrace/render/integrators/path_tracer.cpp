@@ -166,7 +166,7 @@ Color PathTracer::directLight(const LightQuery& at, const Bsdf& bsdf, const Shad
 // panel under a ceiling would otherwise also fill the gap above it, which paths find rarely
 // and then bring back as fireflies. (The Whitted tracer shows emission from both sides.)
 Color PathTracer::emission(const Material& m, const SurfacePoint& s, const Ray& ray, const Hit& hit) const {
-    if (m.emission == Color{} || dot(context_.scene.primitives.normal(hit.prim, s.point), ray.direction) >= 0)
+    if (m.emission.color == Color{} || dot(context_.scene.primitives.normal(hit.prim, s.point), ray.direction) >= 0)
         return {};
     return surfaceEmission(context_, m, s);
 }

@@ -68,7 +68,7 @@ LightBounds boundsOf(const Triangle& tri, double radiance) {
 // emission factor of 1). A triangle whose estimate is 0 is not sampled as a light; what it does
 // emit is still found, in full, by the paths that hit it (docs/path-tracing.md).
 double emittedRadiance(const ShadingContext& context, std::uint32_t prim, const Triangle& tri, const Material& m) {
-    if (!m.emissionTexture) return luminance(m.emission);
+    if (!m.emission.texture) return luminance(m.emission.color);
     const Vec3 normal = tri.normal();
     const auto at = [&](Real b1, Real b2) {
         const Vec3 p = tri.p0 + (tri.p1 - tri.p0) * b1 + (tri.p2 - tri.p0) * b2;
@@ -119,7 +119,7 @@ LightDistribution::LightDistribution(const ShadingContext& context, LightSampler
     const auto triangles = scene.primitives.all<Triangle>();
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         const std::uint32_t id = scene.primitives.material(std::uint32_t(i));
-        if (id >= scene.materials.size() || !(luminance(scene.materials[id].emission) > kNoPower)) continue;
+        if (id >= scene.materials.size() || !(luminance(scene.materials[id].emission.color) > kNoPower)) continue;
         const double radiance = emittedRadiance(context, std::uint32_t(i), triangles[i], scene.materials[id]);
         if (!(radiance > kNoPower)) continue;
         triangleEntry_[std::uint32_t(i)] = std::uint32_t(entries_.size());

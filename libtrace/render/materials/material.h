@@ -27,7 +27,7 @@ float glossySpread(const ShadingContext& context, const Material& m, const Surfa
 // by the metallic-roughness texture if the material has one: its blue channel scales metallic,
 // its green roughness.
 MetallicRoughness metallicRoughnessAt(const ShadingContext& context, const Material& m, const SurfacePoint& s);
-// The opacity of the material at texture coordinates (u, v) (Material::alpha, alphaTexture);
+// The opacity of the material at texture coordinates (u, v) (Opacity::alpha times its texture, Material::opacity);
 // a checker or no image lookups: alpha alone.
 float materialAlpha(const ShadingContext& context, const Material& m, Real u, Real v);
 // Whether materialAlpha can be below the material's cut-off anywhere: a cut-out whose texture
