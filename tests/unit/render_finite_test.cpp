@@ -1,6 +1,5 @@
 // Rendered pixels are finite and within what the Phong model allows; a sample that comes out
 // NaN or infinite anyway is written as black and counted, never passed on silently.
-#include <cstdio>
 #include <filesystem>
 #include <limits>
 
@@ -10,6 +9,7 @@
 #include "render/renderer.h"
 #include "render/sampling.h"
 #include "render_test_scenes.h"
+#include "scene/thesis_scenes.h"
 #include "test_util.h"
 
 using namespace rt;
@@ -99,18 +99,6 @@ Scene smallReflectiveSphereField() {
     return s;
 }
 
-// The thesis's balls scene, written by the script the docs use.
-Scene ballsScene() {
-    const std::string script = RT_SOURCE_DIR "/docs/images/balls-scene.sh";
-    FILE* pipe = popen(("bash '" + script + "'").c_str(), "r");
-    if (!pipe) throw std::runtime_error("cannot run " + script);
-    std::string xml;
-    char buffer[65536];
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) xml.append(buffer, n);
-    if (pclose(pipe) != 0) throw std::runtime_error(script + " failed");
-    return loadSceneXmlFromString(xml, "balls.xml", RT_SOURCE_DIR);
-}
-
 // One sphere lit by a light of infinite intensity: every sample that hits the sphere is
 // infinite in red and blue and NaN in green (infinity times the colour's zero).
 Scene sphereUnderAnInfiniteLight() {
@@ -140,7 +128,7 @@ TEST(RenderFinite, SmallReflectiveSpheresStayWithinThePhongBoundAtDepth10) {
 }
 
 TEST(RenderFinite, BallsSceneIsFiniteAtDepth10) {
-    const Scene balls = ballsScene();
+    const Scene balls = thesisBalls();  // the thesis's test scene, as rt-convert --generate balls writes it
     ASSERT_EQ(balls.primitives.count<Sphere>(), 7381u);
     expectFiniteAndBounded(balls, 100, 75, 10);
 }
