@@ -4,6 +4,7 @@
 #include <charconv>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <pugixml.hpp>
 #include <span>
 #include <sstream>
@@ -183,6 +184,10 @@ private:
     void setMaterial(pugi::xml_node node, std::uint32_t material) const {
         node.append_attribute("material").set_value(materialNames_.at(material).c_str());
     }
+    // The texture's name as attribute `name`, if the material has one there (the reader's useTexture).
+    void setTexture(pugi::xml_node node, const char* name, const std::optional<std::uint32_t>& texture) const {
+        if (texture) node.append_attribute(name).set_value(textureNames_.at(*texture).c_str());
+    }
 
     const Scene& scene_;
     std::vector<std::string> modelFiles_;  // relative references, or empty for inline data
@@ -257,10 +262,9 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
         setNumber(node, "shininess", m.phong.shininess);
         setNumber(node, "reflection", m.phong.reflection);
         setNumber(node, "spread", m.phong.spread);
-        if (m.colorTexture) node.append_attribute("texture").set_value(textureNames_.at(*m.colorTexture).c_str());
+        setTexture(node, "texture", m.colorTexture);
         if (m.emission.color != Color{}) setColor(node, "emission", m.emission.color);
-        if (m.emission.texture)
-            node.append_attribute("emission_texture").set_value(textureNames_.at(*m.emission.texture).c_str());
+        setTexture(node, "emission_texture", m.emission.texture);
         if (const auto& f = m.pbr.factors) {
             setNumber(node, "metallic", f->metallic);
             setNumber(node, "roughness", f->roughness);
@@ -270,16 +274,12 @@ void SceneXmlWriter::addMaterials(pugi::xml_node parent) const {
             setNumber(node, "clearcoat", m.clearcoat.weight);
             setNumber(node, "clearcoat_roughness", m.clearcoat.roughness);
         }
-        if (m.pbr.texture)
-            node.append_attribute("metallic_roughness_texture").set_value(textureNames_.at(*m.pbr.texture).c_str());
+        setTexture(node, "metallic_roughness_texture", m.pbr.texture);
         if (m.opacity.cutoff) setNumber(node, "alpha_cutoff", *m.opacity.cutoff);
         if (m.opacity.alpha != 1) setNumber(node, "alpha", m.opacity.alpha);
-        if (m.transmission.texture)
-            node.append_attribute("transmission_texture").set_value(textureNames_.at(*m.transmission.texture).c_str());
-        if (m.opacity.texture)
-            node.append_attribute("alpha_texture").set_value(textureNames_.at(*m.opacity.texture).c_str());
-        if (m.normalMap.texture)
-            node.append_attribute("normal_texture").set_value(textureNames_.at(*m.normalMap.texture).c_str());
+        setTexture(node, "transmission_texture", m.transmission.texture);
+        setTexture(node, "alpha_texture", m.opacity.texture);
+        setTexture(node, "normal_texture", m.normalMap.texture);
         if (m.normalMap.scale != 1) setNumber(node, "normal_scale", m.normalMap.scale);
         setTransmission(node, m.transmission);
         if (!m.doubleSided) node.append_attribute("double_sided").set_value("false");
